@@ -1,0 +1,139 @@
+// The contact interface: a slave surface that carries the Lagrange multiplier
+// (the contact pressure), a master surface that gives the normal, the pairing
+// of slave quadrature points with their closest points on the current master
+// surface, the unilateral condition and the assembly of the contact terms
+// with their exact linearisation (automatic differentiation with Sacado).
+//
+// Weak form, for every slave quadrature point with weight w and current
+// length element ds = |dx_s/dt| w:
+//   displacement rows:  - lambda (delta u_s - delta u_m(xi)) . n  ds
+//   multiplier row k:   weighted gap  g~_k = sum  Phi_k g ds
+// and per multiplier node k the complementarity function
+//   C_k = w_k lambda_k - max(0, w_k lambda_k - c g~_k) = 0,
+// with w_k = int Phi_k dS (reference); C_k = c g~_k on the active set,
+// w_k lambda_k off it. Every row is then a force per unit thickness.
+#ifndef ring_contact_contact_interface_h
+#define ring_contact_contact_interface_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <ring_contact/contact_surface.h>
+
+#include <map>
+#include <set>
+
+namespace RingContact
+{
+  /// A slave quadrature point and its partner on the master surface.
+  struct ContactPoint
+  {
+    unsigned int slave_segment;
+    unsigned int quadrature_point;
+    Projection   projection;
+    double       current_length; ///< ds = |dx_s/dt| w
+  };
+
+  class ContactInterface
+  {
+  public:
+    ContactInterface(const DoFHandler<2>      &dof_handler,
+                     const ContactParameters  &parameters,
+                     const IntegrationScheme  &scheme,
+                     const unsigned int        mapping_degree,
+                     const double              complementarity_constant);
+
+    /// Pair every slave quadrature point with the current master surface,
+    /// compute the weighted gaps and choose the active set from the current
+    /// multipliers. Returns the number of nodes whose status changed.
+    unsigned int
+    update(const Vector<double> &solution);
+
+    /// True if the current pairs are all inside the last sparsity pattern.
+    bool
+    sparsity_covers_pairing() const;
+
+    /// Add the couplings of the current pairs (and their neighbours, so
+    /// that small slips do not need a new pattern) to a sparsity pattern.
+    void
+    add_couplings(DynamicSparsityPattern &dsp);
+
+    /// Add the contact terms to the tangent matrix and rhs = -residual.
+    void
+    assemble(const Vector<double>            &solution,
+             const AffineConstraints<double> &constraints,
+             SparseMatrix<double>            &matrix,
+             Vector<double>                  &rhs) const;
+
+    /// All multiplier dofs of the slave surface.
+    const std::vector<types::global_dof_index> &
+    multiplier_dofs() const
+    {
+      return multiplier_dof_list;
+    }
+
+    /// Number of active (closed) multiplier nodes.
+    unsigned int
+    n_active() const;
+
+    /// The multiplier dof at the slave vertex nearest to a reference point.
+    types::global_dof_index
+    multiplier_dof_nearest_to(const Point<2> &point) const;
+
+    /// Current over reference length of the slave surface at a multiplier
+    /// node (average over the segments that share it): converts the Cauchy
+    /// pressure to the nominal one.
+    double
+    stretch_at(const types::global_dof_index multiplier_dof) const;
+
+    /// Gap at a multiplier node (its slave point projected on the master).
+    double
+    gap_at(const types::global_dof_index multiplier_dof) const;
+
+    /// sqrt(int (p_h - p_ref)^2) / sqrt(int p_ref^2) over the slave surface,
+    /// with p_h the reported (Cauchy or nominal) pressure.
+    double
+    l2_relative_error(const Vector<double> &solution,
+                      const double          reference_pressure,
+                      const PressureMeasure measure) const;
+
+    const ContactSurface &
+    slave_surface() const
+    {
+      return slave;
+    }
+    const ContactSurface &
+    master_surface() const
+    {
+      return master;
+    }
+
+  private:
+    ContactSurface      slave;
+    ContactSurface      master;
+    const Quadrature<1> quadrature;
+    const double        complementarity_constant;
+
+    /// Slave basis values at the quadrature points (the same on every
+    /// segment): reference geometry, displacement, multiplier.
+    std::vector<std::vector<double>> geometry_values, geometry_gradients;
+    std::vector<std::vector<double>> displacement_values,
+      displacement_gradients;
+    std::vector<std::vector<double>> multiplier_values;
+
+    std::vector<types::global_dof_index>          multiplier_dof_list;
+    std::map<types::global_dof_index, unsigned int> multiplier_index;
+    std::vector<double> reference_weight; ///< w_k = int Phi_k dS
+    std::vector<double> weighted_gap;     ///< g~_k
+    std::vector<bool>   active;
+
+    std::vector<ContactPoint> points;
+    /// Master segments next to each master segment (sharing a vertex).
+    std::vector<std::vector<unsigned int>> master_neighbours;
+    /// (slave segment, master segment) pairs in the sparsity pattern.
+    std::set<std::pair<unsigned int, unsigned int>> pattern_pairs;
+  };
+} // namespace RingContact
+
+#endif

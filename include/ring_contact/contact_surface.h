@@ -1,0 +1,188 @@
+// A contact surface: the boundary faces of one ring with a given boundary id,
+// seen in the current configuration x = X + u. Each face is a segment
+// parametrised by t in [0, 1] from its first to its second vertex; the
+// reference position X(t) interpolates the mapping's support points (straight
+// for mapping degree 1, on the circle's polar manifold for degree >= 2) and
+// the displacement u(t) the face's degrees of freedom. The same description
+// serves the slave (where contact integrals are evaluated) and the master
+// (onto which slave points are projected).
+#ifndef ring_contact_contact_surface_h
+#define ring_contact_contact_surface_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/polynomial.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <ring_contact/parameters.h>
+
+#include <array>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// Lagrange interpolation on a segment, t in [0, 1], through given nodes.
+  class LagrangeBasis1D
+  {
+  public:
+    LagrangeBasis1D() = default;
+    explicit LagrangeBasis1D(const std::vector<double> &nodes);
+
+    unsigned int
+    size() const
+    {
+      return polynomials.size();
+    }
+
+    /// Values and first and second derivatives of every basis function.
+    void
+    evaluate(const double         t,
+             std::vector<double> &values,
+             std::vector<double> &first,
+             std::vector<double> &second) const;
+
+    /// Values only.
+    void
+    evaluate(const double t, std::vector<double> &values) const;
+
+  private:
+    std::vector<Polynomials::Polynomial<double>> polynomials;
+  };
+
+  /// Position and derivatives of a point of a segment.
+  struct CurvePoint
+  {
+    Point<2>     x;   ///< position
+    Tensor<1, 2> dx;  ///< dx/dt
+    Tensor<1, 2> ddx; ///< d2x/dt2
+  };
+
+  /// One boundary face of a contact surface.
+  struct SurfaceSegment
+  {
+    DoFHandler<2>::active_cell_iterator cell;
+    unsigned int                        face_no;
+    /// Global vertex indices at t = 0 and t = 1.
+    std::array<unsigned int, 2> vertices;
+    /// Reference positions of the mapping's support points on the face.
+    std::vector<Point<2>> reference_nodes;
+    /// Displacement dofs (x and y) at the displacement nodes of the face.
+    std::vector<types::global_dof_index> dofs_x, dofs_y;
+    /// Multiplier dofs at the multiplier nodes (slave surface only).
+    std::vector<types::global_dof_index> multiplier_dofs;
+    /// +1 or -1: n = orientation (dx_y, -dx_x) / |dx| is the outward normal.
+    double orientation;
+    /// Current nodal displacements (set by ContactSurface::update()).
+    std::vector<Tensor<1, 2>> nodal_displacements;
+  };
+
+  /// Result of the closest-point projection of a point onto a surface.
+  struct Projection
+  {
+    unsigned int segment = numbers::invalid_unsigned_int;
+    double       t       = 0; ///< parameter of the closest point
+    double       gap     = 0; ///< (x - x_m) . n, > 0 when apart
+    /// True if the closest point is an end of a segment and no orthogonal
+    /// projection exists (outside a convex corner): t is then fixed.
+    bool clamped = false;
+  };
+
+  class ContactSurface
+  {
+  public:
+    /// Collect the faces with `boundary_id`; `mapping_degree` fixes the
+    /// reference geometry of each face (straight for 1).
+    ContactSurface(const DoFHandler<2> &dof_handler,
+                   const types::boundary_id boundary_id,
+                   const unsigned int       mapping_degree);
+
+    const std::vector<SurfaceSegment> &
+    segments() const
+    {
+      return segment_list;
+    }
+
+    /// Interpolation bases along a segment: reference geometry,
+    /// displacement, multiplier.
+    const LagrangeBasis1D &
+    geometry_basis() const
+    {
+      return geometry;
+    }
+    const LagrangeBasis1D &
+    displacement_basis() const
+    {
+      return displacement;
+    }
+    const LagrangeBasis1D &
+    multiplier_basis() const
+    {
+      return multiplier;
+    }
+    /// Parameters t of the multiplier nodes, in the order of
+    /// SurfaceSegment::multiplier_dofs.
+    const std::vector<double> &
+    multiplier_nodes() const
+    {
+      return multiplier_node_parameters;
+    }
+
+    /// Read the current nodal displacements from the solution and rebuild
+    /// the search tree of the current segments.
+    void
+    update(const Vector<double> &solution);
+
+    /// Current position and derivatives at parameter t of a segment.
+    CurvePoint
+    current_point(const unsigned int segment, const double t) const;
+
+    /// Reference position and derivative at parameter t of a segment.
+    CurvePoint
+    reference_point(const unsigned int segment, const double t) const;
+
+    /// Outward unit normal of a segment at a current-configuration point.
+    Tensor<1, 2>
+    normal(const unsigned int segment, const CurvePoint &point) const;
+
+    /// Closest-point projection of x onto the current surface. The search
+    /// looks at the few segments nearest to x (R-tree); `preferred` (a
+    /// segment index or invalid), the previous partner, is kept while the
+    /// projection stays on it or close to it, so that a point sitting on a
+    /// vertex is not paired back and forth between its two segments.
+    Projection
+    project(const Point<2>    &x,
+            const unsigned int preferred = numbers::invalid_unsigned_int) const;
+
+    /// Smallest reference length of a segment.
+    double
+    min_segment_length() const;
+
+  private:
+    Projection
+    project_onto_segment(const Point<2>    &x,
+                         const unsigned int segment,
+                         const double       extension) const;
+
+    std::vector<SurfaceSegment> segment_list;
+    LagrangeBasis1D             geometry;
+    LagrangeBasis1D             displacement;
+    LagrangeBasis1D             multiplier;
+    std::vector<double>         multiplier_node_parameters;
+
+    using Box = std::pair<BoundingBox<2>, unsigned int>;
+    RTree<Box> search_tree;
+  };
+
+  /// The quadrature rule on a slave segment (t in [0, 1]) of a scheme;
+  /// "nodal" is Gauss-Lobatto through the displacement nodes of the segment.
+  Quadrature<1>
+  contact_quadrature(const IntegrationScheme &scheme,
+                     const unsigned int       slave_degree);
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,43 @@
+// The two rings as one deal.II triangulation with two disconnected
+// components: the interface vertices exist twice, one copy per ring, so the
+// rings are separate bodies that only interact through contact.
+#ifndef ring_contact_geometry_h
+#define ring_contact_geometry_h
+
+#include <deal.II/grid/tria.h>
+
+#include <ring_contact/parameters.h>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  namespace Geometry
+  {
+    /// Build the structured seed mesh in code: `elements_around` cells around
+    /// every circle (first vertex at angle 0), uniform radial spacing,
+    /// material ids 100 (outer) / 101 (inner), boundary ids 200/300/400/500.
+    void
+    make_rings(Triangulation<2> &triangulation, const MeshParameters &mesh);
+
+    /// Read a gmsh mesh (format 1 or 2.2) with the original's physical tags.
+    void
+    read_gmsh(Triangulation<2> &triangulation, const std::string &filename);
+
+    /// Make the mesh of the parameters: generate or read it, attach the
+    /// polar manifold (refinement and curved mappings follow the circles),
+    /// refine, and check it (see check_rings()).
+    void
+    create_mesh(Triangulation<2> &triangulation, const Parameters &parameters);
+
+    /// Throw a one-line error if the mesh lacks what the problem needs: the
+    /// two ring material ids, the boundaries 200 and 500 and the slave and
+    /// master boundaries, each slave/master face on the circle r = R2 and in
+    /// one ring.
+    void
+    check_rings(const Triangulation<2> &triangulation,
+                const Parameters       &parameters);
+  } // namespace Geometry
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,245 @@
+// The run-time parameters of the program: one struct per subsection of the
+// `.prm` file, each with `declare_parameters()` (entries, patterns, units and
+// documentation) and `parse_parameters()` (read back, validate, convert the
+// string choices into enums). Units are SI throughout: metres, pascals.
+#ifndef ring_contact_parameters_h
+#define ring_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// Where the two rings come from.
+  enum class MeshSource
+  {
+    generated, ///< built in code for any number of elements around
+    gmsh_file  ///< read from a gmsh file (format 1 or 2.2)
+  };
+
+  /// Kinematics of the bulk.
+  enum class Kinematics
+  {
+    finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
+    small_strain   ///< linear elasticity
+  };
+
+  /// The 2d assumption.
+  enum class PlaneAssumption
+  {
+    plane_stress, ///< S33 = 0 (C_PLAN)
+    plane_strain  ///< E33 = 0 (D_PLAN)
+  };
+
+  /// Where the contact integrals are evaluated on each slave segment.
+  enum class ContactIntegration
+  {
+    nodal,       ///< at the slave nodes (Gauss-Lobatto, the original's default)
+    gauss,       ///< n Gauss points per slave segment
+    simpson,     ///< composite Simpson rule of order n (n sub-intervals)
+    newton_cotes ///< closed Newton-Cotes rule with n+1 points (n = 1,2,4,6)
+  };
+
+  /// One contact integration scheme as named in the `.prm` file.
+  struct IntegrationScheme
+  {
+    ContactIntegration type;
+    unsigned int       n_points; ///< n (meaning depends on the type)
+
+    /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4".
+    std::string
+    name() const;
+    /// "nodal", "gauss3", ...: safe in file names.
+    std::string
+    tag() const;
+    /// Parse one of the names above; throws with a clear message otherwise.
+    static IntegrationScheme
+    parse(const std::string &text);
+  };
+
+  /// Which contact pressure is reported (the unknown is always the Cauchy one).
+  enum class PressureMeasure
+  {
+    cauchy, ///< force per current length of the slave surface
+    nominal ///< force per reference length of the slave surface
+  };
+
+  /// The load programs of SSNP152.
+  enum class LoadProgramType
+  {
+    ramp,    ///< p(t) = p0 10^(t - 1.1), no rotation (modelisations A, B, H)
+    rotation ///< p fixed, inner boundary turned through s elements (C-G)
+  };
+
+  /// The checked quantity of a verdict.
+  enum class CheckedQuantity
+  {
+    pressure_at_A,    ///< contact pressure at the probe node A
+    l2_pressure_error ///< relative L2 error of the pressure on the slave
+  };
+
+  struct MeshParameters
+  {
+    MeshSource   source;
+    std::string  mesh_file; ///< absolute, resolved against the .prm's folder
+    unsigned int elements_around;
+    unsigned int radial_elements_outer;
+    unsigned int radial_elements_inner;
+    unsigned int global_refinements;
+    double       outer_radius;     ///< R1
+    double       interface_radius; ///< R2
+    double       inner_radius;     ///< R3
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_folder);
+  };
+
+  struct MaterialParameters
+  {
+    double          youngs_modulus_outer;
+    double          poissons_ratio_outer;
+    double          youngs_modulus_inner;
+    double          poissons_ratio_inner;
+    Kinematics      kinematics;
+    PlaneAssumption plane;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct FiniteElementParameters
+  {
+    unsigned int degree_outer;
+    unsigned int degree_inner;
+    unsigned int multiplier_degree;
+    unsigned int mapping_degree;
+    bool         reduced_integration;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /// Boundary and material ids of the original mesh (gmsh physical tags).
+  namespace Ids
+  {
+    constexpr unsigned int outer_ring         = 100; // C1
+    constexpr unsigned int inner_ring         = 101; // C2
+    constexpr unsigned int outer_boundary     = 200; // S1R1, r = R1
+    constexpr unsigned int outer_ring_contact = 300; // S1R2, r = R2
+    constexpr unsigned int inner_ring_contact = 400; // S2R2, r = R2
+    constexpr unsigned int inner_boundary     = 500; // S2R3, r = R3
+  } // namespace Ids
+
+  struct ContactParameters
+  {
+    unsigned int                   slave_boundary_id;
+    unsigned int                   master_boundary_id;
+    std::vector<IntegrationScheme> schemes;
+    bool                           smooth_master_normals;
+    double                         complementarity_constant; ///< 0: automatic
+    PressureMeasure                reported_pressure;
+    Point<2>                       probe_point;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct LoadParameters
+  {
+    LoadProgramType program;
+    double          reference_pressure; ///< p0 of the ramp
+    unsigned int    ramp_steps;
+    double          time_step;
+    double          rotation_pressure;
+    unsigned int    rotation_steps;
+    double          rotation_elements; ///< final s
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct NewtonParameters
+  {
+    unsigned int max_iterations;
+    double       tolerance;
+    unsigned int max_step_cuts;
+    bool         extrapolate;
+    bool         verbose;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string  directory; ///< resolved; empty entry: results/<prm name>
+    unsigned int vtu_interval;
+    unsigned int vtu_subdivisions;
+    bool         write_history;
+    bool         print_timing;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_name);
+  };
+
+  /// One check of the original's TEST_RESU kind.
+  struct CheckParameters
+  {
+    CheckedQuantity quantity;
+    bool            every_step;
+    std::vector<unsigned int> steps; ///< when not every step
+    double                    tolerance;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /// All parameters of one run.
+  struct Parameters
+  {
+    std::string             prm_file;
+    MeshParameters          mesh;
+    MaterialParameters      materials;
+    FiniteElementParameters finite_elements;
+    ContactParameters       contact;
+    LoadParameters          load;
+    NewtonParameters        newton;
+    OutputParameters        output;
+    CheckParameters         checks;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Read and validate a parameter file; throws ExcMessage with a one-line
+    /// explanation that names the file and the entry on any problem.
+    void
+    read(const std::string &filename);
+
+    /// Print every entry with default and documentation.
+    static void
+    print_reference(std::ostream &out, bool as_prm);
+  };
+} // namespace RingContact
+
+#endif

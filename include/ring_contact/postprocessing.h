@@ -1,0 +1,97 @@
+// What a run reports: one history row per step, the checks of the `.prm`
+// (the original's TEST_RESU) turned into verdicts, the CSV file, and the
+// VTU/PVD output for ParaView.
+#ifndef ring_contact_postprocessing_h
+#define ring_contact_postprocessing_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/material.h>
+#include <ring_contact/parameters.h>
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  /// The state after one converged step.
+  struct HistoryRow
+  {
+    std::string  scheme;
+    unsigned int step;
+    double       time;
+    double       load_factor; ///< p / p_check: the pressure p [Pa]
+    double       rotation;    ///< rotation parameter s (elements)
+    double       pressure_A;
+    double       analytic;
+    double       relative_error; ///< (pressure_A - analytic) / analytic
+    double       l2_relative_error;
+    double       pressure_min;
+    double       pressure_max;
+    unsigned int newton_iterations;
+    unsigned int step_cuts;
+    unsigned int active_nodes;
+    double       wall_time; ///< seconds spent on the step
+  };
+
+  /// One checked value and its outcome.
+  struct Verdict
+  {
+    std::string  scheme;
+    std::string  quantity;
+    unsigned int step;
+    double       value;
+    double       reference;
+    double       error; ///< relative (pressure) or absolute (L2 error)
+    double       tolerance;
+    bool         pass;
+  };
+
+  /// Turn the history of one scheme into the verdicts asked for.
+  std::vector<Verdict>
+  evaluate_checks(const CheckParameters         &checks,
+                  const std::vector<HistoryRow> &history);
+
+  /// The verdict table; returns true if every check passes.
+  bool
+  print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts);
+
+  /// history.csv with a header row.
+  void
+  write_history(const std::string             &filename,
+                const std::vector<HistoryRow> &history);
+
+  /// VTU of the rings (displacement, Cauchy stress, ring id, contact
+  /// pressure) and of the slave surface (contact pressure and gap), and the
+  /// PVD records that list them.
+  class VtuWriter
+  {
+  public:
+    VtuWriter(const std::string &directory,
+              const std::string &tag,
+              const unsigned int subdivisions);
+
+    void
+    write(const DoFHandler<2>                     &dof_handler,
+          const Mapping<2>                        &mapping,
+          const Vector<double>                    &solution,
+          const Vector<double>                    &nodal_gap,
+          const std::map<unsigned int, Material> &materials,
+          const types::boundary_id                 slave_boundary_id,
+          const unsigned int                       step,
+          const double                             time);
+
+  private:
+    const std::string                         directory;
+    const std::string                         tag;
+    const unsigned int                        subdivisions;
+    std::vector<std::pair<double, std::string>> bulk_records;
+    std::vector<std::pair<double, std::string>> surface_records;
+  };
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,148 @@
+// The main class: two elastic rings in frictionless contact (SSNP152), for
+// one contact integration scheme. Its story, in the order of the member
+// functions: make the mesh, set up the finite elements (displacement on both
+// rings, contact pressure on the slave surface), follow the load program
+// step by step with a semi-smooth Newton method (pairing, assembly, direct
+// solve), and report.
+#ifndef ring_contact_ring_contact_problem_h
+#define ring_contact_ring_contact_problem_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/analytic_solution.h>
+#include <ring_contact/contact_interface.h>
+#include <ring_contact/load_program.h>
+#include <ring_contact/material.h>
+#include <ring_contact/parameters.h>
+#include <ring_contact/postprocessing.h>
+
+#include <map>
+#include <memory>
+#include <ostream>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  class RingContactProblem
+  {
+  public:
+    RingContactProblem(const Parameters        &parameters,
+                       const IntegrationScheme &scheme,
+                       std::ostream            &log);
+
+    /// Run the whole load program. Returns false if a step could not be
+    /// solved (the history then ends at the last converged step).
+    bool
+    run();
+
+    /// One row per converged step.
+    const std::vector<HistoryRow> &
+    history() const
+    {
+      return history_rows;
+    }
+
+    /// Number of degrees of freedom (after setup).
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    /// Tangent and residual at the current state, for tests: rhs = -R.
+    void
+    assemble_system();
+
+    /// For tests: the current solution (displacement and multiplier).
+    Vector<double> &
+    current_solution()
+    {
+      return solution;
+    }
+    const SparseMatrix<double> &
+    tangent_matrix() const
+    {
+      return system_matrix;
+    }
+    const Vector<double> &
+    residual_rhs() const
+    {
+      return system_rhs;
+    }
+    /// For tests: build everything up to the first assembly.
+    void
+    setup();
+
+  private:
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    make_constraints();
+    void
+    make_sparsity_pattern();
+    void
+    apply_boundary_motion(const LoadState &load);
+    void
+    solve_linear_system(Vector<double> &newton_update);
+    bool
+    solve_newton_step(unsigned int &iterations, double &final_residual);
+    bool
+    solve_load_step(const unsigned int step);
+    void
+    postprocess_step(const unsigned int step,
+                     const unsigned int iterations,
+                     const unsigned int cuts,
+                     const double       wall_time);
+    void
+    output_results(const unsigned int step);
+
+    const Parameters        parameters;
+    const IntegrationScheme scheme;
+    std::ostream           &log;
+
+    Triangulation<2>                  triangulation;
+    DoFHandler<2>                     dof_handler;
+    hp::FECollection<2>               fe_collection;
+    hp::MappingCollection<2>          mapping_collection;
+    hp::QCollection<2>                q_collection;
+    const FEValuesExtractors::Vector  displacement;
+    std::map<unsigned int, Material>  materials; ///< by ring (material id)
+    types::material_id               slave_ring;
+    const AnalyticSolution            analytic;
+    const LoadProgram                 load_program;
+    std::unique_ptr<ContactInterface> contact;
+
+    /// Homogeneous constraints of a Newton update: fixed displacements on
+    /// r = R1 and r = R3, zero multiplier off the slave surface.
+    AffineConstraints<double>  constraints;
+    std::vector<bool>          is_dirichlet;
+    SparsityPattern            sparsity_pattern;
+    SparseMatrix<double>       system_matrix;
+    Vector<double>             system_rhs;
+    Vector<double>             internal_force;
+    Vector<double>             solution;
+    Vector<double>             previous_solution;
+    double                     previous_time, current_time;
+    LoadState                  current_load;
+    types::global_dof_index    probe_dof;
+
+    std::vector<HistoryRow>    history_rows;
+    std::unique_ptr<VtuWriter> vtu_writer;
+    TimerOutput                timer;
+  };
+} // namespace RingContact
+
+#endif

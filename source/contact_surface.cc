@@ -1,0 +1,346 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/grid/manifold.h>
+
+#include <ring_contact/contact_surface.h>
+
+#include <boost/geometry/index/rtree.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace RingContact
+{
+  // ------------------------------------------------------------------
+  // LagrangeBasis1D
+  // ------------------------------------------------------------------
+
+  LagrangeBasis1D::LagrangeBasis1D(const std::vector<double> &nodes)
+  {
+    std::vector<Point<1>> points;
+    for (const double t : nodes)
+      points.emplace_back(t);
+    polynomials = Polynomials::generate_complete_Lagrange_basis(points);
+  }
+
+  void
+  LagrangeBasis1D::evaluate(const double         t,
+                            std::vector<double> &values,
+                            std::vector<double> &first,
+                            std::vector<double> &second) const
+  {
+    values.resize(size());
+    first.resize(size());
+    second.resize(size());
+    std::array<double, 3> v;
+    for (unsigned int i = 0; i < size(); ++i)
+      {
+        polynomials[i].value(t, 2, v.data());
+        values[i] = v[0];
+        first[i]  = v[1];
+        second[i] = v[2];
+      }
+  }
+
+  void
+  LagrangeBasis1D::evaluate(const double t, std::vector<double> &values) const
+  {
+    values.resize(size());
+    for (unsigned int i = 0; i < size(); ++i)
+      values[i] = polynomials[i].value(t);
+  }
+
+  // ------------------------------------------------------------------
+  // ContactSurface
+  // ------------------------------------------------------------------
+
+  namespace
+  {
+    // Nodes of the mapping's support points on a face: Gauss-Lobatto, as in
+    // MappingQ.
+    std::vector<double>
+    gauss_lobatto_nodes(const unsigned int degree)
+    {
+      std::vector<double> nodes;
+      if (degree == 1)
+        return {0.0, 1.0};
+      const QGaussLobatto<1> q(degree + 1);
+      for (const auto &p : q.get_points())
+        nodes.push_back(p[0]);
+      return nodes;
+    }
+  } // namespace
+
+  ContactSurface::ContactSurface(const DoFHandler<2>     &dof_handler,
+                                 const types::boundary_id boundary_id,
+                                 const unsigned int       mapping_degree)
+  {
+    const std::vector<double> geometry_nodes =
+      gauss_lobatto_nodes(mapping_degree);
+    geometry = LagrangeBasis1D(geometry_nodes);
+
+    std::vector<double> displacement_nodes, multiplier_nodes;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == boundary_id)
+          {
+            const auto                          face = cell->face(f);
+            const FiniteElement<2>             &fe   = cell->get_fe();
+            std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+            face->get_dof_indices(face_dofs, cell->active_fe_index());
+
+            SurfaceSegment segment;
+            segment.cell     = cell;
+            segment.face_no  = f;
+            segment.vertices = {face->vertex_index(0), face->vertex_index(1)};
+
+            // Sort the face dofs by component, and record where each sits
+            // along the face (its support point in face coordinates).
+            std::vector<double> u_nodes, lambda_nodes;
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+              {
+                const auto [component, index_in_base] =
+                  fe.face_system_to_component_index(i);
+                const auto &base =
+                  fe.base_element(fe.component_to_base_index(component).first);
+                const double t = base.unit_face_support_point(index_in_base)[0];
+                if (component == 0)
+                  {
+                    segment.dofs_x.push_back(face_dofs[i]);
+                    u_nodes.push_back(t);
+                  }
+                else if (component == 1)
+                  segment.dofs_y.push_back(face_dofs[i]);
+                else
+                  {
+                    segment.multiplier_dofs.push_back(face_dofs[i]);
+                    lambda_nodes.push_back(t);
+                  }
+              }
+            // All faces of the surface belong to one ring: one element.
+            if (segment_list.empty())
+              {
+                displacement_nodes = u_nodes;
+                multiplier_nodes   = lambda_nodes;
+              }
+            AssertThrow(u_nodes == displacement_nodes &&
+                          lambda_nodes == multiplier_nodes,
+                        ExcMessage("contact surface " +
+                                   std::to_string(boundary_id) +
+                                   " mixes finite elements"));
+
+            // Reference geometry: the mapping's support points, on the
+            // face's manifold.
+            const Point<2> v0 = face->vertex(0), v1 = face->vertex(1);
+            for (const double t : geometry_nodes)
+              segment.reference_nodes.push_back(
+                (t == 0.0) ? v0 :
+                (t == 1.0) ? v1 :
+                             face->get_manifold().get_intermediate_point(v0,
+                                                                         v1,
+                                                                         t));
+
+            // Outward normal: n = (dx_y, -dx_x) / |dx| must point from the
+            // cell center towards the face.
+            segment.orientation = 1.0;
+            segment_list.push_back(segment);
+            const CurvePoint mid =
+              reference_point(segment_list.size() - 1, 0.5);
+            const Tensor<1, 2> rotated({mid.dx[1], -mid.dx[0]});
+            if (rotated * (mid.x - cell->center()) < 0)
+              segment_list.back().orientation = -1.0;
+          }
+    displacement = LagrangeBasis1D(displacement_nodes);
+    multiplier   = LagrangeBasis1D(multiplier_nodes);
+    multiplier_node_parameters = multiplier_nodes;
+  }
+
+  CurvePoint
+  ContactSurface::reference_point(const unsigned int segment,
+                                  const double       t) const
+  {
+    std::vector<double> N, dN, ddN;
+    geometry.evaluate(t, N, dN, ddN);
+    const auto &nodes = segment_list[segment].reference_nodes;
+    CurvePoint  p;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        p.x += N[j] * nodes[j];
+        p.dx += dN[j] * nodes[j];
+        p.ddx += ddN[j] * nodes[j];
+      }
+    return p;
+  }
+
+  CurvePoint
+  ContactSurface::current_point(const unsigned int segment,
+                                const double       t) const
+  {
+    CurvePoint          p = reference_point(segment, t);
+    std::vector<double> N, dN, ddN;
+    displacement.evaluate(t, N, dN, ddN);
+    const auto &u = segment_list[segment].nodal_displacements;
+    for (unsigned int i = 0; i < u.size(); ++i)
+      {
+        p.x += N[i] * u[i];
+        p.dx += dN[i] * u[i];
+        p.ddx += ddN[i] * u[i];
+      }
+    return p;
+  }
+
+  Tensor<1, 2>
+  ContactSurface::normal(const unsigned int segment,
+                         const CurvePoint  &point) const
+  {
+    const Tensor<1, 2> n({point.dx[1], -point.dx[0]});
+    return segment_list[segment].orientation * n / n.norm();
+  }
+
+  void
+  ContactSurface::update(const Vector<double> &solution)
+  {
+    std::vector<Box> boxes;
+    boxes.reserve(segment_list.size());
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      {
+        auto &segment = segment_list[s];
+        segment.nodal_displacements.resize(segment.dofs_x.size());
+        for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
+          segment.nodal_displacements[i] =
+            Tensor<1, 2>({solution(segment.dofs_x[i]),
+                          solution(segment.dofs_y[i])});
+        // Box around the current segment: its end points and a few points
+        // in between, extended by a margin for the curvature.
+        std::vector<Point<2>> points;
+        for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0})
+          points.push_back(current_point(s, t).x);
+        BoundingBox<2> box(points);
+        box.extend(0.1 * points.front().distance(points.back()));
+        boxes.emplace_back(box, s);
+      }
+    search_tree = pack_rtree(boxes);
+  }
+
+  Projection
+  ContactSurface::project_onto_segment(const Point<2>    &x,
+                                       const unsigned int segment,
+                                       const double       extension) const
+  {
+    // Newton on r(t) = (x - x(t)) . x'(t) = 0, from the chord projection.
+    const Point<2> a = current_point(segment, 0).x;
+    const Point<2> b = current_point(segment, 1).x;
+    double         t = ((x - a) * (b - a)) / (b - a).norm_square();
+    for (unsigned int it = 0; it < 30; ++it)
+      {
+        const CurvePoint p     = current_point(segment, t);
+        const double     r     = (x - p.x) * p.dx;
+        const double     slope = -p.dx * p.dx + (x - p.x) * p.ddx;
+        const double     dt    = -r / slope;
+        t += dt;
+        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
+          break;
+        t = std::max(-1.0, std::min(2.0, t));
+      }
+    Projection projection;
+    projection.segment = segment;
+    if (!std::isfinite(t) || t < -extension || t > 1 + extension)
+      {
+        projection.clamped = true;
+        t = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
+      }
+    projection.t       = t;
+    const CurvePoint p = current_point(segment, t);
+    projection.gap     = (x - p.x) * normal(segment, p);
+    return projection;
+  }
+
+  Projection
+  ContactSurface::project(const Point<2>    &x,
+                          const unsigned int preferred) const
+  {
+    namespace bgi = boost::geometry::index;
+    std::vector<Box> candidates;
+    search_tree.query(bgi::nearest(x, 4), std::back_inserter(candidates));
+
+    // A point keeps its partner segment while its projection stays on it
+    // or on its extension by a quarter of its length (as the original's
+    // TOLE_PROJ_EXT): at a corner of the faceted master surface a slave
+    // point at the vertex would otherwise be paired back and forth between
+    // the two segments, and the contact force with it.
+    constexpr double extension_of_partner = 0.25;
+    if (preferred != numbers::invalid_unsigned_int)
+      {
+        const Projection kept =
+          project_onto_segment(x, preferred, extension_of_partner);
+        if (!kept.clamped)
+          return kept;
+      }
+
+    // Otherwise: an orthogonal projection beats a clamped one (a corner),
+    // then the shorter distance wins.
+    constexpr double tolerance = 1e-8;
+    Projection       best;
+    double           best_distance = std::numeric_limits<double>::max();
+    for (const auto &candidate : candidates)
+      {
+        const Projection p =
+          project_onto_segment(x, candidate.second, tolerance);
+        const double distance = x.distance(current_point(p.segment, p.t).x);
+        const bool   better =
+          best.segment == numbers::invalid_unsigned_int ||
+          (p.clamped != best.clamped ? !p.clamped :
+                                       distance < best_distance);
+        if (better)
+          {
+            best          = p;
+            best_distance = distance;
+          }
+      }
+    return best;
+  }
+
+  double
+  ContactSurface::min_segment_length() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &segment : segment_list)
+      h = std::min(h,
+                   segment.reference_nodes.front().distance(
+                     segment.reference_nodes.back()));
+    return h;
+  }
+
+  Quadrature<1>
+  contact_quadrature(const IntegrationScheme &scheme,
+                     const unsigned int       slave_degree)
+  {
+    switch (scheme.type)
+      {
+        case ContactIntegration::nodal:
+          // At the slave nodes, with the weights that integrate the
+          // element's polynomials: trapezoid for linear, Simpson for
+          // quadratic segments.
+          return QGaussLobatto<1>(slave_degree + 1);
+        case ContactIntegration::gauss:
+          return QGauss<1>(scheme.n_points);
+        case ContactIntegration::simpson:
+          return QIterated<1>(QSimpson<1>(), scheme.n_points);
+        case ContactIntegration::newton_cotes:
+          switch (scheme.n_points)
+            {
+              case 1:
+                return QTrapezoid<1>();
+              case 2:
+                return QSimpson<1>();
+              case 4:
+                return QMilne<1>();
+              case 6:
+                return QWeddle<1>();
+            }
+      }
+    AssertThrow(false, ExcMessage("unknown contact integration scheme"));
+    return {};
+  }
+} // namespace RingContact

@@ -1,0 +1,192 @@
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <ring_contact/geometry.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+namespace RingContact
+{
+  namespace Geometry
+  {
+    void
+    make_rings(Triangulation<2> &triangulation, const MeshParameters &mesh)
+    {
+      const unsigned int n_around = mesh.elements_around;
+      std::vector<Point<2>>    vertices;
+      std::vector<CellData<2>> cells;
+
+      // One ring between radii r_in and r_out with n_radial cells across.
+      // Cell (i, j): angular index i, radial index j. The local x axis runs
+      // radially and y along the circle, so that every cell has a positive
+      // Jacobian.
+      const auto add_ring = [&](const double       r_in,
+                                const double       r_out,
+                                const unsigned int n_radial,
+                                const unsigned int material_id) {
+        const unsigned int offset = vertices.size();
+        for (unsigned int j = 0; j <= n_radial; ++j)
+          for (unsigned int i = 0; i < n_around; ++i)
+            {
+              const double r   = r_in + (r_out - r_in) * j / n_radial;
+              const double phi = 2 * numbers::PI * i / n_around;
+              vertices.emplace_back(r * std::cos(phi), r * std::sin(phi));
+            }
+        const auto v = [&](const unsigned int i, const unsigned int j) {
+          return offset + j * n_around + (i % n_around);
+        };
+        for (unsigned int j = 0; j < n_radial; ++j)
+          for (unsigned int i = 0; i < n_around; ++i)
+            {
+              CellData<2> cell;
+              cell.vertices    = {v(i, j), v(i, j + 1), v(i + 1, j),
+                                  v(i + 1, j + 1)};
+              cell.material_id = material_id;
+              cells.push_back(cell);
+            }
+      };
+      add_ring(mesh.interface_radius,
+               mesh.outer_radius,
+               mesh.radial_elements_outer,
+               Ids::outer_ring);
+      add_ring(mesh.inner_radius,
+               mesh.interface_radius,
+               mesh.radial_elements_inner,
+               Ids::inner_ring);
+
+      triangulation.create_triangulation(vertices, cells, SubCellData());
+
+      // Boundary ids from the circle a face lies on and the ring it bounds.
+      const double tol = 1e-8 * mesh.outer_radius;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const double r = face->center().norm();
+              const bool   outer = cell->material_id() == Ids::outer_ring;
+              // face->center() of a straight face lies inside the circle.
+              const double r_face =
+                0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
+              (void)r;
+              if (std::abs(r_face - mesh.outer_radius) < tol)
+                face->set_boundary_id(Ids::outer_boundary);
+              else if (std::abs(r_face - mesh.inner_radius) < tol)
+                face->set_boundary_id(Ids::inner_boundary);
+              else
+                face->set_boundary_id(outer ? Ids::outer_ring_contact :
+                                              Ids::inner_ring_contact);
+            }
+    }
+
+    void
+    read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
+    {
+      std::ifstream in(filename);
+      if (!in)
+        throw std::runtime_error("cannot open mesh file '" + filename + "'");
+      // The stream reader keeps the duplicated interface nodes: the two
+      // rings stay two bodies.
+      GridIn<2> grid_in(triangulation);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          throw std::runtime_error("cannot read mesh file '" + filename +
+                                   "' as a linear gmsh mesh (format 1 or "
+                                   "2.2)");
+        }
+    }
+
+    void
+    create_mesh(Triangulation<2> &triangulation, const Parameters &parameters)
+    {
+      if (parameters.mesh.source == MeshSource::generated)
+        make_rings(triangulation, parameters.mesh);
+      else
+        read_gmsh(triangulation, parameters.mesh.mesh_file);
+
+      check_rings(triangulation, parameters);
+
+      // Every cell, face and edge lives on the polar manifold: refinement
+      // puts new vertices on the circles, and a mapping of degree >= 2
+      // makes the element edges arcs.
+      triangulation.set_all_manifold_ids(0);
+      triangulation.set_manifold(0, PolarManifold<2>(Point<2>()));
+      triangulation.refine_global(parameters.mesh.global_refinements);
+    }
+
+    void
+    check_rings(const Triangulation<2> &triangulation,
+                const Parameters       &parameters)
+    {
+      const std::string name =
+        parameters.mesh.source == MeshSource::generated ?
+          std::string("the generated mesh") :
+          "mesh '" + parameters.mesh.mesh_file + "'";
+
+      std::set<types::material_id> materials;
+      std::map<types::boundary_id, std::set<types::material_id>> rings_of;
+      std::map<types::boundary_id, double> worst_radius_error;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          materials.insert(cell->material_id());
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const auto id = face->boundary_id();
+                rings_of[id].insert(cell->material_id());
+                double expected = parameters.mesh.interface_radius;
+                if (id == Ids::outer_boundary)
+                  expected = parameters.mesh.outer_radius;
+                else if (id == Ids::inner_boundary)
+                  expected = parameters.mesh.inner_radius;
+                for (unsigned int v = 0; v < 2; ++v)
+                  worst_radius_error[id] =
+                    std::max(worst_radius_error[id],
+                             std::abs(face->vertex(v).norm() - expected));
+              }
+        }
+      for (const unsigned int m : {Ids::outer_ring, Ids::inner_ring})
+        if (materials.count(m) == 0)
+          throw std::runtime_error(name + " has no cells with material id " +
+                                   std::to_string(m) +
+                                   " (100: outer ring, 101: inner ring)");
+
+      const auto require_boundary = [&](const unsigned int id,
+                                        const std::string &role) {
+        if (rings_of.count(id) == 0)
+          throw std::runtime_error(name + " has no boundary with id " +
+                                   std::to_string(id) + " (the " + role +
+                                   ")");
+        if (rings_of.at(id).size() != 1)
+          throw std::runtime_error(name + ": boundary " + std::to_string(id) +
+                                   " (the " + role +
+                                   ") touches both rings; it must belong to "
+                                   "one");
+        if (worst_radius_error.at(id) > 1e-6 * parameters.mesh.outer_radius)
+          throw std::runtime_error(
+            name + ": boundary " + std::to_string(id) + " (the " + role +
+            ") is not on its circle; its vertices are up to " +
+            std::to_string(worst_radius_error.at(id)) +
+            " m off (check the radii in subsection 'Mesh')");
+      };
+      require_boundary(Ids::outer_boundary, "outer boundary r = R1");
+      require_boundary(Ids::inner_boundary, "inner boundary r = R3");
+      require_boundary(parameters.contact.slave_boundary_id, "slave surface");
+      require_boundary(parameters.contact.master_boundary_id,
+                       "master surface");
+      if (*rings_of.at(parameters.contact.slave_boundary_id).begin() ==
+          *rings_of.at(parameters.contact.master_boundary_id).begin())
+        throw std::runtime_error(name +
+                                 ": the slave and master surfaces belong to "
+                                 "the same ring");
+    }
+  } // namespace Geometry
+} // namespace RingContact

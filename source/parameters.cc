@@ -1,0 +1,758 @@
+#include <ring_contact/parameters.h>
+#include <ring_contact/utilities.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <cctype>
+#include <filesystem>
+#include <sstream>
+
+namespace RingContact
+{
+  namespace
+  {
+    // Throw a one-line error that names the entry, when `ok` is false.
+    void
+    require(const bool         ok,
+            const std::string &subsection,
+            const std::string &entry,
+            const std::string &what)
+    {
+      if (!ok)
+        throw std::runtime_error("parameter '" + entry + "' in subsection '" +
+                                 subsection + "' " + what);
+    }
+  } // namespace
+
+  // ------------------------------------------------------------------
+  // IntegrationScheme
+  // ------------------------------------------------------------------
+
+  std::string
+  IntegrationScheme::name() const
+  {
+    switch (type)
+      {
+        case ContactIntegration::nodal:
+          return "nodal";
+        case ContactIntegration::gauss:
+          return "Gauss " + std::to_string(n_points);
+        case ContactIntegration::simpson:
+          return "Simpson " + std::to_string(n_points);
+        case ContactIntegration::newton_cotes:
+          return "Newton-Cotes " + std::to_string(n_points);
+      }
+    return "";
+  }
+
+  std::string
+  IntegrationScheme::tag() const
+  {
+    switch (type)
+      {
+        case ContactIntegration::nodal:
+          return "nodal";
+        case ContactIntegration::gauss:
+          return "gauss" + std::to_string(n_points);
+        case ContactIntegration::simpson:
+          return "simpson" + std::to_string(n_points);
+        case ContactIntegration::newton_cotes:
+          return "newtoncotes" + std::to_string(n_points);
+      }
+    return "";
+  }
+
+  IntegrationScheme
+  IntegrationScheme::parse(const std::string &text)
+  {
+    std::istringstream in(text);
+    std::string        word;
+    in >> word;
+    std::string lower = word;
+    for (char &c : lower)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    IntegrationScheme  scheme{ContactIntegration::nodal, 0};
+    int                n = -1;
+    if (lower == "nodal")
+      return scheme;
+    if (!(in >> n))
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' needs a number of points, e.g. 'Gauss 2'");
+    std::string rest;
+    if (in >> rest)
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' has trailing text '" + rest + "'");
+    if (lower == "gauss")
+      {
+        scheme.type = ContactIntegration::gauss;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Gauss needs 1 to 20 points");
+      }
+    else if (lower == "simpson")
+      {
+        scheme.type = ContactIntegration::simpson;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Simpson order must be 1 to 20");
+      }
+    else if (lower == "newton-cotes")
+      {
+        scheme.type = ContactIntegration::newton_cotes;
+        if (n != 1 && n != 2 && n != 4 && n != 6)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Newton-Cotes order must be 1, 2, 4 "
+                                   "or 6");
+      }
+    else
+      throw std::runtime_error(
+        "unknown contact integration scheme '" + text +
+        "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n)");
+    scheme.n_points = static_cast<unsigned int>(n);
+    return scheme;
+  }
+
+  // ------------------------------------------------------------------
+  // Mesh
+  // ------------------------------------------------------------------
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Mesh source",
+                        "generated",
+                        Patterns::Selection("generated|gmsh file"),
+                        "generated: the two rings are built in code; gmsh "
+                        "file: read from 'Mesh file'.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "gmsh mesh (format 1 or 2.2, linear quadrilaterals) "
+                        "with the physical tags of SSNP152 (100, 101, 200, "
+                        "300, 400, 500). A relative path is taken from the "
+                        "folder of the .prm file.");
+      prm.declare_entry("Elements around",
+                        "40",
+                        Patterns::Integer(3),
+                        "Number of elements around every circle (generated "
+                        "mesh).");
+      prm.declare_entry("Radial elements outer ring",
+                        "3",
+                        Patterns::Integer(1),
+                        "Elements across the outer ring (generated mesh).");
+      prm.declare_entry("Radial elements inner ring",
+                        "3",
+                        Patterns::Integer(1),
+                        "Elements across the inner ring (generated mesh).");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 8),
+                        "Uniform refinements of the mesh; new vertices are "
+                        "placed on the circles.");
+      prm.declare_entry("Outer radius",
+                        "1.0",
+                        Patterns::Double(),
+                        "R1, outer radius of the outer ring [m].");
+      prm.declare_entry("Interface radius",
+                        "0.6",
+                        Patterns::Double(),
+                        "R2, radius of the contact interface [m].");
+      prm.declare_entry("Inner radius",
+                        "0.2",
+                        Patterns::Double(),
+                        "R3, inner radius of the inner ring [m].");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler  &prm,
+                                   const std::string &prm_folder)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      source = prm.get("Mesh source") == "generated" ? MeshSource::generated :
+                                                       MeshSource::gmsh_file;
+      mesh_file = prm.get("Mesh file");
+      if (source == MeshSource::gmsh_file)
+        {
+          require(!mesh_file.empty(),
+                  "Mesh",
+                  "Mesh file",
+                  "is empty but 'Mesh source' is 'gmsh file'");
+          std::filesystem::path path(mesh_file);
+          if (path.is_relative())
+            path = std::filesystem::path(prm_folder) / path;
+          mesh_file = path.lexically_normal().string();
+          require(std::filesystem::exists(mesh_file),
+                  "Mesh",
+                  "Mesh file",
+                  "names a file that does not exist: " + mesh_file);
+        }
+      elements_around       = prm.get_integer("Elements around");
+      radial_elements_outer = prm.get_integer("Radial elements outer ring");
+      radial_elements_inner = prm.get_integer("Radial elements inner ring");
+      global_refinements    = prm.get_integer("Global refinements");
+      outer_radius          = prm.get_double("Outer radius");
+      interface_radius      = prm.get_double("Interface radius");
+      inner_radius          = prm.get_double("Inner radius");
+      require(inner_radius > 0,
+              "Mesh",
+              "Inner radius",
+              "must be positive (R3 > 0)");
+      require(inner_radius < interface_radius,
+              "Mesh",
+              "Inner radius",
+              "must be smaller than 'Interface radius' (R3 < R2)");
+      require(interface_radius < outer_radius,
+              "Mesh",
+              "Interface radius",
+              "must be smaller than 'Outer radius' (R2 < R1)");
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Materials
+  // ------------------------------------------------------------------
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    {
+      prm.declare_entry("Young's modulus outer ring",
+                        "1e9",
+                        Patterns::Double(),
+                        "E1 [Pa], > 0.");
+      prm.declare_entry("Poisson's ratio outer ring",
+                        "0.2",
+                        Patterns::Double(),
+                        "nu1 [-], -1 < nu1 < 0.5.");
+      prm.declare_entry("Young's modulus inner ring",
+                        "1e9",
+                        Patterns::Double(),
+                        "E2 [Pa], > 0.");
+      prm.declare_entry("Poisson's ratio inner ring",
+                        "0.2",
+                        Patterns::Double(),
+                        "nu2 [-], -1 < nu2 < 0.5.");
+      prm.declare_entry("Kinematics",
+                        "finite strain",
+                        Patterns::Selection("finite strain|small strain"),
+                        "finite strain: total Lagrangian Saint Venant-"
+                        "Kirchhoff (Green-Lagrange strain, second Piola-"
+                        "Kirchhoff stress; the original's GROT_GDEP); small "
+                        "strain: linear elasticity.");
+      prm.declare_entry("Plane assumption",
+                        "plane stress",
+                        Patterns::Selection("plane stress|plane strain"),
+                        "plane stress (S33 = 0, C_PLAN) or plane strain "
+                        "(E33 = 0, D_PLAN).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    {
+      youngs_modulus_outer = prm.get_double("Young's modulus outer ring");
+      poissons_ratio_outer = prm.get_double("Poisson's ratio outer ring");
+      youngs_modulus_inner = prm.get_double("Young's modulus inner ring");
+      poissons_ratio_inner = prm.get_double("Poisson's ratio inner ring");
+      for (const auto &[E, name] :
+           {std::make_pair(youngs_modulus_outer, "outer"),
+            std::make_pair(youngs_modulus_inner, "inner")})
+        require(E > 0,
+                "Materials",
+                std::string("Young's modulus ") + name + " ring",
+                "must be positive, got " + std::to_string(E));
+      for (const auto &[nu, name] :
+           {std::make_pair(poissons_ratio_outer, "outer"),
+            std::make_pair(poissons_ratio_inner, "inner")})
+        require(nu > -1 && nu < 0.5,
+                "Materials",
+                std::string("Poisson's ratio ") + name + " ring",
+                "must satisfy -1 < nu < 0.5, got " + std::to_string(nu));
+      kinematics = prm.get("Kinematics") == "finite strain" ?
+                     Kinematics::finite_strain :
+                     Kinematics::small_strain;
+      plane = prm.get("Plane assumption") == "plane stress" ?
+                PlaneAssumption::plane_stress :
+                PlaneAssumption::plane_strain;
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Finite elements
+  // ------------------------------------------------------------------
+
+  void
+  FiniteElementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite elements");
+    {
+      prm.declare_entry("Displacement degree outer ring",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement on the outer "
+                        "ring (1: Q1, 2: 9-node Q2).");
+      prm.declare_entry("Displacement degree inner ring",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement on the inner "
+                        "ring.");
+      prm.declare_entry("Multiplier degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Degree of the contact pressure (Lagrange multiplier) "
+                        "on the slave surface; at most the slave's "
+                        "displacement degree.");
+      prm.declare_entry("Mapping degree",
+                        "1",
+                        Patterns::Integer(1, 4),
+                        "1: straight element edges (faceted circles, as the "
+                        "original's linear mesh); 2 or more: edges follow the "
+                        "circles (polar manifold).");
+      prm.declare_entry("Reduced integration",
+                        "false",
+                        Patterns::Bool(),
+                        "Integrate the bulk with p x p Gauss points instead of "
+                        "(p+1) x (p+1).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  FiniteElementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite elements");
+    {
+      degree_outer        = prm.get_integer("Displacement degree outer ring");
+      degree_inner        = prm.get_integer("Displacement degree inner ring");
+      multiplier_degree   = prm.get_integer("Multiplier degree");
+      mapping_degree      = prm.get_integer("Mapping degree");
+      reduced_integration = prm.get_bool("Reduced integration");
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Contact
+  // ------------------------------------------------------------------
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry("Slave boundary",
+                        "400",
+                        Patterns::Integer(0),
+                        "Boundary id (gmsh physical tag) of the slave surface, "
+                        "which carries the contact pressure: 400 (S2R2, inner "
+                        "ring) or 300 (S1R2, outer ring).");
+      prm.declare_entry("Master boundary",
+                        "300",
+                        Patterns::Integer(0),
+                        "Boundary id of the master surface (the normal is the "
+                        "master's outward normal).");
+      prm.declare_entry("Integration schemes",
+                        "nodal",
+                        Patterns::List(Patterns::Anything(), 1),
+                        "Comma-separated list; one analysis is run per scheme. "
+                        "nodal: at the slave nodes; Gauss n: n Gauss points "
+                        "per slave segment (1-20); Simpson n: composite "
+                        "Simpson with n sub-intervals; Newton-Cotes n: closed "
+                        "Newton-Cotes of order 1, 2, 4 or 6.");
+      prm.declare_entry("Smooth master normals",
+                        "false",
+                        Patterns::Bool(),
+                        "Use averaged nodal normals on the master surface "
+                        "(the original's LISSAGE).");
+      prm.declare_entry("Complementarity constant",
+                        "0",
+                        Patterns::Double(0),
+                        "c [Pa/m] in the complementarity function "
+                        "lambda - max(0, lambda - c g); it decides the active "
+                        "set, not the converged solution. 0: automatic, the "
+                        "largest Young's modulus over the smallest slave "
+                        "segment length.");
+      prm.declare_entry("Reported pressure",
+                        "Cauchy",
+                        Patterns::Selection("Cauchy|nominal"),
+                        "Cauchy: force per current length of the slave "
+                        "surface (the multiplier itself); nominal: force per "
+                        "reference length.");
+      prm.declare_entry("Probe point",
+                        "0.6, 0",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "Reference position [m] of node A, the slave node "
+                        "whose pressure is checked (the nearest slave node is "
+                        "used).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      slave_boundary_id  = prm.get_integer("Slave boundary");
+      master_boundary_id = prm.get_integer("Master boundary");
+      require(slave_boundary_id != master_boundary_id,
+              "Contact",
+              "Slave boundary",
+              "must differ from 'Master boundary' (both are " +
+                std::to_string(slave_boundary_id) + ")");
+      schemes.clear();
+      for (const auto &entry :
+           Utilities::split_string_list(prm.get("Integration schemes")))
+        {
+          try
+            {
+              schemes.push_back(IntegrationScheme::parse(entry));
+            }
+          catch (const std::exception &e)
+            {
+              require(false, "Contact", "Integration schemes", e.what());
+            }
+        }
+      smooth_master_normals    = prm.get_bool("Smooth master normals");
+      complementarity_constant = prm.get_double("Complementarity constant");
+      reported_pressure        = prm.get("Reported pressure") == "Cauchy" ?
+                                   PressureMeasure::cauchy :
+                                   PressureMeasure::nominal;
+      const auto xy =
+        Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Probe point")));
+      probe_point = Point<2>(xy[0], xy[1]);
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Load program
+  // ------------------------------------------------------------------
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load program");
+    {
+      prm.declare_entry("Program",
+                        "ramp",
+                        Patterns::Selection("ramp|rotation"),
+                        "ramp: p(t) = p0 10^(t - 1.1) at t = k dt, imposed "
+                        "radially (A, B, H); rotation: pressure fixed, the "
+                        "inner boundary turned through s elements (C-G).");
+      prm.declare_entry("Reference pressure",
+                        "1e6",
+                        Patterns::Double(),
+                        "p0 [Pa] of the ramp (p = p0 at t = 1.1).");
+      prm.declare_entry("Ramp steps",
+                        "21",
+                        Patterns::Integer(1),
+                        "Number of steps of the ramp.");
+      prm.declare_entry("Time step",
+                        "0.1",
+                        Patterns::Double(),
+                        "dt of the ramp [pseudo-time].");
+      prm.declare_entry("Rotation pressure",
+                        "1e7",
+                        Patterns::Double(),
+                        "Equivalent pressure p [Pa] held during the rotation.");
+      prm.declare_entry("Rotation steps",
+                        "100",
+                        Patterns::Integer(1),
+                        "Nt, number of equal rotation steps.");
+      prm.declare_entry("Rotation in elements",
+                        "1",
+                        Patterns::Double(),
+                        "Final rotation parameter s: the angle is "
+                        "2 pi s / (elements around).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load program");
+    {
+      program = prm.get("Program") == "ramp" ? LoadProgramType::ramp :
+                                               LoadProgramType::rotation;
+      reference_pressure = prm.get_double("Reference pressure");
+      ramp_steps         = prm.get_integer("Ramp steps");
+      time_step          = prm.get_double("Time step");
+      rotation_pressure  = prm.get_double("Rotation pressure");
+      rotation_steps     = prm.get_integer("Rotation steps");
+      rotation_elements  = prm.get_double("Rotation in elements");
+      require(reference_pressure > 0,
+              "Load program",
+              "Reference pressure",
+              "must be positive");
+      require(time_step > 0, "Load program", "Time step", "must be positive");
+      require(rotation_pressure > 0,
+              "Load program",
+              "Rotation pressure",
+              "must be positive");
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Newton
+  // ------------------------------------------------------------------
+
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    {
+      prm.declare_entry("Maximum iterations",
+                        "12",
+                        Patterns::Integer(1),
+                        "Newton iterations before the step is cut.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "Converged when the residual of the free degrees of "
+                        "freedom, relative to the reaction forces, is below "
+                        "this and the active set no longer changes.");
+      prm.declare_entry("Maximum step cuts",
+                        "5",
+                        Patterns::Integer(0, 30),
+                        "How many times a step that fails is halved and "
+                        "retried before the run stops.");
+      prm.declare_entry("Extrapolate",
+                        "true",
+                        Patterns::Bool(),
+                        "Start each step from the linear extrapolation of the "
+                        "last two converged states.");
+      prm.declare_entry("Verbose",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the residual of every Newton iteration.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    {
+      max_iterations = prm.get_integer("Maximum iterations");
+      tolerance      = prm.get_double("Tolerance");
+      max_step_cuts  = prm.get_integer("Maximum step cuts");
+      extrapolate    = prm.get_bool("Extrapolate");
+      verbose        = prm.get_bool("Verbose");
+      require(tolerance > 0, "Newton", "Tolerance", "must be positive");
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Output
+  // ------------------------------------------------------------------
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "",
+                        Patterns::Anything(),
+                        "Where results go; empty: results/<prm file name> in "
+                        "the current folder.");
+      prm.declare_entry("VTU interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Write VTU files every this many steps (0: never; the "
+                        "last step is always written when > 0).");
+      prm.declare_entry("VTU subdivisions",
+                        "0",
+                        Patterns::Integer(0, 8),
+                        "Subdivisions of each cell in the VTU files; 0: the "
+                        "mapping degree (curved cells are shown curved).");
+      prm.declare_entry("Write history",
+                        "true",
+                        Patterns::Bool(),
+                        "Write history.csv (one row per step and scheme).");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the timing summary at the end (switch off in "
+                        "tests).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler  &prm,
+                                     const std::string &prm_name)
+  {
+    prm.enter_subsection("Output");
+    {
+      directory = prm.get("Directory");
+      if (directory.empty())
+        directory = "results/" + prm_name;
+      vtu_interval     = prm.get_integer("VTU interval");
+      vtu_subdivisions = prm.get_integer("VTU subdivisions");
+      write_history    = prm.get_bool("Write history");
+      print_timing     = prm.get_bool("Print timing");
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // Checks
+  // ------------------------------------------------------------------
+
+  void
+  CheckParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checks");
+    {
+      prm.declare_entry("Quantity",
+                        "pressure at A",
+                        Patterns::Selection(
+                          "pressure at A|L2 error of pressure"),
+                        "The checked value (the original's TEST_RESU): the "
+                        "contact pressure at node A against the analytic "
+                        "pressure, or the relative L2 error of the pressure "
+                        "over the slave surface (reference 0).");
+      prm.declare_entry("Steps",
+                        "all",
+                        Patterns::Anything(),
+                        "'all', 'last', 'none', or a comma-separated list of "
+                        "step numbers (1-based).");
+      prm.declare_entry("Tolerance",
+                        "0.02",
+                        Patterns::Double(0),
+                        "Largest admitted relative error (0.02 = 2 %).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  CheckParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checks");
+    {
+      quantity = prm.get("Quantity") == "pressure at A" ?
+                   CheckedQuantity::pressure_at_A :
+                   CheckedQuantity::l2_pressure_error;
+      tolerance               = prm.get_double("Tolerance");
+      const std::string steps_text = Utilities::trim(prm.get("Steps"));
+      every_step                   = (steps_text == "all");
+      steps.clear();
+      if (steps_text == "last")
+        steps.push_back(numbers::invalid_unsigned_int);
+      else if (!every_step && steps_text != "none")
+        for (const auto &s : Utilities::split_string_list(steps_text))
+          {
+            int n = 0;
+            try
+              {
+                n = Utilities::string_to_int(s);
+              }
+            catch (...)
+              {
+                n = 0;
+              }
+            require(n >= 1,
+                    "Checks",
+                    "Steps",
+                    "must be 'all', 'last', 'none' or step numbers >= 1, "
+                    "got '" + s + "'");
+            steps.push_back(n);
+          }
+    }
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------------
+  // All of them
+  // ------------------------------------------------------------------
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    MeshParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    FiniteElementParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    CheckParameters::declare_parameters(prm);
+  }
+
+  void
+  Parameters::read(const std::string &filename)
+  {
+    prm_file = filename;
+    if (!std::filesystem::exists(filename))
+      throw std::runtime_error("parameter file '" + filename +
+                               "' does not exist");
+    ParameterHandler prm;
+    declare_parameters(prm);
+    try
+      {
+        prm.parse_input(filename);
+      }
+    catch (const std::exception &e)
+      {
+        throw std::runtime_error(filename + ": " + one_line_message(e));
+      }
+
+    const std::filesystem::path path(filename);
+    const std::string           folder =
+      path.has_parent_path() ? path.parent_path().string() : ".";
+    const std::string name = path.stem().string();
+    try
+      {
+        mesh.parse_parameters(prm, folder);
+        materials.parse_parameters(prm);
+        finite_elements.parse_parameters(prm);
+        contact.parse_parameters(prm);
+        load.parse_parameters(prm);
+        newton.parse_parameters(prm);
+        output.parse_parameters(prm, name);
+        checks.parse_parameters(prm);
+
+        const unsigned int slave_degree =
+          (contact.slave_boundary_id == Ids::outer_ring_contact) ?
+            finite_elements.degree_outer :
+            finite_elements.degree_inner;
+        require(finite_elements.multiplier_degree <= slave_degree,
+                "Finite elements",
+                "Multiplier degree",
+                "must not exceed the displacement degree of the slave ring");
+      }
+    catch (const std::exception &e)
+      {
+        throw std::runtime_error(filename + ": " + e.what());
+      }
+  }
+
+  void
+  Parameters::print_reference(std::ostream &out, const bool as_prm)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.print_parameters(out,
+                         as_prm ? ParameterHandler::PRM :
+                                  ParameterHandler::Text);
+  }
+} // namespace RingContact

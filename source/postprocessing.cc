@@ -1,0 +1,312 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <ring_contact/postprocessing.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace RingContact
+{
+  std::vector<Verdict>
+  evaluate_checks(const CheckParameters         &checks,
+                  const std::vector<HistoryRow> &history)
+  {
+    std::vector<Verdict> verdicts;
+    const auto           check_row = [&](const HistoryRow &row) {
+      Verdict v;
+      v.scheme    = row.scheme;
+      v.step      = row.step;
+      v.tolerance = checks.tolerance;
+      if (checks.quantity == CheckedQuantity::pressure_at_A)
+        {
+          v.quantity  = "pressure at A";
+          v.value     = row.pressure_A;
+          v.reference = row.analytic;
+          v.error     = row.relative_error;
+        }
+      else
+        {
+          v.quantity  = "L2 error of pressure";
+          v.value     = row.l2_relative_error;
+          v.reference = 0;
+          v.error     = row.l2_relative_error;
+        }
+      v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
+      verdicts.push_back(v);
+    };
+    if (checks.every_step)
+      for (const auto &row : history)
+        check_row(row);
+    else
+      for (const unsigned int step : checks.steps)
+        {
+          if (history.empty())
+            break;
+          const unsigned int wanted =
+            step == numbers::invalid_unsigned_int ? history.back().step : step;
+          bool found = false;
+          for (const auto &row : history)
+            if (row.step == wanted)
+              {
+                check_row(row);
+                found = true;
+              }
+          if (!found)
+            {
+              // A checked step that was never reached fails.
+              Verdict v{history.front().scheme,
+                        "step not reached",
+                        wanted,
+                        std::nan(""),
+                        0,
+                        std::nan(""),
+                        checks.tolerance,
+                        false};
+              verdicts.push_back(v);
+            }
+        }
+    return verdicts;
+  }
+
+  bool
+  print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts)
+  {
+    bool all_pass = true;
+    out << "\nChecks\n"
+        << std::left << std::setw(14) << "scheme" << std::setw(22)
+        << "quantity" << std::right << std::setw(5) << "step"
+        << std::setw(15) << "value" << std::setw(15) << "reference"
+        << std::setw(12) << "error" << std::setw(11) << "tolerance"
+        << "  verdict\n";
+    for (const auto &v : verdicts)
+      {
+        out << std::left << std::setw(14) << v.scheme << std::setw(22)
+            << v.quantity << std::right << std::setw(5) << v.step
+            << std::setprecision(7) << std::setw(15) << v.value
+            << std::setw(15) << v.reference << std::fixed
+            << std::setprecision(4) << std::setw(11) << 100 * v.error << "%"
+            << std::setw(10) << 100 * v.tolerance << "%"
+            << (v.pass ? "  PASS" : "  FAIL") << std::defaultfloat << '\n';
+        all_pass = all_pass && v.pass;
+      }
+    unsigned int n_pass = 0;
+    for (const auto &v : verdicts)
+      n_pass += v.pass;
+    out << n_pass << " of " << verdicts.size() << " checks pass\n";
+    return all_pass;
+  }
+
+  void
+  write_history(const std::string             &filename,
+                const std::vector<HistoryRow> &history)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
+    out << "scheme,step,time,load_factor,rotation,pressure_A,analytic,"
+           "relative_error,l2_relative_error,pressure_min,pressure_max,"
+           "newton_iterations,step_cuts,active_nodes,wall_time\n";
+    out << std::setprecision(10);
+    for (const auto &r : history)
+      out << r.scheme << ',' << r.step << ',' << r.time << ','
+          << r.load_factor << ',' << r.rotation << ',' << r.pressure_A << ','
+          << r.analytic << ',' << r.relative_error << ','
+          << r.l2_relative_error << ',' << r.pressure_min << ','
+          << r.pressure_max << ',' << r.newton_iterations << ','
+          << r.step_cuts << ',' << r.active_nodes << ',' << r.wall_time
+          << '\n';
+  }
+
+  namespace
+  {
+    // Cauchy stress (xx, yy, xy) and von Mises stress from the
+    // displacement gradient, with each ring's own material.
+    class StressPostprocessor : public DataPostprocessor<2>
+    {
+    public:
+      explicit StressPostprocessor(
+        const std::map<unsigned int, Material> &materials)
+        : materials(materials)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        const auto      cell     = inputs.template get_cell<2>();
+        const Material &material = materials.at(cell->material_id());
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            Tensor<2, 2> H;
+            for (unsigned int d = 0; d < 2; ++d)
+              H[d] = inputs.solution_gradients[q][d];
+            const Tensor<2, 2> s = material.cauchy_stress(H);
+            computed_quantities[q][0] = s[0][0];
+            computed_quantities[q][1] = s[1][1];
+            computed_quantities[q][2] = s[0][1];
+            computed_quantities[q][3] =
+              std::sqrt(s[0][0] * s[0][0] + s[1][1] * s[1][1] -
+                        s[0][0] * s[1][1] + 3 * s[0][1] * s[0][1]);
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"stress_xx", "stress_yy", "stress_xy", "von_Mises_stress"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients;
+      }
+
+    private:
+      const std::map<unsigned int, Material> &materials;
+    };
+
+    // Only the faces of the slave surface.
+    class SlaveFaces : public DataOutFaces<2>
+    {
+    public:
+      explicit SlaveFaces(const types::boundary_id id)
+        : DataOutFaces<2>(true)
+        , slave_id(id)
+      {}
+
+      FaceDescriptor
+      first_face() override
+      {
+        return next_slave_face(
+          {this->triangulation->begin_active(), 0}, true);
+      }
+
+      FaceDescriptor
+      next_face(const FaceDescriptor &face) override
+      {
+        return next_slave_face(face, false);
+      }
+
+    private:
+      FaceDescriptor
+      next_slave_face(FaceDescriptor face, bool include_this)
+      {
+        auto         cell = face.first;
+        unsigned int f    = face.second;
+        if (!include_this)
+          ++f;
+        for (; cell != this->triangulation->end(); ++cell, f = 0)
+          if (cell->is_active())
+            for (; f < cell->n_faces(); ++f)
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == slave_id)
+                return {cell, f};
+        return {this->triangulation->end(), 0};
+      }
+
+      const types::boundary_id slave_id;
+    };
+
+    // The gap, stored in the multiplier component of a dof vector.
+    class GapPostprocessor : public DataPostprocessorScalar<2>
+    {
+    public:
+      GapPostprocessor()
+        : DataPostprocessorScalar<2>("gap", update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          computed_quantities[q][0] = inputs.solution_values[q][2];
+      }
+    };
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    solution_interpretation()
+    {
+      return {DataComponentInterpretation::component_is_part_of_vector,
+              DataComponentInterpretation::component_is_part_of_vector,
+              DataComponentInterpretation::component_is_scalar};
+    }
+  } // namespace
+
+  VtuWriter::VtuWriter(const std::string &directory,
+                       const std::string &tag,
+                       const unsigned int subdivisions)
+    : directory(directory)
+    , tag(tag)
+    , subdivisions(subdivisions)
+  {}
+
+  void
+  VtuWriter::write(const DoFHandler<2>                    &dof_handler,
+                   const Mapping<2>                       &mapping,
+                   const Vector<double>                   &solution,
+                   const Vector<double>                   &nodal_gap,
+                   const std::map<unsigned int, Material> &materials,
+                   const types::boundary_id                slave_boundary_id,
+                   const unsigned int                      step,
+                   const double                            time)
+  {
+    const std::vector<std::string> names = {"displacement",
+                                            "displacement",
+                                            "contact_pressure"};
+    DataOutBase::VtkFlags flags;
+    flags.write_higher_order_cells = subdivisions > 1;
+    flags.time                     = time;
+
+    // The rings.
+    Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      ring_id(cell->active_cell_index()) = cell->material_id();
+    StressPostprocessor stress(materials);
+    DataOut<2>          data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution,
+                             names,
+                             DataOut<2>::type_dof_data,
+                             solution_interpretation());
+    data_out.add_data_vector(solution, stress);
+    data_out.add_data_vector(ring_id, "ring_id");
+    data_out.set_flags(flags);
+    data_out.build_patches(mapping,
+                           subdivisions,
+                           DataOut<2>::curved_inner_cells);
+    const std::string bulk_name =
+      "solution-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
+    std::ofstream bulk(directory + "/" + bulk_name);
+    data_out.write_vtu(bulk);
+    bulk_records.emplace_back(time, bulk_name);
+
+    // The slave surface, with the nodal gap.
+    SlaveFaces faces(slave_boundary_id);
+    faces.attach_dof_handler(dof_handler);
+    faces.add_data_vector(solution,
+                          names,
+                          DataOutFaces<2>::type_dof_data,
+                          solution_interpretation());
+    GapPostprocessor gap;
+    faces.add_data_vector(nodal_gap, gap);
+    faces.set_flags(flags);
+    faces.build_patches(mapping, subdivisions);
+    const std::string surface_name =
+      "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
+    std::ofstream surface(directory + "/" + surface_name);
+    faces.write_vtu(surface);
+    surface_records.emplace_back(time, surface_name);
+
+    std::ofstream pvd(directory + "/solution-" + tag + ".pvd");
+    DataOutBase::write_pvd_record(pvd, bulk_records);
+    std::ofstream pvd_surface(directory + "/slave-" + tag + ".pvd");
+    DataOutBase::write_pvd_record(pvd_surface, surface_records);
+  }
+} // namespace RingContact

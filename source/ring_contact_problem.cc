@@ -1,0 +1,493 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ring_contact/boundary_motion.h>
+#include <ring_contact/geometry.h>
+#include <ring_contact/ring_contact_problem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+
+namespace RingContact
+{
+  RingContactProblem::RingContactProblem(const Parameters        &parameters,
+                                         const IntegrationScheme &scheme,
+                                         std::ostream            &log)
+    : parameters(parameters)
+    , scheme(scheme)
+    , log(log)
+    , dof_handler(triangulation)
+    , displacement(0)
+    , analytic(parameters.mesh, parameters.materials)
+    , load_program(parameters.load)
+    , previous_time(0)
+    , current_time(0)
+    , current_load{0, 0}
+    , timer(log,
+            parameters.output.print_timing ? TimerOutput::summary :
+                                             TimerOutput::never,
+            TimerOutput::wall_times)
+  {
+    const auto &m = parameters.materials;
+    materials.emplace(Ids::outer_ring,
+                      Material(m.youngs_modulus_outer,
+                               m.poissons_ratio_outer,
+                               m.plane,
+                               m.kinematics));
+    materials.emplace(Ids::inner_ring,
+                      Material(m.youngs_modulus_inner,
+                               m.poissons_ratio_inner,
+                               m.plane,
+                               m.kinematics));
+  }
+
+  // The mesh: generated or read, checked, on the polar manifold. The ring
+  // that carries the slave surface gets the multiplier.
+  void
+  RingContactProblem::make_grid()
+  {
+    TimerOutput::Scope t(timer, "mesh");
+    Geometry::create_mesh(triangulation, parameters);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() &&
+            face->boundary_id() == parameters.contact.slave_boundary_id)
+          slave_ring = cell->material_id();
+  }
+
+  // One FESystem per ring: FE_Q(p)^2 for the displacement and, on the slave
+  // ring, FE_Q(q) for the contact pressure (its values off the slave surface
+  // are constrained to zero); FE_Nothing on the master ring. The rings share
+  // no vertex, so the two elements never meet.
+  void
+  RingContactProblem::setup_system()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    const auto        &fe = parameters.finite_elements;
+    for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
+      {
+        const unsigned int degree =
+          ring == Ids::outer_ring ? fe.degree_outer : fe.degree_inner;
+        if (ring == slave_ring)
+          fe_collection.push_back(FESystem<2>(FE_Q<2>(degree),
+                                              2,
+                                              FE_Q<2>(fe.multiplier_degree),
+                                              1));
+        else
+          fe_collection.push_back(
+            FESystem<2>(FE_Q<2>(degree), 2, FE_Nothing<2>(), 1));
+        q_collection.push_back(
+          QGauss<2>(fe.reduced_integration ? degree : degree + 1));
+      }
+    mapping_collection.push_back(MappingQ<2>(fe.mapping_degree));
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 :
+                                                                         1);
+    dof_handler.distribute_dofs(fe_collection);
+
+    const double c =
+      parameters.contact.complementarity_constant > 0 ?
+        parameters.contact.complementarity_constant :
+        std::max(parameters.materials.youngs_modulus_outer,
+                 parameters.materials.youngs_modulus_inner);
+    contact = std::make_unique<ContactInterface>(dof_handler,
+                                                 parameters.contact,
+                                                 scheme,
+                                                 fe.mapping_degree,
+                                                 c);
+    if (parameters.contact.complementarity_constant == 0)
+      {
+        // Automatic: E / h of the slave surface.
+        const double h = contact->slave_surface().min_segment_length();
+        contact        = std::make_unique<ContactInterface>(dof_handler,
+                                                     parameters.contact,
+                                                     scheme,
+                                                     fe.mapping_degree,
+                                                     c / h);
+      }
+    probe_dof =
+      contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
+
+    solution.reinit(dof_handler.n_dofs());
+    previous_solution.reinit(dof_handler.n_dofs());
+    system_rhs.reinit(dof_handler.n_dofs());
+    internal_force.reinit(dof_handler.n_dofs());
+
+    make_constraints();
+  }
+
+  void
+  RingContactProblem::make_constraints()
+  {
+    constraints.clear();
+    const ComponentMask displacement_mask({true, true, false});
+    for (const unsigned int id : {Ids::outer_boundary, Ids::inner_boundary})
+      VectorTools::interpolate_boundary_values(mapping_collection,
+                                               dof_handler,
+                                               id,
+                                               Functions::ZeroFunction<2>(3),
+                                               constraints,
+                                               displacement_mask);
+    is_dirichlet.assign(dof_handler.n_dofs(), false);
+    for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+      is_dirichlet[i] = constraints.is_constrained(i);
+
+    // The multiplier lives on the slave surface only.
+    const IndexSet all_multipliers =
+      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+    std::set<types::global_dof_index> slave_multipliers(
+      contact->multiplier_dofs().begin(), contact->multiplier_dofs().end());
+    for (const auto i : all_multipliers)
+      if (slave_multipliers.count(i) == 0)
+        constraints.add_line(i);
+    constraints.close();
+  }
+
+  // The bulk couplings, and those of the current contact pairs.
+  void
+  RingContactProblem::make_sparsity_pattern()
+  {
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, true);
+    contact->add_couplings(dsp);
+    sparsity_pattern.copy_from(dsp);
+    system_matrix.reinit(sparsity_pattern);
+  }
+
+  void
+  RingContactProblem::setup()
+  {
+    make_grid();
+    setup_system();
+    contact->update(solution);
+    make_sparsity_pattern();
+  }
+
+  // Impose the displacements of the load state on r = R1 and r = R3.
+  void
+  RingContactProblem::apply_boundary_motion(const LoadState &load)
+  {
+    const double angle = 2 * numbers::PI * load.rotation_elements /
+                         (parameters.mesh.elements_around *
+                          (1u << parameters.mesh.global_refinements));
+    const BoundaryMotion outer(analytic.f_R1(load.pressure), 0.0, 3);
+    const BoundaryMotion inner(analytic.f_R3(load.pressure), angle, 3);
+    std::map<types::boundary_id, const Function<2> *> motion = {
+      {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
+    std::map<types::global_dof_index, double> boundary_values;
+    VectorTools::interpolate_boundary_values(mapping_collection,
+                                             dof_handler,
+                                             motion,
+                                             boundary_values,
+                                             ComponentMask({true, true, false}));
+    for (const auto &[dof, value] : boundary_values)
+      solution(dof) = value;
+    current_load = load;
+  }
+
+  // Bulk: total Lagrangian virtual work int P : Grad(delta u) dV and its
+  // tangent int Grad(delta u) : A : Grad(du) dV; then the contact terms.
+  void
+  RingContactProblem::assemble_system()
+  {
+    TimerOutput::Scope t(timer, "assembly");
+    system_matrix = 0;
+    system_rhs    = 0;
+    internal_force = 0;
+
+    hp::FEValues<2> hp_fe_values(mapping_collection,
+                                 fe_collection,
+                                 q_collection,
+                                 update_gradients | update_JxW_values);
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<Tensor<2, 2>>            grad_u;
+    std::vector<Tensor<2, 2>>            grad_phi, A_grad_phi;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        hp_fe_values.reinit(cell);
+        const FEValues<2> &fe_values = hp_fe_values.get_present_fe_values();
+        const unsigned int n         = cell->get_fe().n_dofs_per_cell();
+        const Material    &material  = materials.at(cell->material_id());
+        cell_matrix.reinit(n, n);
+        cell_rhs.reinit(n);
+        dofs.resize(n);
+        grad_u.resize(fe_values.n_quadrature_points);
+        grad_phi.resize(n);
+        A_grad_phi.resize(n);
+        cell->get_dof_indices(dofs);
+        fe_values[displacement].get_function_gradients(solution, grad_u);
+
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          {
+            Tensor<2, 2> P;
+            Tensor<4, 2> A;
+            material.stress_and_tangent(grad_u[q], P, A);
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                grad_phi[i]   = fe_values[displacement].gradient(i, q);
+                A_grad_phi[i] = double_contract<2, 0, 3, 1>(A, grad_phi[i]);
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                if (grad_phi[i].norm_square() == 0)
+                  continue;
+                cell_rhs(i) -= scalar_product(P, grad_phi[i]) * JxW;
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) +=
+                    scalar_product(grad_phi[i], A_grad_phi[j]) * JxW;
+              }
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          internal_force(dofs[i]) -= cell_rhs(i);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
+      }
+
+    contact->assemble(solution, constraints, system_matrix, system_rhs);
+  }
+
+  void
+  RingContactProblem::solve_linear_system(Vector<double> &newton_update)
+  {
+    TimerOutput::Scope   t(timer, "linear solver");
+    SparseDirectUMFPACK direct;
+    direct.initialize(system_matrix);
+    direct.vmult(newton_update, system_rhs);
+    constraints.distribute(newton_update);
+  }
+
+  // Semi-smooth Newton: pair, choose the active set, assemble, solve.
+  // Converged when the residual of the free unknowns, relative to the
+  // reaction forces on the fixed boundaries, is below the tolerance and the
+  // active set did not change.
+  bool
+  RingContactProblem::solve_newton_step(unsigned int &iterations,
+                                        double       &final_residual)
+  {
+    const auto    &newton = parameters.newton;
+    Vector<double> newton_update(dof_handler.n_dofs());
+    iterations          = 0;
+    double first_residual = 0;
+    for (unsigned int it = 0;; ++it)
+      {
+        unsigned int n_changed;
+        {
+          TimerOutput::Scope t(timer, "contact search");
+          n_changed = contact->update(solution);
+        }
+        if (!contact->sparsity_covers_pairing())
+          make_sparsity_pattern();
+        assemble_system();
+
+        double reaction = 0;
+        for (types::global_dof_index i = 0; i < internal_force.size(); ++i)
+          if (is_dirichlet[i])
+            reaction += internal_force(i) * internal_force(i);
+        reaction       = std::sqrt(reaction);
+        final_residual = system_rhs.l2_norm() / std::max(reaction, 1e-300);
+        if (it == 0)
+          first_residual = final_residual;
+        if (newton.verbose)
+          log << "    Newton " << std::setw(2) << it
+              << "  relative residual " << std::scientific
+              << std::setprecision(3) << final_residual << std::defaultfloat
+              << "  active " << contact->n_active() << "/"
+              << contact->multiplier_dofs().size() << "  changed "
+              << n_changed << '\n';
+        if (!std::isfinite(final_residual))
+          return false;
+        if (final_residual < newton.tolerance && n_changed == 0)
+          return true;
+        if (it == newton.max_iterations ||
+            (it > 2 && final_residual > 1e6 * first_residual))
+          return false;
+
+        solve_linear_system(newton_update);
+        solution += newton_update;
+        ++iterations;
+      }
+  }
+
+  // One step of the load program, cut in halves while Newton fails.
+  bool
+  RingContactProblem::solve_load_step(const unsigned int step)
+  {
+    const double t_end = load_program.time(step);
+    double       dt    = t_end - current_time;
+    unsigned int cuts = 0, total_iterations = 0;
+    Timer        wall;
+    while (current_time < t_end - 1e-12 * std::abs(t_end))
+      {
+        const double   t_next = std::min(current_time + dt, t_end);
+        const Vector<double> converged = solution;
+
+        // Predictor: extrapolate the last increment when it was of the
+        // same kind (pressure only, or rotation only).
+        const LoadState next  = load_program.state(t_next);
+        const LoadState now   = current_load;
+        const LoadState prev  = load_program.state(previous_time);
+        double          scale = 0;
+        if (parameters.newton.extrapolate && current_time > previous_time)
+          {
+            const double dp0 = now.pressure - prev.pressure,
+                         dp1 = next.pressure - now.pressure;
+            const double ds0 = now.rotation_elements - prev.rotation_elements,
+                         ds1 = next.rotation_elements - now.rotation_elements;
+            if (ds0 == 0 && ds1 == 0 && dp0 != 0)
+              scale = dp1 / dp0;
+            else if (dp0 == 0 && dp1 == 0 && ds0 != 0)
+              scale = ds1 / ds0;
+          }
+        if (scale != 0)
+          solution.add(scale, converged, -scale, previous_solution);
+        apply_boundary_motion(next);
+
+        unsigned int iterations = 0;
+        double       residual   = 0;
+        const bool   ok         = solve_newton_step(iterations, residual);
+        total_iterations += iterations;
+        if (ok)
+          {
+            previous_solution = converged;
+            previous_time     = current_time;
+            current_time      = t_next;
+            continue;
+          }
+        // Failed: back to the last converged state, half the increment.
+        solution     = converged;
+        current_load = load_program.state(current_time);
+        contact->update(solution);
+        if (cuts == parameters.newton.max_step_cuts)
+          {
+            log << "Step " << step << ": Newton did not converge after "
+                << cuts << " step cuts (last relative residual " << residual
+                << " at t = " << t_next << ", increment " << dt
+                << "); stopping with the last converged state (t = "
+                << current_time << ")\n";
+            return false;
+          }
+        ++cuts;
+        dt /= 2;
+        log << "  step " << step << ": Newton failed (relative residual "
+            << residual << "), cutting the increment to " << dt << '\n';
+      }
+    postprocess_step(step, total_iterations, cuts, wall.wall_time());
+    return true;
+  }
+
+  // The quantities of SSNP152 after a step: pressure at node A against
+  // sigma_n, L2 error over the slave surface, extreme pressures.
+  void
+  RingContactProblem::postprocess_step(const unsigned int step,
+                                       const unsigned int iterations,
+                                       const unsigned int cuts,
+                                       const double       wall_time)
+  {
+    TimerOutput::Scope t(timer, "postprocessing");
+    const PressureMeasure measure = parameters.contact.reported_pressure;
+    const auto            reported = [&](const types::global_dof_index dof) {
+      const double lambda = solution(dof);
+      return measure == PressureMeasure::cauchy ?
+               lambda :
+               lambda * contact->stretch_at(dof);
+    };
+    HistoryRow row;
+    row.scheme            = scheme.name();
+    row.step              = step;
+    row.time              = current_time;
+    row.load_factor       = current_load.pressure;
+    row.rotation          = current_load.rotation_elements;
+    row.pressure_A        = reported(probe_dof);
+    row.analytic          = analytic.contact_pressure(current_load.pressure);
+    row.relative_error    = (row.pressure_A - row.analytic) / row.analytic;
+    row.l2_relative_error =
+      contact->l2_relative_error(solution, row.analytic, measure);
+    row.pressure_min = std::numeric_limits<double>::max();
+    row.pressure_max = -std::numeric_limits<double>::max();
+    for (const auto dof : contact->multiplier_dofs())
+      {
+        row.pressure_min = std::min(row.pressure_min, reported(dof));
+        row.pressure_max = std::max(row.pressure_max, reported(dof));
+      }
+    row.newton_iterations = iterations;
+    row.step_cuts         = cuts;
+    row.active_nodes      = contact->n_active();
+    row.wall_time         = wall_time;
+    history_rows.push_back(row);
+
+    log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
+        << std::setprecision(4) << row.time << "  p " << std::setw(10)
+        << std::setprecision(6) << row.load_factor << "  s " << std::setw(5)
+        << std::setprecision(3) << row.rotation << "  Newton " << iterations
+        << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
+        << "  p_A " << std::setprecision(7) << std::setw(12)
+        << row.pressure_A << "  analytic " << std::setw(12) << row.analytic
+        << "  error " << std::fixed << std::setprecision(3) << std::setw(7)
+        << 100 * row.relative_error << "%  L2 " << std::setw(6)
+        << 100 * row.l2_relative_error << '%' << std::defaultfloat << '\n';
+
+    const unsigned int interval = parameters.output.vtu_interval;
+    if (interval > 0 &&
+        (step % interval == 0 || step == load_program.n_steps()))
+      output_results(step);
+  }
+
+  void
+  RingContactProblem::output_results(const unsigned int step)
+  {
+    TimerOutput::Scope t(timer, "output");
+    if (!vtu_writer)
+      {
+        const unsigned int subdivisions =
+          parameters.output.vtu_subdivisions > 0 ?
+            parameters.output.vtu_subdivisions :
+            std::max(parameters.finite_elements.mapping_degree,
+                     std::max(parameters.finite_elements.degree_outer,
+                              parameters.finite_elements.degree_inner));
+        vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
+                                                 scheme.tag(),
+                                                 subdivisions);
+      }
+    Vector<double> nodal_gap(dof_handler.n_dofs());
+    for (const auto dof : contact->multiplier_dofs())
+      nodal_gap(dof) = contact->gap_at(dof);
+    vtu_writer->write(dof_handler,
+                      mapping_collection[0],
+                      solution,
+                      nodal_gap,
+                      materials,
+                      parameters.contact.slave_boundary_id,
+                      step,
+                      current_time);
+  }
+
+  bool
+  RingContactProblem::run()
+  {
+    setup();
+    log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
+        << " cells, " << dof_handler.n_dofs() << " unknowns, "
+        << contact->multiplier_dofs().size() << " contact pressure nodes, "
+        << load_program.n_steps() << " steps\n";
+    bool ok = true;
+    for (unsigned int step = 1; step <= load_program.n_steps() && ok; ++step)
+      ok = solve_load_step(step);
+    if (!ok && parameters.output.vtu_interval > 0)
+      output_results(history_rows.empty() ? 0 : history_rows.back().step);
+    return ok;
+  }
+} // namespace RingContact
