@@ -13,12 +13,14 @@ namespace RingContact
                                      const ContactParameters &parameters,
                                      const IntegrationScheme &scheme,
                                      const unsigned int       mapping_degree,
-                                     const double complementarity_constant)
+                                     const double complementarity_constant,
+                                     const bool   geometrically_linear)
     : slave(dof_handler, parameters.slave_boundary_id, mapping_degree)
     , master(dof_handler, parameters.master_boundary_id, mapping_degree)
     , quadrature(contact_quadrature(scheme,
                                     slave.displacement_basis().size() - 1))
     , complementarity_constant(complementarity_constant)
+    , geometrically_linear(geometrically_linear)
   {
     // Basis values at the quadrature points of a slave segment.
     for (const auto &q : quadrature.get_points())
@@ -61,6 +63,7 @@ namespace RingContact
           }
       }
     weighted_gap.assign(multiplier_dof_list.size(), 0.0);
+    segment_length = slave.min_segment_length();
     active.assign(multiplier_dof_list.size(), true);
 
     // Neighbours on the master surface: segments that share a vertex.
@@ -79,8 +82,20 @@ namespace RingContact
   unsigned int
   ContactInterface::update(const Vector<double> &solution)
   {
-    slave.update(solution);
-    master.update(solution);
+    // Finite strain: pair and measure in the current configuration. Small
+    // strain: pair in the reference configuration, and the gap is the
+    // reference gap plus the normal jump of the displacement.
+    if (geometrically_linear)
+      {
+        const Vector<double> zero(solution.size());
+        slave.update(zero);
+        master.update(zero);
+      }
+    else
+      {
+        slave.update(solution);
+        master.update(solution);
+      }
 
     // Pair every slave quadrature point; keep the previous partner on ties.
     std::vector<ContactPoint> new_points;
@@ -98,6 +113,9 @@ namespace RingContact
           point.quadrature_point = q;
           point.projection       = master.project(x.x, preferred);
           point.current_length   = x.dx.norm() * quadrature.weight(q);
+          if (geometrically_linear)
+            point.projection.gap += linear_gap_increment(
+              solution, s, quadrature.point(q)[0], point.projection);
           new_points.push_back(point);
         }
     points = std::move(new_points);
@@ -116,9 +134,13 @@ namespace RingContact
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
       {
         const double lambda = solution(multiplier_dof_list[k]);
-        const bool   closed = reference_weight[k] * lambda -
+        // Closed when w lambda - c g~ >= 0; a gap of round-off size (at
+        // the start the surfaces touch exactly) counts as closed.
+        const double round_off = 1e-12 * complementarity_constant *
+                                 reference_weight[k] * segment_length;
+        const bool closed = reference_weight[k] * lambda -
                               complementarity_constant * weighted_gap[k] >=
-                            0;
+                            -round_off;
         if (closed != active[k])
           ++n_changed;
         active[k] = closed;
@@ -130,9 +152,15 @@ namespace RingContact
   ContactInterface::sparsity_covers_pairing() const
   {
     for (const auto &point : points)
-      if (pattern_pairs.count(
-            {point.slave_segment, point.projection.segment}) == 0)
-        return false;
+      {
+        if (pattern_pairs.count(
+              {point.slave_segment, point.projection.segment}) == 0)
+          return false;
+        if (point.projection.at_vertex &&
+            pattern_pairs.count(
+              {point.slave_segment, point.projection.neighbour}) == 0)
+          return false;
+      }
     return true;
   }
 
@@ -164,116 +192,184 @@ namespace RingContact
       }
   }
 
+  namespace
+  {
+    using AD = Sacado::Fad::DFad<double>;
+
+    // A point of a segment in the current configuration with AD
+    // coordinates: reference geometry (double) plus interpolated
+    // displacement (AD); `with_displacement` = false keeps the reference
+    // tangent (small strain).
+    struct ADCurvePoint
+    {
+      AD x[2], dx[2], ddx[2];
+    };
+
+    ADCurvePoint
+    ad_curve_point(const CurvePoint                &reference,
+                   const std::vector<double>       &N,
+                   const std::vector<double>       &dN,
+                   const std::vector<double>       &ddN,
+                   const AD                        *u_x,
+                   const AD                        *u_y,
+                   const bool                       with_displacement)
+    {
+      ADCurvePoint p;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          p.x[d]   = reference.x[d];
+          p.dx[d]  = reference.dx[d];
+          p.ddx[d] = reference.ddx[d];
+        }
+      for (unsigned int i = 0; i < N.size(); ++i)
+        {
+          p.x[0] += N[i] * u_x[i];
+          p.x[1] += N[i] * u_y[i];
+          if (!with_displacement)
+            continue;
+          p.dx[0] += dN[i] * u_x[i];
+          p.dx[1] += dN[i] * u_y[i];
+          p.ddx[0] += ddN[i] * u_x[i];
+          p.ddx[1] += ddN[i] * u_y[i];
+        }
+      return p;
+    }
+  } // namespace
+
   void
   ContactInterface::assemble(const Vector<double>            &solution,
                              const AffineConstraints<double> &constraints,
                              SparseMatrix<double>            &matrix,
                              Vector<double>                  &rhs) const
   {
-    using AD = Sacado::Fad::DFad<double>;
-    const double c = complementarity_constant;
+    const double c       = complementarity_constant;
+    const bool   current = !geometrically_linear;
 
     std::vector<types::global_dof_index> local_dofs;
     FullMatrix<double>                   local_matrix;
     Vector<double>                       local_rhs;
-    std::vector<double> Nm, dNm, ddNm;
+    std::vector<double> Nm, dNm, ddNm, Nb, dNb, ddNb;
+    const std::vector<double> none;
 
     for (const auto &point : points)
       {
+        const Projection &projection = point.projection;
         const auto &s_seg = slave.segments()[point.slave_segment];
-        const auto &m_seg = master.segments()[point.projection.segment];
+        const auto &m_seg = master.segments()[projection.segment];
+        // At a vertex the normal also depends on the neighbouring segment.
+        const SurfaceSegment *b_seg =
+          projection.at_vertex ? &master.segments()[projection.neighbour] :
+                                 nullptr;
         const unsigned int ns = s_seg.dofs_x.size();
         const unsigned int nm = m_seg.dofs_x.size();
+        const unsigned int nb = b_seg ? b_seg->dofs_x.size() : 0;
         const unsigned int nl = s_seg.multiplier_dofs.size();
-        const unsigned int n  = 2 * ns + 2 * nm + nl;
 
-        // Local unknowns: slave u_x, u_y, master u_x, u_y, multipliers.
+        // Local unknowns: slave u_x, u_y, master u_x, u_y, neighbour u_x,
+        // u_y, multipliers.
         local_dofs.clear();
-        for (const auto *list : {&s_seg.dofs_x,
-                                 &s_seg.dofs_y,
-                                 &m_seg.dofs_x,
-                                 &m_seg.dofs_y,
-                                 &s_seg.multiplier_dofs})
+        std::vector<const std::vector<types::global_dof_index> *> lists = {
+          &s_seg.dofs_x, &s_seg.dofs_y, &m_seg.dofs_x, &m_seg.dofs_y};
+        if (b_seg)
+          {
+            lists.push_back(&b_seg->dofs_x);
+            lists.push_back(&b_seg->dofs_y);
+          }
+        lists.push_back(&s_seg.multiplier_dofs);
+        for (const auto *list : lists)
           local_dofs.insert(local_dofs.end(), list->begin(), list->end());
-        std::vector<AD> u(n);
+        const unsigned int n = local_dofs.size();
+        std::vector<AD>    u(n);
         for (unsigned int i = 0; i < n; ++i)
           u[i] = AD(n, i, solution(local_dofs[i]));
-        const AD *us_x = &u[0], *us_y = &u[ns], *um_x = &u[2 * ns],
-                 *um_y = &u[2 * ns + nm], *lambda_k = &u[2 * ns + 2 * nm];
+        const AD *us_x = &u[0], *us_y = &u[ns];
+        const AD *um_x = &u[2 * ns], *um_y = &u[2 * ns + nm];
+        const AD *ub_x = &u[2 * ns + 2 * nm], *ub_y = &u[2 * ns + 2 * nm + nb];
+        const AD *lambda_k = &u[2 * ns + 2 * nm + 2 * nb];
 
         // Slave point, its length element and the pressure there.
-        const unsigned int q  = point.quadrature_point;
-        const auto        &G  = geometry_values[q];
-        const auto        &dG = geometry_gradients[q];
-        const auto        &N  = displacement_values[q];
-        const auto        &dN = displacement_gradients[q];
-        const auto        &Phi = multiplier_values[q];
-        AD xs[2] = {0, 0}, dxs[2] = {0, 0};
-        for (unsigned int j = 0; j < G.size(); ++j)
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              xs[d] += G[j] * s_seg.reference_nodes[j][d];
-              dxs[d] += dG[j] * s_seg.reference_nodes[j][d];
-            }
-        for (unsigned int i = 0; i < ns; ++i)
+        const unsigned int q = point.quadrature_point;
+        CurvePoint         Xs;
+        for (unsigned int j = 0; j < s_seg.reference_nodes.size(); ++j)
           {
-            xs[0] += N[i] * us_x[i];
-            xs[1] += N[i] * us_y[i];
-            dxs[0] += dN[i] * us_x[i];
-            dxs[1] += dN[i] * us_y[i];
+            Xs.x += geometry_values[q][j] * s_seg.reference_nodes[j];
+            Xs.dx += geometry_gradients[q][j] * s_seg.reference_nodes[j];
           }
-        const AD ds =
-          std::sqrt(dxs[0] * dxs[0] + dxs[1] * dxs[1]) * quadrature.weight(q);
-        AD lambda = 0;
+        const ADCurvePoint xs = ad_curve_point(Xs,
+                                               displacement_values[q],
+                                               displacement_gradients[q],
+                                               displacement_gradients[q],
+                                               us_x,
+                                               us_y,
+                                               current);
+        const AD ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
+                      quadrature.weight(q);
+        const auto &Phi    = multiplier_values[q];
+        AD          lambda = 0;
         for (unsigned int k = 0; k < nl; ++k)
           lambda += Phi[k] * lambda_k[k];
 
         // Master point at the converged parameter xi0, and its first-order
         // correction d xi = -r / r' with r = (x_s - x_m) . x_m': its value
         // vanishes, its derivative is that of the projection (implicit
-        // function theorem). A clamped projection (corner) keeps xi fixed.
-        const double     xi0 = point.projection.t;
-        const CurvePoint Xm  = master.reference_point(point.projection.segment, xi0);
+        // function theorem). At a vertex or a clamped corner xi is fixed.
+        const double xi0 = projection.t;
         master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
-        AD xm[2], txm[2], ttxm[2];
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            xm[d]   = Xm.x[d];
-            txm[d]  = Xm.dx[d];
-            ttxm[d] = Xm.ddx[d];
-          }
-        for (unsigned int i = 0; i < nm; ++i)
-          {
-            xm[0] += Nm[i] * um_x[i];
-            xm[1] += Nm[i] * um_y[i];
-            txm[0] += dNm[i] * um_x[i];
-            txm[1] += dNm[i] * um_y[i];
-            ttxm[0] += ddNm[i] * um_x[i];
-            ttxm[1] += ddNm[i] * um_y[i];
-          }
+        const ADCurvePoint xm =
+          ad_curve_point(master.reference_point(projection.segment, xi0),
+                         Nm,
+                         dNm,
+                         ddNm,
+                         um_x,
+                         um_y,
+                         current);
         AD dxi = 0;
-        if (!point.projection.clamped)
+        if (!projection.clamped && !projection.at_vertex && current)
           {
-            const AD r = (xs[0] - xm[0]) * txm[0] + (xs[1] - xm[1]) * txm[1];
-            const AD slope = -(txm[0] * txm[0] + txm[1] * txm[1]) +
-                             (xs[0] - xm[0]) * ttxm[0] +
-                             (xs[1] - xm[1]) * ttxm[1];
+            const AD r = (xs.x[0] - xm.x[0]) * xm.dx[0] +
+                         (xs.x[1] - xm.x[1]) * xm.dx[1];
+            const AD slope = -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
+                             (xs.x[0] - xm.x[0]) * xm.ddx[0] +
+                             (xs.x[1] - xm.x[1]) * xm.ddx[1];
             dxi = -r / slope;
           }
-        AD x_m[2], t_m[2];
+        AD x_m[2], normal[2];
         for (unsigned int d = 0; d < 2; ++d)
-          {
-            x_m[d] = xm[d] + txm[d] * dxi;
-            t_m[d] = txm[d] + ttxm[d] * dxi;
-          }
-        const AD t_norm = std::sqrt(t_m[0] * t_m[0] + t_m[1] * t_m[1]);
-        const AD normal[2] = {m_seg.orientation * t_m[1] / t_norm,
-                              -m_seg.orientation * t_m[0] / t_norm};
+          x_m[d] = xm.x[d] + xm.dx[d] * dxi;
+        // Outward normal, scaled by |x_m'|: orientation * (x'_y, -x'_x); at
+        // a vertex the sum over the two segments (length-weighted average).
+        {
+          const AD t_m[2] = {xm.dx[0] + xm.ddx[0] * dxi,
+                             xm.dx[1] + xm.ddx[1] * dxi};
+          normal[0] = m_seg.orientation * t_m[1];
+          normal[1] = -m_seg.orientation * t_m[0];
+          if (b_seg)
+            {
+              master.displacement_basis().evaluate(
+                projection.neighbour_t, Nb, dNb, ddNb);
+              const ADCurvePoint xb = ad_curve_point(
+                master.reference_point(projection.neighbour,
+                                       projection.neighbour_t),
+                Nb,
+                dNb,
+                ddNb,
+                ub_x,
+                ub_y,
+                current);
+              normal[0] += b_seg->orientation * xb.dx[1];
+              normal[1] -= b_seg->orientation * xb.dx[0];
+            }
+          const AD length =
+            std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
+          normal[0] /= length;
+          normal[1] /= length;
+        }
         const AD gap =
-          (xs[0] - x_m[0]) * normal[0] + (xs[1] - x_m[1]) * normal[1];
+          (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
 
         // Residual: contact virtual work and weighted gap rows.
         std::vector<AD> residual(n, AD(0.0));
+        const auto     &N = displacement_values[q];
         for (unsigned int i = 0; i < ns; ++i)
           for (unsigned int d = 0; d < 2; ++d)
             residual[d * ns + i] = -lambda * N[i] * normal[d] * ds;
@@ -285,7 +381,7 @@ namespace RingContact
           }
         for (unsigned int k = 0; k < nl; ++k)
           if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
-            residual[2 * ns + 2 * nm + k] = c * Phi[k] * gap * ds;
+            residual[2 * ns + 2 * nm + 2 * nb + k] = c * Phi[k] * gap * ds;
 
         local_matrix.reinit(n, n);
         local_rhs.reinit(n);
@@ -307,6 +403,33 @@ namespace RingContact
           matrix.add(dof, dof, reference_weight[k]);
           rhs(dof) -= reference_weight[k] * solution(dof);
         }
+  }
+
+  double
+  ContactInterface::linear_gap_increment(const Vector<double> &solution,
+                                         const unsigned int    slave_segment,
+                                         const double          t,
+                                         const Projection     &projection) const
+  {
+    const auto displacement_at = [&](const ContactSurface &surface,
+                                     const unsigned int    segment,
+                                     const double          t) {
+      std::vector<double> N;
+      surface.displacement_basis().evaluate(t, N);
+      const auto  &seg = surface.segments()[segment];
+      Tensor<1, 2> u;
+      for (unsigned int i = 0; i < N.size(); ++i)
+        {
+          u[0] += N[i] * solution(seg.dofs_x[i]);
+          u[1] += N[i] * solution(seg.dofs_y[i]);
+        }
+      return u;
+    };
+    const Tensor<1, 2> jump =
+      displacement_at(slave, slave_segment, t) -
+      displacement_at(master, projection.segment, projection.t);
+    // The surfaces hold the reference configuration here.
+    return jump * master.normal(projection);
   }
 
   unsigned int
@@ -372,13 +495,19 @@ namespace RingContact
   }
 
   double
-  ContactInterface::gap_at(const types::global_dof_index dof) const
+  ContactInterface::gap_at(const types::global_dof_index dof,
+                          const Vector<double>         &solution) const
   {
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       {
         double t;
         if (node_parameter(slave, slave.segments()[s], dof, t))
-          return master.project(slave.current_point(s, t).x).gap;
+          {
+            Projection p = master.project(slave.current_point(s, t).x);
+            if (geometrically_linear)
+              p.gap += linear_gap_increment(solution, s, t, p);
+            return p.gap;
+          }
       }
     return 0.0;
   }

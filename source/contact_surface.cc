@@ -154,6 +154,9 @@ namespace RingContact
     displacement = LagrangeBasis1D(displacement_nodes);
     multiplier   = LagrangeBasis1D(multiplier_nodes);
     multiplier_node_parameters = multiplier_nodes;
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      for (const unsigned int v : segment_list[s].vertices)
+        segments_at_vertex[v].push_back(s);
   }
 
   CurvePoint
@@ -196,6 +199,24 @@ namespace RingContact
   {
     const Tensor<1, 2> n({point.dx[1], -point.dx[0]});
     return segment_list[segment].orientation * n / n.norm();
+  }
+
+  Tensor<1, 2>
+  ContactSurface::normal(const Projection &projection) const
+  {
+    if (!projection.at_vertex)
+      return normal(projection.segment,
+                    current_point(projection.segment, projection.t));
+    // Length-weighted average of the two segments' normals at the vertex.
+    const auto scaled_normal = [this](const unsigned int segment,
+                                      const double       t) {
+      const Tensor<1, 2> dx = current_point(segment, t).dx;
+      return segment_list[segment].orientation * Tensor<1, 2>({dx[1], -dx[0]});
+    };
+    const Tensor<1, 2> n = scaled_normal(projection.segment, projection.t) +
+                           scaled_normal(projection.neighbour,
+                                         projection.neighbour_t);
+    return n / n.norm();
   }
 
   void
@@ -270,33 +291,53 @@ namespace RingContact
     // point at the vertex would otherwise be paired back and forth between
     // the two segments, and the contact force with it.
     constexpr double extension_of_partner = 0.25;
+    Projection       best;
     if (preferred != numbers::invalid_unsigned_int)
+      best = project_onto_segment(x, preferred, extension_of_partner);
+    if (best.segment == numbers::invalid_unsigned_int || best.clamped)
       {
-        const Projection kept =
-          project_onto_segment(x, preferred, extension_of_partner);
-        if (!kept.clamped)
-          return kept;
+        // Otherwise: an orthogonal projection beats a clamped one (a
+        // corner), then the shorter distance wins.
+        best = Projection();
+        constexpr double tolerance     = 1e-8;
+        double           best_distance = std::numeric_limits<double>::max();
+        for (const auto &candidate : candidates)
+          {
+            const Projection p =
+              project_onto_segment(x, candidate.second, tolerance);
+            const double distance =
+              x.distance(current_point(p.segment, p.t).x);
+            const bool better =
+              best.segment == numbers::invalid_unsigned_int ||
+              (p.clamped != best.clamped ? !p.clamped :
+                                           distance < best_distance);
+            if (better)
+              {
+                best          = p;
+                best_distance = distance;
+              }
+          }
       }
 
-    // Otherwise: an orthogonal projection beats a clamped one (a corner),
-    // then the shorter distance wins.
-    constexpr double tolerance = 1e-8;
-    Projection       best;
-    double           best_distance = std::numeric_limits<double>::max();
-    for (const auto &candidate : candidates)
+    // At a vertex (a corner of the faceted surface, or a point sitting on
+    // one as slave nodes do on a node-matching interface) the segment normal
+    // is not defined: use the vertex normal, so that the result does not
+    // depend on which of the two segments the search met first.
+    constexpr double at_vertex = 1e-6;
+    if (best.clamped || best.t < at_vertex || best.t > 1 - at_vertex)
       {
-        const Projection p =
-          project_onto_segment(x, candidate.second, tolerance);
-        const double distance = x.distance(current_point(p.segment, p.t).x);
-        const bool   better =
-          best.segment == numbers::invalid_unsigned_int ||
-          (p.clamped != best.clamped ? !p.clamped :
-                                       distance < best_distance);
-        if (better)
-          {
-            best          = p;
-            best_distance = distance;
-          }
+        const unsigned int end = best.t < 0.5 ? 0 : 1;
+        const unsigned int v   = segment_list[best.segment].vertices[end];
+        for (const unsigned int other : segments_at_vertex.at(v))
+          if (other != best.segment)
+            {
+              best.at_vertex   = true;
+              best.t           = end;
+              best.neighbour   = other;
+              best.neighbour_t = segment_list[other].vertices[0] == v ? 0 : 1;
+              best.gap         = (x - current_point(best.segment, best.t).x) *
+                         normal(best);
+            }
       }
     return best;
   }

@@ -95,26 +95,22 @@ namespace RingContact
                                                                          1);
     dof_handler.distribute_dofs(fe_collection);
 
-    const double c =
-      parameters.contact.complementarity_constant > 0 ?
-        parameters.contact.complementarity_constant :
-        std::max(parameters.materials.youngs_modulus_outer,
-                 parameters.materials.youngs_modulus_inner);
-    contact = std::make_unique<ContactInterface>(dof_handler,
-                                                 parameters.contact,
-                                                 scheme,
-                                                 fe.mapping_degree,
-                                                 c);
-    if (parameters.contact.complementarity_constant == 0)
-      {
-        // Automatic: E / h of the slave surface.
-        const double h = contact->slave_surface().min_segment_length();
-        contact        = std::make_unique<ContactInterface>(dof_handler,
-                                                     parameters.contact,
-                                                     scheme,
-                                                     fe.mapping_degree,
-                                                     c / h);
-      }
+    // Automatic complementarity constant: E / h of the slave surface.
+    double c = parameters.contact.complementarity_constant;
+    if (c == 0)
+      c = std::max(parameters.materials.youngs_modulus_outer,
+                   parameters.materials.youngs_modulus_inner) /
+          ContactSurface(dof_handler,
+                         parameters.contact.slave_boundary_id,
+                         fe.mapping_degree)
+            .min_segment_length();
+    contact = std::make_unique<ContactInterface>(
+      dof_handler,
+      parameters.contact,
+      scheme,
+      fe.mapping_degree,
+      c,
+      parameters.materials.kinematics == Kinematics::small_strain);
     probe_dof =
       contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
 
@@ -464,7 +460,7 @@ namespace RingContact
       }
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto dof : contact->multiplier_dofs())
-      nodal_gap(dof) = contact->gap_at(dof);
+      nodal_gap(dof) = contact->gap_at(dof, solution);
     vtu_writer->write(dof_handler,
                       mapping_collection[0],
                       solution,

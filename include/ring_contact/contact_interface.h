@@ -12,6 +12,8 @@
 //   C_k = w_k lambda_k - max(0, w_k lambda_k - c g~_k) = 0,
 // with w_k = int Phi_k dS (reference); C_k = c g~_k on the active set,
 // w_k lambda_k off it. Every row is then a force per unit thickness.
+// With small-strain kinematics the contact is geometrically linear too:
+// pairing, normal and length element of the reference configuration.
 #ifndef ring_contact_contact_interface_h
 #define ring_contact_contact_interface_h
 
@@ -42,7 +44,8 @@ namespace RingContact
                      const ContactParameters  &parameters,
                      const IntegrationScheme  &scheme,
                      const unsigned int        mapping_degree,
-                     const double              complementarity_constant);
+                     const double              complementarity_constant,
+                     const bool                geometrically_linear);
 
     /// Pair every slave quadrature point with the current master surface,
     /// compute the weighted gaps and choose the active set from the current
@@ -89,7 +92,8 @@ namespace RingContact
 
     /// Gap at a multiplier node (its slave point projected on the master).
     double
-    gap_at(const types::global_dof_index multiplier_dof) const;
+    gap_at(const types::global_dof_index multiplier_dof,
+           const Vector<double>         &solution) const;
 
     /// sqrt(int (p_h - p_ref)^2) / sqrt(int p_ref^2) over the slave surface,
     /// with p_h the reported (Cauchy or nominal) pressure.
@@ -110,10 +114,20 @@ namespace RingContact
     }
 
   private:
+    /// Small strain: (u_s - u_m) . n0 at a slave point and its partner.
+    double
+    linear_gap_increment(const Vector<double> &solution,
+                         const unsigned int    slave_segment,
+                         const double          t,
+                         const Projection     &projection) const;
+
     ContactSurface      slave;
     ContactSurface      master;
     const Quadrature<1> quadrature;
     const double        complementarity_constant;
+    /// Small strain: contact geometry (pairing, normal, length) of the
+    /// reference configuration, gap linear in the displacement.
+    const bool geometrically_linear;
 
     /// Slave basis values at the quadrature points (the same on every
     /// segment): reference geometry, displacement, multiplier.
@@ -127,6 +141,7 @@ namespace RingContact
     std::vector<double> reference_weight; ///< w_k = int Phi_k dS
     std::vector<double> weighted_gap;     ///< g~_k
     std::vector<bool>   active;
+    double              segment_length; ///< smallest slave segment
 
     std::vector<ContactPoint> points;
     /// Master segments next to each master segment (sharing a vertex).

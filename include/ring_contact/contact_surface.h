@@ -20,6 +20,7 @@
 #include <ring_contact/parameters.h>
 
 #include <array>
+#include <map>
 #include <vector>
 
 namespace RingContact
@@ -90,6 +91,12 @@ namespace RingContact
     /// True if the closest point is an end of a segment and no orthogonal
     /// projection exists (outside a convex corner): t is then fixed.
     bool clamped = false;
+    /// True if the closest point is a vertex shared with a neighbouring
+    /// segment: the normal is then the vertex normal, the length-weighted
+    /// average of the normals of the two segments, and t (0 or 1) is fixed.
+    bool         at_vertex   = false;
+    unsigned int neighbour   = numbers::invalid_unsigned_int;
+    double       neighbour_t = 0; ///< the vertex's parameter on `neighbour`
   };
 
   class ContactSurface
@@ -149,6 +156,11 @@ namespace RingContact
     Tensor<1, 2>
     normal(const unsigned int segment, const CurvePoint &point) const;
 
+    /// Outward unit normal at a projection: the segment's, or the vertex
+    /// normal when the projection is at a vertex.
+    Tensor<1, 2>
+    normal(const Projection &projection) const;
+
     /// Closest-point projection of x onto the current surface. The search
     /// looks at the few segments nearest to x (R-tree); `preferred` (a
     /// segment index or invalid), the previous partner, is kept while the
@@ -173,6 +185,8 @@ namespace RingContact
     LagrangeBasis1D             displacement;
     LagrangeBasis1D             multiplier;
     std::vector<double>         multiplier_node_parameters;
+    /// The segments that share each vertex (by global vertex index).
+    std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
 
     using Box = std::pair<BoundingBox<2>, unsigned int>;
     RTree<Box> search_tree;
