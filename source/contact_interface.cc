@@ -245,7 +245,7 @@ namespace RingContact
     const double c       = complementarity_constant;
     const bool   current = !geometrically_linear;
 
-    std::vector<types::global_dof_index> local_dofs;
+    std::vector<types::global_dof_index> local_dofs, unique_dofs;
     FullMatrix<double>                   local_matrix;
     Vector<double>                       local_rhs;
     std::vector<double> Nm, dNm, ddNm, Nb, dNb, ddNb;
@@ -383,16 +383,29 @@ namespace RingContact
           if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
             residual[2 * ns + 2 * nm + 2 * nb + k] = c * Phi[k] * gap * ds;
 
-        local_matrix.reinit(n, n);
-        local_rhs.reinit(n);
+        // A vertex shared by the partner and its neighbour appears twice in
+        // the local unknowns: sum the two copies (rows and columns) into one
+        // before handing the element to the global system.
+        unique_dofs = local_dofs;
+        std::sort(unique_dofs.begin(), unique_dofs.end());
+        unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
+                          unique_dofs.end());
+        std::vector<unsigned int> to_unique(n);
+        for (unsigned int i = 0; i < n; ++i)
+          to_unique[i] = std::lower_bound(unique_dofs.begin(),
+                                          unique_dofs.end(),
+                                          local_dofs[i]) -
+                         unique_dofs.begin();
+        local_matrix.reinit(unique_dofs.size(), unique_dofs.size());
+        local_rhs.reinit(unique_dofs.size());
         for (unsigned int i = 0; i < n; ++i)
           {
-            local_rhs(i) = -residual[i].val();
+            local_rhs(to_unique[i]) -= residual[i].val();
             for (unsigned int j = 0; j < n; ++j)
-              local_matrix(i, j) = residual[i].dx(j);
+              local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
           }
         constraints.distribute_local_to_global(
-          local_matrix, local_rhs, local_dofs, matrix, rhs);
+          local_matrix, local_rhs, unique_dofs, matrix, rhs);
       }
 
     // Open nodes: w_k lambda_k = 0.

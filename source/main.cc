@@ -4,8 +4,6 @@
 // integration scheme it lists, writes results/<prm name>/history.csv and
 // the VTU/PVD files, prints the verdict table of the checks and exits with
 // a non-zero code if a check fails or a step cannot be solved.
-#include <deal.II/base/mpi.h>
-
 #include <ring_contact/parameters.h>
 #include <ring_contact/postprocessing.h>
 #include <ring_contact/ring_contact_problem.h>
@@ -18,7 +16,8 @@ int
 main(int argc, char **argv)
 {
   using namespace RingContact;
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // A serial program: MPI is not initialised (deal.II's serial classes do
+  // not need it, and starting it costs more than solving a modelisation).
 
   const std::string usage =
     "usage: ring_contact <file.prm>\n"

@@ -588,6 +588,11 @@ namespace RingContact
                         "true",
                         Patterns::Bool(),
                         "Write history.csv (one row per step and scheme).");
+      prm.declare_entry("Print steps",
+                        "true",
+                        Patterns::Bool(),
+                        "Print one line per step (load, Newton iterations, "
+                        "pressure at A, error).");
       prm.declare_entry("Print timing",
                         "true",
                         Patterns::Bool(),
@@ -610,6 +615,7 @@ namespace RingContact
       vtu_subdivisions = prm.get_integer("VTU subdivisions");
       write_history    = prm.get_bool("Write history");
       print_timing     = prm.get_bool("Print timing");
+      print_steps      = prm.get_bool("Print steps");
     }
     prm.leave_subsection();
   }

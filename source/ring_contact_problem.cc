@@ -256,6 +256,22 @@ namespace RingContact
     contact->assemble(solution, constraints, system_matrix, system_rhs);
   }
 
+  // Pair, choose the active set, and assemble the Newton system at the
+  // current solution; a new sparsity pattern when the pairs left the old.
+  unsigned int
+  RingContactProblem::assemble_newton_system()
+  {
+    unsigned int n_changed;
+    {
+      TimerOutput::Scope t(timer, "contact search");
+      n_changed = contact->update(solution);
+    }
+    if (!contact->sparsity_covers_pairing())
+      make_sparsity_pattern();
+    assemble_system();
+    return n_changed;
+  }
+
   void
   RingContactProblem::solve_linear_system(Vector<double> &newton_update)
   {
@@ -280,14 +296,7 @@ namespace RingContact
     double first_residual = 0;
     for (unsigned int it = 0;; ++it)
       {
-        unsigned int n_changed;
-        {
-          TimerOutput::Scope t(timer, "contact search");
-          n_changed = contact->update(solution);
-        }
-        if (!contact->sparsity_covers_pairing())
-          make_sparsity_pattern();
-        assemble_system();
+        const unsigned int n_changed = assemble_newton_system();
 
         double reaction = 0;
         for (types::global_dof_index i = 0; i < internal_force.size(); ++i)
@@ -425,7 +434,8 @@ namespace RingContact
     row.wall_time         = wall_time;
     history_rows.push_back(row);
 
-    log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
+    if (parameters.output.print_steps)
+      log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
         << std::setprecision(4) << row.time << "  p " << std::setw(10)
         << std::setprecision(6) << row.load_factor << "  s " << std::setw(5)
         << std::setprecision(3) << row.rotation << "  Newton " << iterations

@@ -194,6 +194,7 @@ namespace RingContact
     unsigned int vtu_subdivisions;
     bool         write_history;
     bool         print_timing;
+    bool         print_steps;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -60,11 +60,16 @@ namespace RingContact
       return dof_handler.n_dofs();
     }
 
-    /// Tangent and residual at the current state, for tests: rhs = -R.
+    /// @name Access for tests
+    /// @{
+    /// Make the mesh, the finite elements, the contact interface.
     void
-    assemble_system();
-
-    /// For tests: the current solution (displacement and multiplier).
+    setup();
+    /// Pair, choose the active set and assemble the tangent and the
+    /// right-hand side -R at the current solution; returns the number of
+    /// contact nodes whose status changed.
+    unsigned int
+    assemble_newton_system();
     Vector<double> &
     current_solution()
     {
@@ -80,11 +85,34 @@ namespace RingContact
     {
       return system_rhs;
     }
-    /// For tests: build everything up to the first assembly.
+    const AffineConstraints<double> &
+    newton_constraints() const
+    {
+      return constraints;
+    }
+    const DoFHandler<2> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const hp::MappingCollection<2> &
+    get_mapping() const
+    {
+      return mapping_collection;
+    }
+    const ContactInterface &
+    contact_interface() const
+    {
+      return *contact;
+    }
+    /// Impose the boundary displacements of a load state.
     void
-    setup();
+    apply_boundary_motion(const LoadState &load);
+    /// @}
 
   private:
+    void
+    assemble_system();
     void
     make_grid();
     void
@@ -93,8 +121,6 @@ namespace RingContact
     make_constraints();
     void
     make_sparsity_pattern();
-    void
-    apply_boundary_motion(const LoadState &load);
     void
     solve_linear_system(Vector<double> &newton_update);
     bool
