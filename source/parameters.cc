@@ -13,6 +13,14 @@ namespace RingContact
   namespace
   {
     // Throw a one-line error that names the entry, when `ok` is false.
+    std::string
+    to_text(const double value)
+    {
+      std::ostringstream out;
+      out << value;
+      return out.str();
+    }
+
     void
     require(const bool         ok,
             const std::string &subsection,
@@ -271,14 +279,14 @@ namespace RingContact
         require(E > 0,
                 "Materials",
                 std::string("Young's modulus ") + name + " ring",
-                "must be positive, got " + std::to_string(E));
+                "must be positive, got " + to_text(E));
       for (const auto &[nu, name] :
            {std::make_pair(poissons_ratio_outer, "outer"),
             std::make_pair(poissons_ratio_inner, "inner")})
         require(nu > -1 && nu < 0.5,
                 "Materials",
                 std::string("Poisson's ratio ") + name + " ring",
-                "must satisfy -1 < nu < 0.5, got " + std::to_string(nu));
+                "must satisfy -1 < nu < 0.5, got " + to_text(nu));
       kinematics = prm.get("Kinematics") == "finite strain" ?
                      Kinematics::finite_strain :
                      Kinematics::small_strain;

@@ -1,0 +1,95 @@
+// The contact quadrature rules on a slave segment (t in [0, 1]): the points
+// and weights of each scheme, and the polynomial degree each integrates
+// exactly.
+#include <ring_contact/contact_surface.h>
+
+#include "tests.h"
+
+#include <cmath>
+#include <iomanip>
+
+using namespace RingContact;
+using RingContactTests::check;
+
+namespace
+{
+  // Highest degree d such that t^0 ... t^d are integrated exactly.
+  unsigned int
+  exactness(const Quadrature<1> &q)
+  {
+    unsigned int d = 0;
+    for (;; ++d)
+      {
+        double sum = 0;
+        for (unsigned int i = 0; i < q.size(); ++i)
+          sum += q.weight(i) * std::pow(q.point(i)[0], d);
+        if (std::abs(sum - 1.0 / (d + 1)) > 1e-13)
+          return d - 1;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  auto &out = RingContactTests::deallog_file;
+  out << std::setprecision(8);
+
+  const auto show = [&](const std::string &text, const unsigned int degree) {
+    const IntegrationScheme scheme = IntegrationScheme::parse(text);
+    const Quadrature<1>     q      = contact_quadrature(scheme, degree);
+    out << std::left << std::setw(16) << scheme.name() << " on Q" << degree
+        << ": " << q.size() << " points, exact to degree " << exactness(q)
+        << "; points";
+    for (unsigned int i = 0; i < q.size(); ++i)
+      out << ' ' << q.point(i)[0];
+    out << "; weights";
+    for (unsigned int i = 0; i < q.size(); ++i)
+      out << ' ' << q.weight(i);
+    out << std::endl;
+    return q;
+  };
+
+  // Nodal: at the nodes of the slave segment, trapezoid on Q1 and Simpson
+  // on Q2 (the weights that integrate the element's own polynomials, not
+  // the equal weights that make the original's quadratic nodal scheme off).
+  const auto nodal1 = show("nodal", 1);
+  check(nodal1.size() == 2 && std::abs(nodal1.weight(0) - 0.5) < 1e-15,
+        "nodal on Q1 is the trapezoidal rule");
+  const auto nodal2 = show("nodal", 2);
+  check(nodal2.size() == 3 && std::abs(nodal2.weight(1) - 2.0 / 3) < 1e-15,
+        "nodal on Q2 is Simpson's rule");
+
+  for (unsigned int n = 1; n <= 10; ++n)
+    {
+      const auto q = show("Gauss " + std::to_string(n), 1);
+      check(q.size() == n && exactness(q) == 2 * n - 1,
+            "Gauss n is exact to degree 2n - 1");
+    }
+  for (unsigned int n = 1; n <= 4; ++n)
+    {
+      const auto q = show("Simpson " + std::to_string(n), 1);
+      check(q.size() == 2 * n + 1 && exactness(q) == 3,
+            "composite Simpson: 2n + 1 points, exact to degree 3");
+    }
+  for (const unsigned int n : {1u, 2u, 4u, 6u})
+    {
+      const auto q = show("Newton-Cotes " + std::to_string(n), 1);
+      check(q.size() == n + 1, "closed Newton-Cotes: n + 1 points");
+    }
+
+  // Names that are refused, with the reason.
+  for (const std::string bad : {"Gauss", "Gauss 0", "Gauss 21", "Lobatto 3",
+                                "Newton-Cotes 3", "Gauss 2 3"})
+    {
+      try
+        {
+          IntegrationScheme::parse(bad);
+          check(false, "'" + bad + "' must be refused");
+        }
+      catch (const std::exception &e)
+        {
+          out << "refused: " << e.what() << std::endl;
+        }
+    }
+}
