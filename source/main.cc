@@ -4,6 +4,8 @@
 // integration scheme it lists, writes results/<prm name>/history.csv and
 // the VTU/PVD files, prints the verdict table of the checks and exits with
 // a non-zero code if a check fails or a step cannot be solved.
+#include <deal.II/base/multithread_info.h>
+
 #include <ring_contact/parameters.h>
 #include <ring_contact/postprocessing.h>
 #include <ring_contact/ring_contact_problem.h>
@@ -17,7 +19,11 @@ main(int argc, char **argv)
 {
   using namespace RingContact;
   // A serial program: MPI is not initialised (deal.II's serial classes do
-  // not need it, and starting it costs more than solving a modelisation).
+  // not need it, and starting it costs more than solving a modelisation),
+  // and one thread: the assembly is serial, and on these small systems the
+  // threads that deal.II would start for sorting and output cost more than
+  // they save.
+  dealii::MultithreadInfo::set_thread_limit(1);
 
   const std::string usage =
     "usage: ring_contact <file.prm>\n"

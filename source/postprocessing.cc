@@ -263,6 +263,8 @@ namespace RingContact
     DataOutBase::VtkFlags flags;
     flags.write_higher_order_cells = subdivisions > 1;
     flags.time                     = time;
+    // Fast zlib: best compression costs more than the solve here.
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
     // The rings.
     Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
