@@ -285,46 +285,52 @@ namespace RingContact
     std::vector<Box> candidates;
     search_tree.query(bgi::nearest(x, 4), std::back_inserter(candidates));
 
-    // A point keeps its partner segment while its projection stays on it
-    // or on its extension by a quarter of its length (as the original's
-    // TOLE_PROJ_EXT): at a corner of the faceted master surface a slave
-    // point at the vertex would otherwise be paired back and forth between
-    // the two segments, and the contact force with it.
-    constexpr double extension_of_partner = 0.25;
-    Projection       best;
-    if (preferred != numbers::invalid_unsigned_int)
-      best = project_onto_segment(x, preferred, extension_of_partner);
-    if (best.segment == numbers::invalid_unsigned_int || best.clamped)
+    // Orthogonal projections that land on their segment are valid. A point
+    // may have two (inside a concave corner, or sitting on a vertex as the
+    // slave nodes of a node-matching interface do): it then keeps its
+    // previous partner, so that the pairing, and the contact force with it,
+    // does not flip between Newton iterations. Otherwise the closest valid
+    // projection wins; with none (outside a convex corner) the nearest
+    // segment end, i.e. a vertex.
+    constexpr double tolerance = 1e-8;
+    Projection       best, closest_end;
+    double           best_distance = std::numeric_limits<double>::max();
+    double           end_distance  = std::numeric_limits<double>::max();
+    for (const auto &candidate : candidates)
       {
-        // Otherwise: an orthogonal projection beats a clamped one (a
-        // corner), then the shorter distance wins.
-        best = Projection();
-        constexpr double tolerance     = 1e-8;
-        double           best_distance = std::numeric_limits<double>::max();
-        for (const auto &candidate : candidates)
+        const Projection p =
+          project_onto_segment(x, candidate.second, tolerance);
+        const double distance = x.distance(current_point(p.segment, p.t).x);
+        if (p.clamped)
           {
-            const Projection p =
-              project_onto_segment(x, candidate.second, tolerance);
-            const double distance =
-              x.distance(current_point(p.segment, p.t).x);
-            const bool better =
-              best.segment == numbers::invalid_unsigned_int ||
-              (p.clamped != best.clamped ? !p.clamped :
-                                           distance < best_distance);
-            if (better)
+            if (distance < end_distance)
               {
-                best          = p;
-                best_distance = distance;
+                closest_end  = p;
+                end_distance = distance;
               }
+            continue;
+          }
+        if (p.segment == preferred)
+          {
+            best          = p;
+            best_distance = -1; // kept whatever the others
+          }
+        else if (distance < best_distance)
+          {
+            best          = p;
+            best_distance = distance;
           }
       }
+    if (best.segment == numbers::invalid_unsigned_int)
+      best = closest_end;
 
     // At a vertex (a corner of the faceted surface, or a point sitting on
     // one as slave nodes do on a node-matching interface) the segment normal
     // is not defined: use the vertex normal, so that the result does not
     // depend on which of the two segments the search met first.
     constexpr double at_vertex = 1e-6;
-    if (best.clamped || best.t < at_vertex || best.t > 1 - at_vertex)
+    if (best.clamped || std::abs(best.t) < at_vertex ||
+        std::abs(1 - best.t) < at_vertex)
       {
         const unsigned int end = best.t < 0.5 ? 0 : 1;
         const unsigned int v   = segment_list[best.segment].vertices[end];
