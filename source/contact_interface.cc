@@ -16,7 +16,10 @@ namespace RingContact
                                      const double complementarity_constant,
                                      const bool   geometrically_linear)
     : slave(dof_handler, parameters.slave_boundary_id, mapping_degree)
-    , master(dof_handler, parameters.master_boundary_id, mapping_degree)
+    , master(dof_handler,
+             parameters.master_boundary_id,
+             mapping_degree,
+             parameters.smooth_master_normals)
     , quadrature(contact_quadrature(scheme,
                                     slave.displacement_basis().size() - 1))
     , complementarity_constant(complementarity_constant)
@@ -160,6 +163,12 @@ namespace RingContact
             pattern_pairs.count(
               {point.slave_segment, point.projection.neighbour}) == 0)
           return false;
+        if (master.smooths_normals())
+          for (const unsigned int b :
+               master.segments()[point.projection.segment].neighbours)
+            if (b != numbers::invalid_unsigned_int &&
+                pattern_pairs.count({point.slave_segment, b}) == 0)
+              return false;
       }
     return true;
   }
@@ -167,6 +176,9 @@ namespace RingContact
   void
   ContactInterface::add_couplings(DynamicSparsityPattern &dsp)
   {
+    // Per slave segment, the master segments its points are paired with and
+    // their neighbours (which enter through vertex and smoothed normals, and
+    // which a slip may reach next): one block couples all their unknowns.
     pattern_pairs.clear();
     for (const auto &point : points)
       {
@@ -175,18 +187,23 @@ namespace RingContact
              master_neighbours[point.projection.segment])
           pattern_pairs.insert({point.slave_segment, m});
       }
+    std::map<unsigned int, std::vector<types::global_dof_index>> block;
     for (const auto &[s, m] : pattern_pairs)
       {
-        const auto &slave_segment  = slave.segments()[s];
-        const auto &master_segment = master.segments()[m];
-        std::vector<types::global_dof_index> dofs;
-        for (const auto *list : {&slave_segment.dofs_x,
-                                 &slave_segment.dofs_y,
-                                 &master_segment.dofs_x,
-                                 &master_segment.dofs_y,
-                                 &slave_segment.multiplier_dofs})
+        auto &dofs = block[s];
+        if (dofs.empty())
+          for (const auto *list : {&slave.segments()[s].dofs_x,
+                                   &slave.segments()[s].dofs_y,
+                                   &slave.segments()[s].multiplier_dofs})
+            dofs.insert(dofs.end(), list->begin(), list->end());
+        for (const auto *list :
+             {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})
           dofs.insert(dofs.end(), list->begin(), list->end());
+      }
+    for (auto &[s, dofs] : block)
+      {
         std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         for (const auto row : dofs)
           dsp.add_entries(row, dofs.begin(), dofs.end(), true);
       }
@@ -251,41 +268,95 @@ namespace RingContact
     std::vector<double> Nm, dNm, ddNm, Nb, dNb, ddNb;
     const std::vector<double> none;
 
+    const bool smooth = master.smooths_normals();
     for (const auto &point : points)
       {
         const Projection &projection = point.projection;
         const auto &s_seg = slave.segments()[point.slave_segment];
         const auto &m_seg = master.segments()[projection.segment];
-        // At a vertex the normal also depends on the neighbouring segment.
-        const SurfaceSegment *b_seg =
-          projection.at_vertex ? &master.segments()[projection.neighbour] :
-                                 nullptr;
-        const unsigned int ns = s_seg.dofs_x.size();
-        const unsigned int nm = m_seg.dofs_x.size();
-        const unsigned int nb = b_seg ? b_seg->dofs_x.size() : 0;
-        const unsigned int nl = s_seg.multiplier_dofs.size();
 
-        // Local unknowns: slave u_x, u_y, master u_x, u_y, neighbour u_x,
-        // u_y, multipliers.
-        local_dofs.clear();
-        std::vector<const std::vector<types::global_dof_index> *> lists = {
-          &s_seg.dofs_x, &s_seg.dofs_y, &m_seg.dofs_x, &m_seg.dofs_y};
-        if (b_seg)
+        // Master segments whose displacement enters: the partner, and the
+        // neighbours that define the normal (at a vertex: the other segment
+        // there; smoothed normals: both neighbours of the partner).
+        std::vector<unsigned int> master_segments = {projection.segment};
+        if (smooth)
           {
-            lists.push_back(&b_seg->dofs_x);
-            lists.push_back(&b_seg->dofs_y);
+            for (const unsigned int b : m_seg.neighbours)
+              if (b != numbers::invalid_unsigned_int)
+                master_segments.push_back(b);
           }
-        lists.push_back(&s_seg.multiplier_dofs);
-        for (const auto *list : lists)
-          local_dofs.insert(local_dofs.end(), list->begin(), list->end());
+        else if (projection.at_vertex)
+          master_segments.push_back(projection.neighbour);
+
+        // Local unknowns: slave u_x, u_y, then u_x, u_y of each master
+        // segment, then the multipliers.
+        const unsigned int ns = s_seg.dofs_x.size();
+        const unsigned int nl = s_seg.multiplier_dofs.size();
+        local_dofs.clear();
+        local_dofs.insert(local_dofs.end(),
+                          s_seg.dofs_x.begin(),
+                          s_seg.dofs_x.end());
+        local_dofs.insert(local_dofs.end(),
+                          s_seg.dofs_y.begin(),
+                          s_seg.dofs_y.end());
+        std::map<unsigned int, unsigned int> offset_of; // segment -> u_x
+        for (const unsigned int m : master_segments)
+          {
+            const auto &seg = master.segments()[m];
+            offset_of[m]    = local_dofs.size();
+            local_dofs.insert(local_dofs.end(),
+                              seg.dofs_x.begin(),
+                              seg.dofs_x.end());
+            local_dofs.insert(local_dofs.end(),
+                              seg.dofs_y.begin(),
+                              seg.dofs_y.end());
+          }
+        const unsigned int lambda_offset = local_dofs.size();
+        local_dofs.insert(local_dofs.end(),
+                          s_seg.multiplier_dofs.begin(),
+                          s_seg.multiplier_dofs.end());
         const unsigned int n = local_dofs.size();
         std::vector<AD>    u(n);
         for (unsigned int i = 0; i < n; ++i)
           u[i] = AD(n, i, solution(local_dofs[i]));
         const AD *us_x = &u[0], *us_y = &u[ns];
-        const AD *um_x = &u[2 * ns], *um_y = &u[2 * ns + nm];
-        const AD *ub_x = &u[2 * ns + 2 * nm], *ub_y = &u[2 * ns + 2 * nm + nb];
-        const AD *lambda_k = &u[2 * ns + 2 * nm + 2 * nb];
+        const AD *lambda_k = &u[lambda_offset];
+
+        // A point of a master segment in AD numbers.
+        const auto master_point = [&](const unsigned int m, const double t) {
+          const unsigned int nm = master.segments()[m].dofs_x.size();
+          master.displacement_basis().evaluate(t, Nb, dNb, ddNb);
+          return ad_curve_point(master.reference_point(m, t),
+                                Nb,
+                                dNb,
+                                ddNb,
+                                &u[offset_of[m]],
+                                &u[offset_of[m] + nm],
+                                current);
+        };
+        // Outward normal scaled by |x'| of a master segment at t.
+        const auto scaled_normal = [&](const unsigned int m, const double t,
+                                       AD *normal_out) {
+          const ADCurvePoint p = master_point(m, t);
+          const double       o = master.segments()[m].orientation;
+          normal_out[0]        = o * p.dx[1];
+          normal_out[1]        = -o * p.dx[0];
+        };
+        // Unit vertex normal at the end `end` of the partner segment.
+        const auto vertex_normal = [&](const unsigned int end, AD *n_out) {
+          scaled_normal(projection.segment, end, n_out);
+          const unsigned int b = m_seg.neighbours[end];
+          if (b != numbers::invalid_unsigned_int)
+            {
+              AD other[2];
+              scaled_normal(b, m_seg.neighbour_t[end], other);
+              n_out[0] += other[0];
+              n_out[1] += other[1];
+            }
+          const AD length = std::sqrt(n_out[0] * n_out[0] + n_out[1] * n_out[1]);
+          n_out[0] /= length;
+          n_out[1] /= length;
+        };
 
         // Slave point, its length element and the pressure there.
         const unsigned int q = point.quadrature_point;
@@ -310,55 +381,70 @@ namespace RingContact
           lambda += Phi[k] * lambda_k[k];
 
         // Master point at the converged parameter xi0, and its first-order
-        // correction d xi = -r / r' with r = (x_s - x_m) . x_m': its value
-        // vanishes, its derivative is that of the projection (implicit
-        // function theorem). At a vertex or a clamped corner xi is fixed.
+        // correction d xi = -f / f' where f(xi) = 0 defines the projection:
+        // its value vanishes, its derivative is that of the projection
+        // (implicit function theorem). Closest point: f = (x_s - x_m) . x_m';
+        // along the smoothed normal m(xi) = (1 - xi) n0 + xi n1:
+        // f = (x_s - x_m) x m. At a vertex or a clamped corner xi is fixed.
         const double xi0 = projection.t;
         master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
-        const ADCurvePoint xm =
-          ad_curve_point(master.reference_point(projection.segment, xi0),
-                         Nm,
-                         dNm,
-                         ddNm,
-                         um_x,
-                         um_y,
-                         current);
-        AD dxi = 0;
+        const ADCurvePoint xm = master_point(projection.segment, xi0);
+        AD                 n0[2], n1[2];
+        if (smooth)
+          {
+            vertex_normal(0, n0);
+            vertex_normal(1, n1);
+          }
+        const AD d[2] = {xs.x[0] - xm.x[0], xs.x[1] - xm.x[1]};
+        AD       dxi  = 0;
         if (!projection.clamped && !projection.at_vertex && current)
           {
-            const AD r = (xs.x[0] - xm.x[0]) * xm.dx[0] +
-                         (xs.x[1] - xm.x[1]) * xm.dx[1];
-            const AD slope = -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
-                             (xs.x[0] - xm.x[0]) * xm.ddx[0] +
-                             (xs.x[1] - xm.x[1]) * xm.ddx[1];
-            dxi = -r / slope;
+            if (smooth)
+              {
+                const AD m[2]  = {(1 - xi0) * n0[0] + xi0 * n1[0],
+                                  (1 - xi0) * n0[1] + xi0 * n1[1]};
+                const AD f     = d[0] * m[1] - d[1] * m[0];
+                const AD slope = -(xm.dx[0] * m[1] - xm.dx[1] * m[0]) +
+                                 d[0] * (n1[1] - n0[1]) -
+                                 d[1] * (n1[0] - n0[0]);
+                dxi = -f / slope;
+              }
+            else
+              {
+                const AD r = d[0] * xm.dx[0] + d[1] * xm.dx[1];
+                const AD slope =
+                  -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
+                  d[0] * xm.ddx[0] + d[1] * xm.ddx[1];
+                dxi = -r / slope;
+              }
           }
         AD x_m[2], normal[2];
-        for (unsigned int d = 0; d < 2; ++d)
-          x_m[d] = xm.x[d] + xm.dx[d] * dxi;
-        // Outward normal, scaled by |x_m'|: orientation * (x'_y, -x'_x); at
-        // a vertex the sum over the two segments (length-weighted average).
+        for (unsigned int dim = 0; dim < 2; ++dim)
+          x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
+        if (smooth)
+          {
+            const AD xi = xi0 + dxi;
+            normal[0]   = (1 - xi) * n0[0] + xi * n1[0];
+            normal[1]   = (1 - xi) * n0[1] + xi * n1[1];
+          }
+        else
+          {
+            // Outward normal scaled by |x_m'|; at a vertex the sum over the
+            // two segments (length-weighted average).
+            const double o = m_seg.orientation;
+            normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
+            normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
+            if (projection.at_vertex)
+              {
+                AD other[2];
+                scaled_normal(projection.neighbour,
+                              projection.neighbour_t,
+                              other);
+                normal[0] += other[0];
+                normal[1] += other[1];
+              }
+          }
         {
-          const AD t_m[2] = {xm.dx[0] + xm.ddx[0] * dxi,
-                             xm.dx[1] + xm.ddx[1] * dxi};
-          normal[0] = m_seg.orientation * t_m[1];
-          normal[1] = -m_seg.orientation * t_m[0];
-          if (b_seg)
-            {
-              master.displacement_basis().evaluate(
-                projection.neighbour_t, Nb, dNb, ddNb);
-              const ADCurvePoint xb = ad_curve_point(
-                master.reference_point(projection.neighbour,
-                                       projection.neighbour_t),
-                Nb,
-                dNb,
-                ddNb,
-                ub_x,
-                ub_y,
-                current);
-              normal[0] += b_seg->orientation * xb.dx[1];
-              normal[1] -= b_seg->orientation * xb.dx[0];
-            }
           const AD length =
             std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
           normal[0] /= length;
@@ -371,17 +457,19 @@ namespace RingContact
         std::vector<AD> residual(n, AD(0.0));
         const auto     &N = displacement_values[q];
         for (unsigned int i = 0; i < ns; ++i)
-          for (unsigned int d = 0; d < 2; ++d)
-            residual[d * ns + i] = -lambda * N[i] * normal[d] * ds;
+          for (unsigned int dim = 0; dim < 2; ++dim)
+            residual[dim * ns + i] = -lambda * N[i] * normal[dim] * ds;
+        const unsigned int nm = m_seg.dofs_x.size();
+        const unsigned int mo = offset_of[projection.segment];
         for (unsigned int i = 0; i < nm; ++i)
           {
             const AD Nm_xi = Nm[i] + dNm[i] * dxi;
-            for (unsigned int d = 0; d < 2; ++d)
-              residual[2 * ns + d * nm + i] = lambda * Nm_xi * normal[d] * ds;
+            for (unsigned int dim = 0; dim < 2; ++dim)
+              residual[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
           }
         for (unsigned int k = 0; k < nl; ++k)
           if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
-            residual[2 * ns + 2 * nm + 2 * nb + k] = c * Phi[k] * gap * ds;
+            residual[lambda_offset + k] = c * Phi[k] * gap * ds;
 
         // A vertex shared by the partner and its neighbour appears twice in
         // the local unknowns: sum the two copies (rows and columns) into one

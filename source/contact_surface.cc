@@ -73,7 +73,9 @@ namespace RingContact
 
   ContactSurface::ContactSurface(const DoFHandler<2>     &dof_handler,
                                  const types::boundary_id boundary_id,
-                                 const unsigned int       mapping_degree)
+                                 const unsigned int       mapping_degree,
+                                 const bool               smooth_normals)
+    : smooth_normals(smooth_normals)
   {
     const std::vector<double> geometry_nodes =
       gauss_lobatto_nodes(mapping_degree);
@@ -157,6 +159,18 @@ namespace RingContact
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (const unsigned int v : segment_list[s].vertices)
         segments_at_vertex[v].push_back(s);
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const unsigned int v = segment_list[s].vertices[end];
+          for (const unsigned int other : segments_at_vertex[v])
+            if (other != s)
+              {
+                segment_list[s].neighbours[end] = other;
+                segment_list[s].neighbour_t[end] =
+                  segment_list[other].vertices[0] == v ? 0.0 : 1.0;
+              }
+        }
   }
 
   CurvePoint
@@ -202,21 +216,85 @@ namespace RingContact
   }
 
   Tensor<1, 2>
+  ContactSurface::scaled_normal(const unsigned int segment,
+                                const double       t) const
+  {
+    const Tensor<1, 2> dx = current_point(segment, t).dx;
+    return segment_list[segment].orientation * Tensor<1, 2>({dx[1], -dx[0]});
+  }
+
+  Tensor<1, 2>
+  ContactSurface::vertex_normal(const unsigned int segment,
+                                const unsigned int end) const
+  {
+    Tensor<1, 2>       n         = scaled_normal(segment, end);
+    const unsigned int neighbour = segment_list[segment].neighbours[end];
+    if (neighbour != numbers::invalid_unsigned_int)
+      n += scaled_normal(neighbour, segment_list[segment].neighbour_t[end]);
+    return n / n.norm();
+  }
+
+  Tensor<1, 2>
+  ContactSurface::smoothed_normal_direction(const unsigned int segment,
+                                            const double       t) const
+  {
+    return (1 - t) * vertex_normal(segment, 0) + t * vertex_normal(segment, 1);
+  }
+
+  Tensor<1, 2>
   ContactSurface::normal(const Projection &projection) const
   {
+    if (smooth_normals)
+      {
+        const Tensor<1, 2> m =
+          smoothed_normal_direction(projection.segment, projection.t);
+        return m / m.norm();
+      }
     if (!projection.at_vertex)
       return normal(projection.segment,
                     current_point(projection.segment, projection.t));
     // Length-weighted average of the two segments' normals at the vertex.
-    const auto scaled_normal = [this](const unsigned int segment,
-                                      const double       t) {
-      const Tensor<1, 2> dx = current_point(segment, t).dx;
-      return segment_list[segment].orientation * Tensor<1, 2>({dx[1], -dx[0]});
-    };
     const Tensor<1, 2> n = scaled_normal(projection.segment, projection.t) +
                            scaled_normal(projection.neighbour,
                                          projection.neighbour_t);
     return n / n.norm();
+  }
+
+  Projection
+  ContactSurface::project_along_smoothed_normal(const Point<2>    &x,
+                                                const unsigned int segment) const
+  {
+    // Newton on f(t) = (x - x(t)) x m(t) with m(t) = (1 - t) n0 + t n1,
+    // from the orthogonal projection.
+    const Tensor<1, 2> n0 = vertex_normal(segment, 0);
+    const Tensor<1, 2> n1 = vertex_normal(segment, 1);
+    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    double t = project_onto_segment(x, segment, 1.0).t;
+    for (unsigned int it = 0; it < 30; ++it)
+      {
+        const CurvePoint   p = current_point(segment, t);
+        const Tensor<1, 2> m = (1 - t) * n0 + t * n1;
+        const double       f = cross(x - p.x, m);
+        const double slope   = -cross(p.dx, m) + cross(x - p.x, n1 - n0);
+        const double dt      = -f / slope;
+        t += dt;
+        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
+          break;
+        t = std::max(-1.0, std::min(2.0, t));
+      }
+    Projection projection;
+    projection.segment = segment;
+    constexpr double tolerance = 1e-8;
+    if (!std::isfinite(t) || t < -tolerance || t > 1 + tolerance)
+      {
+        projection.clamped = true;
+        t = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
+      }
+    projection.t   = t;
+    projection.gap = (x - current_point(segment, t).x) * normal(projection);
+    return projection;
   }
 
   void
@@ -299,7 +377,9 @@ namespace RingContact
     for (const auto &candidate : candidates)
       {
         const Projection p =
-          project_onto_segment(x, candidate.second, tolerance);
+          smooth_normals ?
+            project_along_smoothed_normal(x, candidate.second) :
+            project_onto_segment(x, candidate.second, tolerance);
         const double distance = x.distance(current_point(p.segment, p.t).x);
         if (p.clamped)
           {
@@ -329,6 +409,15 @@ namespace RingContact
     // is not defined: use the vertex normal, so that the result does not
     // depend on which of the two segments the search met first.
     constexpr double at_vertex = 1e-6;
+    if (smooth_normals)
+      {
+        // The smoothed normal is continuous: no special case at vertices.
+        // With no projection at all (far from the surface) the closest end
+        // is used with its vertex normal, and t fixed.
+        if (best.clamped)
+          best.gap = (x - current_point(best.segment, best.t).x) * normal(best);
+        return best;
+      }
     if (best.clamped || std::abs(best.t) < at_vertex ||
         std::abs(1 - best.t) < at_vertex)
       {

@@ -98,14 +98,17 @@ namespace
   check_system(const std::string &scheme,
                const unsigned int mapping_degree,
                const Kinematics   kinematics,
-               const bool         vertex = false)
+               const bool         vertex = false,
+               const bool         smooth = false)
   {
     Parameters parameters;
     {
       std::ofstream prm("tangent.prm");
       prm << "subsection Contact\n set Integration schemes = " << scheme
           << "\nend\nsubsection Finite elements\n set Mapping degree = "
-          << mapping_degree << "\nend\nsubsection Materials\n"
+          << mapping_degree << "\nend\nsubsection Contact\n"
+          << " set Smooth master normals = " << (smooth ? "true" : "false")
+          << "\nend\nsubsection Materials\n"
           << " set Kinematics = "
           << (kinematics == Kinematics::finite_strain ? "finite strain" :
                                                         "small strain")
@@ -220,6 +223,7 @@ namespace
       }
     problem.assemble_newton_system();
     const std::string name = scheme + (vertex ? ", at master vertices" : "") +
+                             (smooth ? ", smoothed normals" : "") +
                              ", mapping degree " +
                              std::to_string(mapping_degree) + ", " +
                              (kinematics == Kinematics::finite_strain ?
@@ -252,4 +256,7 @@ main()
   check_system("Gauss 3", 1, Kinematics::finite_strain);
   check_system("Gauss 3", 2, Kinematics::finite_strain);
   check_system("Gauss 2", 1, Kinematics::small_strain);
+  check_system("nodal", 1, Kinematics::finite_strain, false, true);
+  check_system("Gauss 3", 1, Kinematics::finite_strain, false, true);
+  check_system("Gauss 3", 2, Kinematics::finite_strain, false, true);
 }

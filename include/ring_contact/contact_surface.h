@@ -80,6 +80,11 @@ namespace RingContact
     double orientation;
     /// Current nodal displacements (set by ContactSurface::update()).
     std::vector<Tensor<1, 2>> nodal_displacements;
+    /// The segments that share the vertex at t = 0 and t = 1 (invalid at
+    /// the end of an open surface), and the vertex's parameter on them.
+    std::array<unsigned int, 2> neighbours = {numbers::invalid_unsigned_int,
+                                              numbers::invalid_unsigned_int};
+    std::array<double, 2>       neighbour_t = {0, 0};
   };
 
   /// Result of the closest-point projection of a point onto a surface.
@@ -104,9 +109,10 @@ namespace RingContact
   public:
     /// Collect the faces with `boundary_id`; `mapping_degree` fixes the
     /// reference geometry of each face (straight for 1).
-    ContactSurface(const DoFHandler<2> &dof_handler,
+    ContactSurface(const DoFHandler<2>     &dof_handler,
                    const types::boundary_id boundary_id,
-                   const unsigned int       mapping_degree);
+                   const unsigned int       mapping_degree,
+                   const bool               smooth_normals = false);
 
     const std::vector<SurfaceSegment> &
     segments() const
@@ -156,10 +162,32 @@ namespace RingContact
     Tensor<1, 2>
     normal(const unsigned int segment, const CurvePoint &point) const;
 
-    /// Outward unit normal at a projection: the segment's, or the vertex
-    /// normal when the projection is at a vertex.
+    /// Outward unit normal at a projection: the segment's, the vertex
+    /// normal when the projection is at a vertex, the smoothed normal when
+    /// normals are smoothed.
     Tensor<1, 2>
     normal(const Projection &projection) const;
+
+    /// Outward normal scaled by |dx/dt|: orientation (dx_y, -dx_x).
+    Tensor<1, 2>
+    scaled_normal(const unsigned int segment, const double t) const;
+
+    /// Unit vertex normal at the end `end` (0 or 1) of a segment: the
+    /// length-weighted average of the normals of the segments there.
+    Tensor<1, 2>
+    vertex_normal(const unsigned int segment, const unsigned int end) const;
+
+    /// Smoothed normal field (the original's LISSAGE): the vertex normals
+    /// interpolated linearly along the segment, not normalised.
+    Tensor<1, 2>
+    smoothed_normal_direction(const unsigned int segment, const double t) const;
+
+    /// True if this surface uses the smoothed normal field.
+    bool
+    smooths_normals() const
+    {
+      return smooth_normals;
+    }
 
     /// Closest-point projection of x onto the current surface. The search
     /// looks at the few segments nearest to x (R-tree); `preferred` (a
@@ -175,12 +203,18 @@ namespace RingContact
     min_segment_length() const;
 
   private:
+    /// Along the smoothed normal field: (x - x(t)) x n(t) = 0.
+    Projection
+    project_along_smoothed_normal(const Point<2>    &x,
+                                  const unsigned int segment) const;
+
     Projection
     project_onto_segment(const Point<2>    &x,
                          const unsigned int segment,
                          const double       extension) const;
 
     std::vector<SurfaceSegment> segment_list;
+    const bool                  smooth_normals;
     LagrangeBasis1D             geometry;
     LagrangeBasis1D             displacement;
     LagrangeBasis1D             multiplier;
