@@ -1,6 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/differentiation/ad/sacado_number_types.h>
-#include <deal.II/lac/full_matrix.h>
 
 #include <ring_contact/contact_interface.h>
 
@@ -24,21 +22,8 @@ namespace RingContact
                                     slave.displacement_basis().size() - 1))
     , complementarity_constant(complementarity_constant)
     , geometrically_linear(geometrically_linear)
+    , segment_based(scheme.type == ContactIntegration::segment_based)
   {
-    // Basis values at the quadrature points of a slave segment.
-    for (const auto &q : quadrature.get_points())
-      {
-        std::vector<double> N, dN, ddN;
-        slave.geometry_basis().evaluate(q[0], N, dN, ddN);
-        geometry_values.push_back(N);
-        geometry_gradients.push_back(dN);
-        slave.displacement_basis().evaluate(q[0], N, dN, ddN);
-        displacement_values.push_back(N);
-        displacement_gradients.push_back(dN);
-        slave.multiplier_basis().evaluate(q[0], N);
-        multiplier_values.push_back(N);
-      }
-
     // The multiplier nodes, and w_k = int Phi_k dS with a rule that is exact
     // for the multiplier times the reference length element.
     const QGauss<1> exact(slave.geometry_basis().size() +
@@ -100,35 +85,18 @@ namespace RingContact
         master.update(solution);
       }
 
-    // Pair every slave quadrature point; keep the previous partner on ties.
-    std::vector<ContactPoint> new_points;
-    new_points.reserve(slave.segments().size() * quadrature.size());
-    for (unsigned int s = 0; s < slave.segments().size(); ++s)
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          const unsigned int index = new_points.size();
-          const unsigned int preferred =
-            index < points.size() ? points[index].projection.segment :
-                                    numbers::invalid_unsigned_int;
-          const CurvePoint x = slave.current_point(s, quadrature.point(q)[0]);
-          ContactPoint     point;
-          point.slave_segment    = s;
-          point.quadrature_point = q;
-          point.projection       = master.project(x.x, preferred);
-          point.current_length   = x.dx.norm() * quadrature.weight(q);
-          if (geometrically_linear)
-            point.projection.gap += linear_gap_increment(
-              solution, s, quadrature.point(q)[0], point.projection);
-          new_points.push_back(point);
-        }
-    points = std::move(new_points);
+    if (segment_based)
+      pair_pieces(solution);
+    else
+      pair_points(solution);
 
     // Weighted gaps and the active set from the current multipliers.
     std::fill(weighted_gap.begin(), weighted_gap.end(), 0.0);
     for (const auto &point : points)
       {
         const auto &segment = slave.segments()[point.slave_segment];
-        const auto &Phi     = multiplier_values[point.quadrature_point];
+        std::vector<double> Phi;
+        slave.multiplier_basis().evaluate(point.eta, Phi);
         for (unsigned int k = 0; k < Phi.size(); ++k)
           weighted_gap[multiplier_index[segment.multiplier_dofs[k]]] +=
             Phi[k] * point.projection.gap * point.current_length;
@@ -151,6 +119,138 @@ namespace RingContact
     return n_changed;
   }
 
+  void
+  ContactInterface::pair_points(const Vector<double> &solution)
+  {
+    // Every slave quadrature point with its closest master point; a point
+    // keeps its previous partner while its projection stays on it.
+    std::vector<ContactPoint> new_points;
+    new_points.reserve(slave.segments().size() * quadrature.size());
+    for (unsigned int s = 0; s < slave.segments().size(); ++s)
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const unsigned int index = new_points.size();
+          const unsigned int preferred =
+            index < points.size() ? points[index].projection.segment :
+                                    numbers::invalid_unsigned_int;
+          ContactPoint point;
+          point.slave_segment = s;
+          point.eta           = quadrature.point(q)[0];
+          point.weight        = quadrature.weight(q);
+          point.xi            = point.eta;
+          point.w             = point.weight;
+          const CurvePoint x  = slave.current_point(s, point.eta);
+          point.projection    = master.project(x.x, preferred);
+          point.current_length = x.dx.norm() * point.weight;
+          if (geometrically_linear)
+            point.projection.gap +=
+              linear_gap_increment(solution, s, point.eta, point.projection);
+          new_points.push_back(point);
+        }
+    points = std::move(new_points);
+  }
+
+  void
+  ContactInterface::pair_pieces(const Vector<double> &solution)
+  {
+    // Segment-based (mortar) integration: cut each slave segment where the
+    // line through a master vertex along the vertex normal crosses it. On
+    // each piece the partner is one master segment, the integrand is
+    // smooth, and Gauss points integrate it to the accuracy of the rule.
+    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    std::vector<ContactPoint> new_points;
+    for (unsigned int s = 0; s < slave.segments().size(); ++s)
+      {
+        // Master vertices near the segment.
+        std::vector<Point<2>> corners;
+        for (const double t : {0.0, 0.5, 1.0})
+          corners.push_back(slave.current_point(s, t).x);
+        BoundingBox<2> box(corners);
+        const double   length = corners.front().distance(corners.back());
+        box.extend(0.5 * length);
+
+        // Crossings eta of h(eta) = (x_s(eta) - x_v) x n_v = 0.
+        std::vector<std::pair<double, unsigned int>> cuts; // eta, vertex
+        std::set<unsigned int>                        seen;
+        for (const unsigned int m : master.segments_near(box))
+          for (unsigned int end = 0; end < 2; ++end)
+            {
+              const unsigned int v = master.segments()[m].vertices[end];
+              if (!seen.insert(v).second)
+                continue;
+              const Point<2>     xv = master.current_point(m, end).x;
+              const Tensor<1, 2> nv = master.vertex_normal(m, end);
+              double             eta = 0.5;
+              for (unsigned int it = 0; it < 20; ++it)
+                {
+                  const CurvePoint p     = slave.current_point(s, eta);
+                  const double     h     = cross(p.x - xv, nv);
+                  const double     slope = cross(p.dx, nv);
+                  if (slope == 0)
+                    break;
+                  const double d = -h / slope;
+                  eta += d;
+                  if (std::abs(d) < 1e-15)
+                    break;
+                }
+              if (std::isfinite(eta) && eta > 1e-10 && eta < 1 - 1e-10 &&
+                  slave.current_point(s, eta).x.distance(xv) < length)
+                cuts.emplace_back(eta, v);
+            }
+        std::sort(cuts.begin(), cuts.end());
+
+        // The pieces, the partner of each (from its midpoint), and the
+        // Gauss points on it.
+        std::vector<std::pair<double, unsigned int>> ends = {
+          {0.0, numbers::invalid_unsigned_int}};
+        ends.insert(ends.end(), cuts.begin(), cuts.end());
+        ends.emplace_back(1.0, numbers::invalid_unsigned_int);
+        for (unsigned int i = 0; i + 1 < ends.size(); ++i)
+          {
+            const double eta_a = ends[i].first, eta_b = ends[i + 1].first;
+            if (eta_b - eta_a < 1e-12)
+              continue;
+            const unsigned int index = new_points.size();
+            const unsigned int preferred =
+              index < points.size() ? points[index].projection.segment :
+                                      numbers::invalid_unsigned_int;
+            const Projection middle = master.project(
+              slave.current_point(s, 0.5 * (eta_a + eta_b)).x, preferred);
+            const unsigned int partner = middle.segment;
+            const auto        &m_seg   = master.segments()[partner];
+            std::array<int, 2> piece_end;
+            for (unsigned int side = 0; side < 2; ++side)
+              {
+                const unsigned int v = ends[i + side].second;
+                piece_end[side] = v == m_seg.vertices[0] ? 0 :
+                                  v == m_seg.vertices[1] ? 1 :
+                                                           -1;
+              }
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                ContactPoint point;
+                point.slave_segment = s;
+                point.piece         = {{eta_a, eta_b}};
+                point.piece_end     = piece_end;
+                point.xi            = quadrature.point(q)[0];
+                point.w             = quadrature.weight(q);
+                point.eta    = eta_a + (eta_b - eta_a) * point.xi;
+                point.weight = (eta_b - eta_a) * point.w;
+                const CurvePoint x = slave.current_point(s, point.eta);
+                point.projection   = master.project_onto(x.x, partner);
+                point.current_length = x.dx.norm() * point.weight;
+                if (geometrically_linear)
+                  point.projection.gap += linear_gap_increment(
+                    solution, s, point.eta, point.projection);
+                new_points.push_back(point);
+              }
+          }
+      }
+    points = std::move(new_points);
+  }
+
   bool
   ContactInterface::sparsity_covers_pairing() const
   {
@@ -163,7 +263,7 @@ namespace RingContact
             pattern_pairs.count(
               {point.slave_segment, point.projection.neighbour}) == 0)
           return false;
-        if (master.smooths_normals())
+        if (master.smooths_normals() || segment_based)
           for (const unsigned int b :
                master.segments()[point.projection.segment].neighbours)
             if (b != numbers::invalid_unsigned_int &&
@@ -207,303 +307,6 @@ namespace RingContact
         for (const auto row : dofs)
           dsp.add_entries(row, dofs.begin(), dofs.end(), true);
       }
-  }
-
-  namespace
-  {
-    using AD = Sacado::Fad::DFad<double>;
-
-    // A point of a segment in the current configuration with AD
-    // coordinates: reference geometry (double) plus interpolated
-    // displacement (AD); `with_displacement` = false keeps the reference
-    // tangent (small strain).
-    struct ADCurvePoint
-    {
-      AD x[2], dx[2], ddx[2];
-    };
-
-    ADCurvePoint
-    ad_curve_point(const CurvePoint                &reference,
-                   const std::vector<double>       &N,
-                   const std::vector<double>       &dN,
-                   const std::vector<double>       &ddN,
-                   const AD                        *u_x,
-                   const AD                        *u_y,
-                   const bool                       with_displacement)
-    {
-      ADCurvePoint p;
-      for (unsigned int d = 0; d < 2; ++d)
-        {
-          p.x[d]   = reference.x[d];
-          p.dx[d]  = reference.dx[d];
-          p.ddx[d] = reference.ddx[d];
-        }
-      for (unsigned int i = 0; i < N.size(); ++i)
-        {
-          p.x[0] += N[i] * u_x[i];
-          p.x[1] += N[i] * u_y[i];
-          if (!with_displacement)
-            continue;
-          p.dx[0] += dN[i] * u_x[i];
-          p.dx[1] += dN[i] * u_y[i];
-          p.ddx[0] += ddN[i] * u_x[i];
-          p.ddx[1] += ddN[i] * u_y[i];
-        }
-      return p;
-    }
-  } // namespace
-
-  void
-  ContactInterface::assemble(const Vector<double>            &solution,
-                             const AffineConstraints<double> &constraints,
-                             SparseMatrix<double>            &matrix,
-                             Vector<double>                  &rhs) const
-  {
-    const double c       = complementarity_constant;
-    const bool   current = !geometrically_linear;
-
-    std::vector<types::global_dof_index> local_dofs, unique_dofs;
-    FullMatrix<double>                   local_matrix;
-    Vector<double>                       local_rhs;
-    std::vector<double> Nm, dNm, ddNm, Nb, dNb, ddNb;
-    const std::vector<double> none;
-
-    const bool smooth = master.smooths_normals();
-    for (const auto &point : points)
-      {
-        const Projection &projection = point.projection;
-        const auto &s_seg = slave.segments()[point.slave_segment];
-        const auto &m_seg = master.segments()[projection.segment];
-
-        // Master segments whose displacement enters: the partner, and the
-        // neighbours that define the normal (at a vertex: the other segment
-        // there; smoothed normals: both neighbours of the partner).
-        std::vector<unsigned int> master_segments = {projection.segment};
-        if (smooth)
-          {
-            for (const unsigned int b : m_seg.neighbours)
-              if (b != numbers::invalid_unsigned_int)
-                master_segments.push_back(b);
-          }
-        else if (projection.at_vertex)
-          master_segments.push_back(projection.neighbour);
-
-        // Local unknowns: slave u_x, u_y, then u_x, u_y of each master
-        // segment, then the multipliers.
-        const unsigned int ns = s_seg.dofs_x.size();
-        const unsigned int nl = s_seg.multiplier_dofs.size();
-        local_dofs.clear();
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.dofs_x.begin(),
-                          s_seg.dofs_x.end());
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.dofs_y.begin(),
-                          s_seg.dofs_y.end());
-        std::map<unsigned int, unsigned int> offset_of; // segment -> u_x
-        for (const unsigned int m : master_segments)
-          {
-            const auto &seg = master.segments()[m];
-            offset_of[m]    = local_dofs.size();
-            local_dofs.insert(local_dofs.end(),
-                              seg.dofs_x.begin(),
-                              seg.dofs_x.end());
-            local_dofs.insert(local_dofs.end(),
-                              seg.dofs_y.begin(),
-                              seg.dofs_y.end());
-          }
-        const unsigned int lambda_offset = local_dofs.size();
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.multiplier_dofs.begin(),
-                          s_seg.multiplier_dofs.end());
-        const unsigned int n = local_dofs.size();
-        std::vector<AD>    u(n);
-        for (unsigned int i = 0; i < n; ++i)
-          u[i] = AD(n, i, solution(local_dofs[i]));
-        const AD *us_x = &u[0], *us_y = &u[ns];
-        const AD *lambda_k = &u[lambda_offset];
-
-        // A point of a master segment in AD numbers.
-        const auto master_point = [&](const unsigned int m, const double t) {
-          const unsigned int nm = master.segments()[m].dofs_x.size();
-          master.displacement_basis().evaluate(t, Nb, dNb, ddNb);
-          return ad_curve_point(master.reference_point(m, t),
-                                Nb,
-                                dNb,
-                                ddNb,
-                                &u[offset_of[m]],
-                                &u[offset_of[m] + nm],
-                                current);
-        };
-        // Outward normal scaled by |x'| of a master segment at t.
-        const auto scaled_normal = [&](const unsigned int m, const double t,
-                                       AD *normal_out) {
-          const ADCurvePoint p = master_point(m, t);
-          const double       o = master.segments()[m].orientation;
-          normal_out[0]        = o * p.dx[1];
-          normal_out[1]        = -o * p.dx[0];
-        };
-        // Unit vertex normal at the end `end` of the partner segment.
-        const auto vertex_normal = [&](const unsigned int end, AD *n_out) {
-          scaled_normal(projection.segment, end, n_out);
-          const unsigned int b = m_seg.neighbours[end];
-          if (b != numbers::invalid_unsigned_int)
-            {
-              AD other[2];
-              scaled_normal(b, m_seg.neighbour_t[end], other);
-              n_out[0] += other[0];
-              n_out[1] += other[1];
-            }
-          const AD length = std::sqrt(n_out[0] * n_out[0] + n_out[1] * n_out[1]);
-          n_out[0] /= length;
-          n_out[1] /= length;
-        };
-
-        // Slave point, its length element and the pressure there.
-        const unsigned int q = point.quadrature_point;
-        CurvePoint         Xs;
-        for (unsigned int j = 0; j < s_seg.reference_nodes.size(); ++j)
-          {
-            Xs.x += geometry_values[q][j] * s_seg.reference_nodes[j];
-            Xs.dx += geometry_gradients[q][j] * s_seg.reference_nodes[j];
-          }
-        const ADCurvePoint xs = ad_curve_point(Xs,
-                                               displacement_values[q],
-                                               displacement_gradients[q],
-                                               displacement_gradients[q],
-                                               us_x,
-                                               us_y,
-                                               current);
-        const AD ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
-                      quadrature.weight(q);
-        const auto &Phi    = multiplier_values[q];
-        AD          lambda = 0;
-        for (unsigned int k = 0; k < nl; ++k)
-          lambda += Phi[k] * lambda_k[k];
-
-        // Master point at the converged parameter xi0, and its first-order
-        // correction d xi = -f / f' where f(xi) = 0 defines the projection:
-        // its value vanishes, its derivative is that of the projection
-        // (implicit function theorem). Closest point: f = (x_s - x_m) . x_m';
-        // along the smoothed normal m(xi) = (1 - xi) n0 + xi n1:
-        // f = (x_s - x_m) x m. At a vertex or a clamped corner xi is fixed.
-        const double xi0 = projection.t;
-        master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
-        const ADCurvePoint xm = master_point(projection.segment, xi0);
-        AD                 n0[2], n1[2];
-        if (smooth)
-          {
-            vertex_normal(0, n0);
-            vertex_normal(1, n1);
-          }
-        const AD d[2] = {xs.x[0] - xm.x[0], xs.x[1] - xm.x[1]};
-        AD       dxi  = 0;
-        if (!projection.clamped && !projection.at_vertex && current)
-          {
-            if (smooth)
-              {
-                const AD m[2]  = {(1 - xi0) * n0[0] + xi0 * n1[0],
-                                  (1 - xi0) * n0[1] + xi0 * n1[1]};
-                const AD f     = d[0] * m[1] - d[1] * m[0];
-                const AD slope = -(xm.dx[0] * m[1] - xm.dx[1] * m[0]) +
-                                 d[0] * (n1[1] - n0[1]) -
-                                 d[1] * (n1[0] - n0[0]);
-                dxi = -f / slope;
-              }
-            else
-              {
-                const AD r = d[0] * xm.dx[0] + d[1] * xm.dx[1];
-                const AD slope =
-                  -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
-                  d[0] * xm.ddx[0] + d[1] * xm.ddx[1];
-                dxi = -r / slope;
-              }
-          }
-        AD x_m[2], normal[2];
-        for (unsigned int dim = 0; dim < 2; ++dim)
-          x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
-        if (smooth)
-          {
-            const AD xi = xi0 + dxi;
-            normal[0]   = (1 - xi) * n0[0] + xi * n1[0];
-            normal[1]   = (1 - xi) * n0[1] + xi * n1[1];
-          }
-        else
-          {
-            // Outward normal scaled by |x_m'|; at a vertex the sum over the
-            // two segments (length-weighted average).
-            const double o = m_seg.orientation;
-            normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
-            normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
-            if (projection.at_vertex)
-              {
-                AD other[2];
-                scaled_normal(projection.neighbour,
-                              projection.neighbour_t,
-                              other);
-                normal[0] += other[0];
-                normal[1] += other[1];
-              }
-          }
-        {
-          const AD length =
-            std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
-          normal[0] /= length;
-          normal[1] /= length;
-        }
-        const AD gap =
-          (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
-
-        // Residual: contact virtual work and weighted gap rows.
-        std::vector<AD> residual(n, AD(0.0));
-        const auto     &N = displacement_values[q];
-        for (unsigned int i = 0; i < ns; ++i)
-          for (unsigned int dim = 0; dim < 2; ++dim)
-            residual[dim * ns + i] = -lambda * N[i] * normal[dim] * ds;
-        const unsigned int nm = m_seg.dofs_x.size();
-        const unsigned int mo = offset_of[projection.segment];
-        for (unsigned int i = 0; i < nm; ++i)
-          {
-            const AD Nm_xi = Nm[i] + dNm[i] * dxi;
-            for (unsigned int dim = 0; dim < 2; ++dim)
-              residual[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
-          }
-        for (unsigned int k = 0; k < nl; ++k)
-          if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
-            residual[lambda_offset + k] = c * Phi[k] * gap * ds;
-
-        // A vertex shared by the partner and its neighbour appears twice in
-        // the local unknowns: sum the two copies (rows and columns) into one
-        // before handing the element to the global system.
-        unique_dofs = local_dofs;
-        std::sort(unique_dofs.begin(), unique_dofs.end());
-        unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
-                          unique_dofs.end());
-        std::vector<unsigned int> to_unique(n);
-        for (unsigned int i = 0; i < n; ++i)
-          to_unique[i] = std::lower_bound(unique_dofs.begin(),
-                                          unique_dofs.end(),
-                                          local_dofs[i]) -
-                         unique_dofs.begin();
-        local_matrix.reinit(unique_dofs.size(), unique_dofs.size());
-        local_rhs.reinit(unique_dofs.size());
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            local_rhs(to_unique[i]) -= residual[i].val();
-            for (unsigned int j = 0; j < n; ++j)
-              local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
-          }
-        constraints.distribute_local_to_global(
-          local_matrix, local_rhs, unique_dofs, matrix, rhs);
-      }
-
-    // Open nodes: w_k lambda_k = 0.
-    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
-      if (!active[k])
-        {
-          const auto dof = multiplier_dof_list[k];
-          matrix.add(dof, dof, reference_weight[k]);
-          rhs(dof) -= reference_weight[k] * solution(dof);
-        }
   }
 
   double

@@ -95,7 +95,7 @@ namespace RingContact
             SurfaceSegment segment;
             segment.cell     = cell;
             segment.face_no  = f;
-            segment.vertices = {face->vertex_index(0), face->vertex_index(1)};
+            segment.vertices = {{face->vertex_index(0), face->vertex_index(1)}};
 
             // Sort the face dofs by component, and record where each sits
             // along the face (its support point in face coordinates).
@@ -262,7 +262,8 @@ namespace RingContact
 
   Projection
   ContactSurface::project_along_smoothed_normal(const Point<2>    &x,
-                                                const unsigned int segment) const
+                                                const unsigned int segment,
+                                                const double extension) const
   {
     // Newton on f(t) = (x - x(t)) x m(t) with m(t) = (1 - t) n0 + t n1,
     // from the orthogonal projection.
@@ -286,8 +287,7 @@ namespace RingContact
       }
     Projection projection;
     projection.segment = segment;
-    constexpr double tolerance = 1e-8;
-    if (!std::isfinite(t) || t < -tolerance || t > 1 + tolerance)
+    if (!std::isfinite(t) || t < -extension || t > 1 + extension)
       {
         projection.clamped = true;
         t = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
@@ -378,7 +378,7 @@ namespace RingContact
       {
         const Projection p =
           smooth_normals ?
-            project_along_smoothed_normal(x, candidate.second) :
+            project_along_smoothed_normal(x, candidate.second, tolerance) :
             project_onto_segment(x, candidate.second, tolerance);
         const double distance = x.distance(current_point(p.segment, p.t).x);
         if (p.clamped)
@@ -437,6 +437,30 @@ namespace RingContact
     return best;
   }
 
+  Projection
+  ContactSurface::project_onto(const Point<2> &x, const unsigned int segment) const
+  {
+    // No clamping: an extension of 100 % of the segment is accepted.
+    Projection p = smooth_normals ?
+                     project_along_smoothed_normal(x, segment, 1.0) :
+                     project_onto_segment(x, segment, 1.0);
+    p.gap = (x - current_point(segment, p.t).x) * normal(p);
+    return p;
+  }
+
+  std::vector<unsigned int>
+  ContactSurface::segments_near(const BoundingBox<2> &box) const
+  {
+    namespace bgi = boost::geometry::index;
+    std::vector<Box> found;
+    search_tree.query(bgi::intersects(box), std::back_inserter(found));
+    std::vector<unsigned int> indices;
+    for (const auto &b : found)
+      indices.push_back(b.second);
+    std::sort(indices.begin(), indices.end());
+    return indices;
+  }
+
   double
   ContactSurface::min_segment_length() const
   {
@@ -460,6 +484,7 @@ namespace RingContact
           // quadratic segments.
           return QGaussLobatto<1>(slave_degree + 1);
         case ContactIntegration::gauss:
+        case ContactIntegration::segment_based: // the rule on each piece
           return QGauss<1>(scheme.n_points);
         case ContactIntegration::simpson:
           return QIterated<1>(QSimpson<1>(), scheme.n_points);
@@ -477,6 +502,6 @@ namespace RingContact
             }
       }
     AssertThrow(false, ExcMessage("unknown contact integration scheme"));
-    return {};
+    return Quadrature<1>();
   }
 } // namespace RingContact

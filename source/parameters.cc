@@ -50,6 +50,8 @@ namespace RingContact
           return "Simpson " + std::to_string(n_points);
         case ContactIntegration::newton_cotes:
           return "Newton-Cotes " + std::to_string(n_points);
+        case ContactIntegration::segment_based:
+          return "segment-based " + std::to_string(n_points);
       }
     return "";
   }
@@ -67,6 +69,8 @@ namespace RingContact
           return "simpson" + std::to_string(n_points);
         case ContactIntegration::newton_cotes:
           return "newtoncotes" + std::to_string(n_points);
+        case ContactIntegration::segment_based:
+          return "segments" + std::to_string(n_points);
       }
     return "";
   }
@@ -113,10 +117,19 @@ namespace RingContact
                                    "': Newton-Cotes order must be 1, 2, 4 "
                                    "or 6");
       }
+    else if (lower == "segment-based")
+      {
+        scheme.type = ContactIntegration::segment_based;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': segment-based needs 1 to 20 Gauss "
+                                   "points per piece");
+      }
     else
       throw std::runtime_error(
         "unknown contact integration scheme '" + text +
-        "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n)");
+        "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n, "
+        "segment-based n)");
     scheme.n_points = static_cast<unsigned int>(n);
     return scheme;
   }
@@ -378,7 +391,11 @@ namespace RingContact
                         "nodal: at the slave nodes; Gauss n: n Gauss points "
                         "per slave segment (1-20); Simpson n: composite "
                         "Simpson with n sub-intervals; Newton-Cotes n: closed "
-                        "Newton-Cotes of order 1, 2, 4 or 6.");
+                        "Newton-Cotes of order 1, 2, 4 or 6; segment-based "
+                        "n: each slave segment cut where the lines through "
+                        "the master vertices along their normals cross it, "
+                        "n Gauss points on each piece (mortar "
+                        "integration).");
       prm.declare_entry("Smooth master normals",
                         "false",
                         Patterns::Bool(),

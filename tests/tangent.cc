@@ -259,4 +259,7 @@ main()
   check_system("nodal", 1, Kinematics::finite_strain, false, true);
   check_system("Gauss 3", 1, Kinematics::finite_strain, false, true);
   check_system("Gauss 3", 2, Kinematics::finite_strain, false, true);
+  check_system("segment-based 2", 1, Kinematics::finite_strain);
+  check_system("segment-based 3", 2, Kinematics::finite_strain);
+  check_system("segment-based 2", 1, Kinematics::finite_strain, false, true);
 }

@@ -23,6 +23,7 @@
 
 #include <ring_contact/contact_surface.h>
 
+#include <array>
 #include <map>
 #include <set>
 
@@ -32,9 +33,20 @@ namespace RingContact
   struct ContactPoint
   {
     unsigned int slave_segment;
-    unsigned int quadrature_point;
+    double       eta;    ///< parameter of the point on the slave segment
+    double       weight; ///< quadrature weight in eta
     Projection   projection;
-    double       current_length; ///< ds = |dx_s/dt| w
+    double       current_length; ///< ds = |dx_s/deta| weight
+    /// Segment-based integration: the point is eta = eta_a + (eta_b -
+    /// eta_a) xi on a piece [eta_a, eta_b] of the slave segment, with the
+    /// weight (eta_b - eta_a) w. An end of the piece is either fixed (a
+    /// slave vertex: -1) or the crossing of the line through a vertex of the
+    /// partner along its normal (0 or 1: which end of the partner), and then
+    /// moves with the displacement. Fixed rules: the piece is [0, 1].
+    std::array<double, 2> piece     = {{0, 1}};
+    std::array<int, 2>    piece_end = {{-1, -1}};
+    double                xi        = 0;
+    double                w         = 0;
   };
 
   class ContactInterface
@@ -129,12 +141,15 @@ namespace RingContact
     /// reference configuration, gap linear in the displacement.
     const bool geometrically_linear;
 
-    /// Slave basis values at the quadrature points (the same on every
-    /// segment): reference geometry, displacement, multiplier.
-    std::vector<std::vector<double>> geometry_values, geometry_gradients;
-    std::vector<std::vector<double>> displacement_values,
-      displacement_gradients;
-    std::vector<std::vector<double>> multiplier_values;
+    /// Fixed rules: every slave quadrature point paired with its closest
+    /// master point. Segment-based: each slave segment cut into pieces with
+    /// one partner each.
+    void
+    pair_points(const Vector<double> &solution);
+    void
+    pair_pieces(const Vector<double> &solution);
+
+    const bool segment_based;
 
     std::vector<types::global_dof_index>          multiplier_dof_list;
     std::map<types::global_dof_index, unsigned int> multiplier_index;

@@ -82,9 +82,9 @@ namespace RingContact
     std::vector<Tensor<1, 2>> nodal_displacements;
     /// The segments that share the vertex at t = 0 and t = 1 (invalid at
     /// the end of an open surface), and the vertex's parameter on them.
-    std::array<unsigned int, 2> neighbours = {numbers::invalid_unsigned_int,
-                                              numbers::invalid_unsigned_int};
-    std::array<double, 2>       neighbour_t = {0, 0};
+    std::array<unsigned int, 2> neighbours = {{numbers::invalid_unsigned_int,
+                                              numbers::invalid_unsigned_int}};
+    std::array<double, 2>       neighbour_t = {{0, 0}};
   };
 
   /// Result of the closest-point projection of a point onto a surface.
@@ -198,6 +198,16 @@ namespace RingContact
     project(const Point<2>    &x,
             const unsigned int preferred = numbers::invalid_unsigned_int) const;
 
+    /// Projection onto a given segment, whatever the others: orthogonal
+    /// (or along the smoothed normal field), not clamped to [0, 1]. Used
+    /// where the partner is known (segment-based integration).
+    Projection
+    project_onto(const Point<2> &x, const unsigned int segment) const;
+
+    /// Indices of the segments whose current bounding box meets `box`.
+    std::vector<unsigned int>
+    segments_near(const BoundingBox<2> &box) const;
+
     /// Smallest reference length of a segment.
     double
     min_segment_length() const;
@@ -206,7 +216,8 @@ namespace RingContact
     /// Along the smoothed normal field: (x - x(t)) x n(t) = 0.
     Projection
     project_along_smoothed_normal(const Point<2>    &x,
-                                  const unsigned int segment) const;
+                                  const unsigned int segment,
+                                  const double       extension) const;
 
     Projection
     project_onto_segment(const Point<2>    &x,

@@ -42,7 +42,9 @@ namespace RingContact
     nodal,       ///< at the slave nodes (Gauss-Lobatto, the original's default)
     gauss,       ///< n Gauss points per slave segment
     simpson,     ///< composite Simpson rule of order n (n sub-intervals)
-    newton_cotes ///< closed Newton-Cotes rule with n+1 points (n = 1,2,4,6)
+    newton_cotes, ///< closed Newton-Cotes rule with n+1 points (n = 1,2,4,6)
+    segment_based ///< slave segments cut where the master vertices project,
+                  ///< n Gauss points on each piece (mortar integration)
   };
 
   /// One contact integration scheme as named in the `.prm` file.
@@ -51,7 +53,7 @@ namespace RingContact
     ContactIntegration type;
     unsigned int       n_points; ///< n (meaning depends on the type)
 
-    /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4".
+    /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4", "segment-based 3".
     std::string
     name() const;
     /// "nodal", "gauss3", ...: safe in file names.
