@@ -84,6 +84,55 @@ namespace RingContact
     }
 
     void
+    make_blocks(Triangulation<2> &triangulation, const MeshParameters &mesh)
+    {
+      // Lower block [0, 1] x [-0.5, 0] (master body, material 100), upper
+      // block [0, 1] x [0, 0.5] (slave body, 101), two layers of cells each,
+      // different numbers of cells along the interface: non-matching.
+      std::vector<Point<2>>    vertices;
+      std::vector<CellData<2>> cells;
+      const auto add_block = [&](const double       y0,
+                                 const unsigned int nx,
+                                 const unsigned int material_id) {
+        const unsigned int offset = vertices.size(), ny = 2;
+        for (unsigned int j = 0; j <= ny; ++j)
+          for (unsigned int i = 0; i <= nx; ++i)
+            vertices.emplace_back(1.0 * i / nx, y0 + 0.5 * j / ny);
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            {
+              CellData<2> cell;
+              const auto  v = [&](const unsigned int a, const unsigned int b) {
+                return offset + b * (nx + 1) + a;
+              };
+              cell.vertices    = {v(i, j), v(i + 1, j), v(i, j + 1),
+                                  v(i + 1, j + 1)};
+              cell.material_id = material_id;
+              cells.push_back(cell);
+            }
+      };
+      add_block(-0.5, mesh.patch_elements_lower, Ids::outer_ring);
+      add_block(0.0, mesh.patch_elements_upper, Ids::inner_ring);
+      triangulation.create_triangulation(vertices, cells, SubCellData());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const double y     = face->center()[1];
+              const bool   lower = cell->material_id() == Ids::outer_ring;
+              if (std::abs(y + 0.5) < 1e-12)
+                face->set_boundary_id(Ids::outer_boundary);
+              else if (std::abs(y - 0.5) < 1e-12)
+                face->set_boundary_id(Ids::inner_boundary);
+              else if (std::abs(y) < 1e-12)
+                face->set_boundary_id(lower ? Ids::outer_ring_contact :
+                                              Ids::inner_ring_contact);
+              else
+                face->set_boundary_id(0); // free sides
+            }
+    }
+
+    void
     read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
     {
       std::ifstream in(filename);
@@ -107,6 +156,12 @@ namespace RingContact
     void
     create_mesh(Triangulation<2> &triangulation, const Parameters &parameters)
     {
+      if (parameters.mesh.source == MeshSource::patch_test)
+        {
+          make_blocks(triangulation, parameters.mesh);
+          triangulation.refine_global(parameters.mesh.global_refinements);
+          return;
+        }
       if (parameters.mesh.source == MeshSource::generated)
         make_rings(triangulation, parameters.mesh);
       else

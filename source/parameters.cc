@@ -145,9 +145,12 @@ namespace RingContact
     {
       prm.declare_entry("Mesh source",
                         "generated",
-                        Patterns::Selection("generated|gmsh file"),
+                        Patterns::Selection("generated|gmsh file|patch test"),
                         "generated: the two rings are built in code; gmsh "
-                        "file: read from 'Mesh file'.");
+                        "file: read from 'Mesh file'; patch test: instead of "
+                        "the rings, two 1 x 0.5 m blocks with non-matching "
+                        "meshes pressed together (the upper one is the slave "
+                        "body, 101, the lower one the master, 100).");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -173,6 +176,16 @@ namespace RingContact
                         Patterns::Integer(0, 8),
                         "Uniform refinements of the mesh; new vertices are "
                         "placed on the circles.");
+      prm.declare_entry("Patch test elements lower block",
+                        "5",
+                        Patterns::Integer(1),
+                        "Patch test: elements along the interface, lower "
+                        "(master) block.");
+      prm.declare_entry("Patch test elements upper block",
+                        "7",
+                        Patterns::Integer(1),
+                        "Patch test: elements along the interface, upper "
+                        "(slave) block.");
       prm.declare_entry("Outer radius",
                         "1.0",
                         Patterns::Double(),
@@ -195,8 +208,12 @@ namespace RingContact
   {
     prm.enter_subsection("Mesh");
     {
-      source = prm.get("Mesh source") == "generated" ? MeshSource::generated :
-                                                       MeshSource::gmsh_file;
+      const std::string source_name = prm.get("Mesh source");
+      source = source_name == "generated"  ? MeshSource::generated :
+               source_name == "patch test" ? MeshSource::patch_test :
+                                             MeshSource::gmsh_file;
+      patch_elements_lower = prm.get_integer("Patch test elements lower block");
+      patch_elements_upper = prm.get_integer("Patch test elements upper block");
       mesh_file = prm.get("Mesh file");
       if (source == MeshSource::gmsh_file)
         {
@@ -656,12 +673,14 @@ namespace RingContact
     {
       prm.declare_entry("Quantity",
                         "pressure at A",
-                        Patterns::Selection(
-                          "pressure at A|L2 error of pressure"),
+                        Patterns::Selection("pressure at A|L2 error of "
+                                            "pressure|pressure spread"),
                         "The checked value (the original's TEST_RESU): the "
                         "contact pressure at node A against the analytic "
-                        "pressure, or the relative L2 error of the pressure "
-                        "over the slave surface (reference 0).");
+                        "pressure, the relative L2 error of the pressure "
+                        "over the slave surface (reference 0), or the spread "
+                        "(largest - smallest nodal pressure) / analytic "
+                        "pressure (reference 0).");
       prm.declare_entry("Steps",
                         "all",
                         Patterns::Anything(),
@@ -680,9 +699,10 @@ namespace RingContact
   {
     prm.enter_subsection("Checks");
     {
-      quantity = prm.get("Quantity") == "pressure at A" ?
-                   CheckedQuantity::pressure_at_A :
-                   CheckedQuantity::l2_pressure_error;
+      const std::string name = prm.get("Quantity");
+      quantity = name == "pressure at A"   ? CheckedQuantity::pressure_at_A :
+                 name == "pressure spread" ? CheckedQuantity::pressure_spread :
+                                             CheckedQuantity::l2_pressure_error;
       tolerance               = prm.get_double("Tolerance");
       const std::string steps_text = Utilities::trim(prm.get("Steps"));
       every_step                   = (steps_text == "all");

@@ -28,6 +28,13 @@ namespace RingContact
           v.reference = row.analytic;
           v.error     = row.relative_error;
         }
+      else if (checks.quantity == CheckedQuantity::pressure_spread)
+        {
+          v.quantity  = "pressure spread";
+          v.value     = (row.pressure_max - row.pressure_min) / row.analytic;
+          v.reference = 0;
+          v.error     = v.value;
+        }
       else
         {
           v.quantity  = "L2 error of pressure";
@@ -77,14 +84,14 @@ namespace RingContact
   {
     bool all_pass = true;
     out << "\nChecks\n"
-        << std::left << std::setw(14) << "scheme" << std::setw(22)
+        << std::left << std::setw(18) << "scheme" << std::setw(22)
         << "quantity" << std::right << std::setw(5) << "step"
         << std::setw(15) << "value" << std::setw(15) << "reference"
         << std::setw(12) << "error" << std::setw(11) << "tolerance"
         << "  verdict\n";
     for (const auto &v : verdicts)
       {
-        out << std::left << std::setw(14) << v.scheme << std::setw(22)
+        out << std::left << std::setw(18) << v.scheme << std::setw(22)
             << v.quantity << std::right << std::setw(5) << v.step
             << std::setprecision(7) << std::setw(15) << v.value
             << std::setw(15) << v.reference << std::fixed

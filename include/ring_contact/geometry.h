@@ -20,6 +20,12 @@ namespace RingContact
     void
     make_rings(Triangulation<2> &triangulation, const MeshParameters &mesh);
 
+    /// The contact patch test: two blocks (lower: master, 100; upper:
+    /// slave, 101) with non-matching meshes along the interface y = 0;
+    /// boundary ids 200 (bottom), 500 (top), 300/400 (interface), 0 (sides).
+    void
+    make_blocks(Triangulation<2> &triangulation, const MeshParameters &mesh);
+
     /// Read a gmsh mesh (format 1 or 2.2) with the original's physical tags.
     void
     read_gmsh(Triangulation<2> &triangulation, const std::string &filename);

@@ -19,7 +19,8 @@ namespace RingContact
   enum class MeshSource
   {
     generated, ///< built in code for any number of elements around
-    gmsh_file  ///< read from a gmsh file (format 1 or 2.2)
+    gmsh_file, ///< read from a gmsh file (format 1 or 2.2)
+    patch_test ///< the contact patch test: two blocks pressed together
   };
 
   /// Kinematics of the bulk.
@@ -81,8 +82,9 @@ namespace RingContact
   /// The checked quantity of a verdict.
   enum class CheckedQuantity
   {
-    pressure_at_A,    ///< contact pressure at the probe node A
-    l2_pressure_error ///< relative L2 error of the pressure on the slave
+    pressure_at_A,     ///< contact pressure at the probe node A
+    l2_pressure_error, ///< relative L2 error of the pressure on the slave
+    pressure_spread    ///< (max - min) / reference over the slave nodes
   };
 
   struct MeshParameters
@@ -96,6 +98,10 @@ namespace RingContact
     double       outer_radius;     ///< R1
     double       interface_radius; ///< R2
     double       inner_radius;     ///< R3
+    /// Patch test: elements along the interface of the lower (master) and
+    /// the upper (slave) block.
+    unsigned int patch_elements_lower;
+    unsigned int patch_elements_upper;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -149,6 +149,8 @@ namespace RingContact
     types::material_id               slave_ring;
     const AnalyticSolution            analytic;
     const LoadProgram                 load_program;
+    /// The contact patch test (two blocks) instead of the rings.
+    const bool                        patch_test;
     std::unique_ptr<ContactInterface> contact;
 
     /// Homogeneous constraints of a Newton update: fixed displacements on
