@@ -43,6 +43,22 @@ namespace RingContact
   }
 
   void
+  LagrangeBasis1D::evaluate(const double t,
+                            double      *values,
+                            double      *first,
+                            double      *second) const
+  {
+    double v[3];
+    for (unsigned int i = 0; i < size(); ++i)
+      {
+        polynomials[i].value(t, 2, v);
+        values[i] = v[0];
+        first[i]  = v[1];
+        second[i] = v[2];
+      }
+  }
+
+  void
   LagrangeBasis1D::evaluate(const double t, std::vector<double> &values) const
   {
     values.resize(size());
@@ -79,6 +95,8 @@ namespace RingContact
   {
     const std::vector<double> geometry_nodes =
       gauss_lobatto_nodes(mapping_degree);
+    AssertThrow(geometry_nodes.size() <= LagrangeBasis1D::max_size,
+                ExcMessage("mapping degree above 4 is not supported"));
     geometry = LagrangeBasis1D(geometry_nodes);
 
     std::vector<double> displacement_nodes, multiplier_nodes;
@@ -153,6 +171,8 @@ namespace RingContact
             if (rotated * (mid.x - cell->center()) < 0)
               segment_list.back().orientation = -1.0;
           }
+    AssertThrow(displacement_nodes.size() <= LagrangeBasis1D::max_size,
+                ExcMessage("displacement degree above 4 is not supported"));
     displacement = LagrangeBasis1D(displacement_nodes);
     multiplier   = LagrangeBasis1D(multiplier_nodes);
     multiplier_node_parameters = multiplier_nodes;
@@ -177,7 +197,8 @@ namespace RingContact
   ContactSurface::reference_point(const unsigned int segment,
                                   const double       t) const
   {
-    std::vector<double> N, dN, ddN;
+    double N[LagrangeBasis1D::max_size], dN[LagrangeBasis1D::max_size],
+      ddN[LagrangeBasis1D::max_size];
     geometry.evaluate(t, N, dN, ddN);
     const auto &nodes = segment_list[segment].reference_nodes;
     CurvePoint  p;
@@ -194,8 +215,9 @@ namespace RingContact
   ContactSurface::current_point(const unsigned int segment,
                                 const double       t) const
   {
-    CurvePoint          p = reference_point(segment, t);
-    std::vector<double> N, dN, ddN;
+    CurvePoint p = reference_point(segment, t);
+    double     N[LagrangeBasis1D::max_size], dN[LagrangeBasis1D::max_size],
+      ddN[LagrangeBasis1D::max_size];
     displacement.evaluate(t, N, dN, ddN);
     const auto &u = segment_list[segment].nodal_displacements;
     for (unsigned int i = 0; i < u.size(); ++i)
@@ -227,11 +249,7 @@ namespace RingContact
   ContactSurface::vertex_normal(const unsigned int segment,
                                 const unsigned int end) const
   {
-    Tensor<1, 2>       n         = scaled_normal(segment, end);
-    const unsigned int neighbour = segment_list[segment].neighbours[end];
-    if (neighbour != numbers::invalid_unsigned_int)
-      n += scaled_normal(neighbour, segment_list[segment].neighbour_t[end]);
-    return n / n.norm();
+    return vertex_normals[segment][end];
   }
 
   Tensor<1, 2>
@@ -320,6 +338,19 @@ namespace RingContact
         boxes.emplace_back(box, s);
       }
     search_tree = pack_rtree(boxes);
+
+    // Vertex normals: the length-weighted average of the normals of the
+    // segments that meet there.
+    vertex_normals.resize(segment_list.size());
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          Tensor<1, 2>       n         = scaled_normal(s, end);
+          const unsigned int neighbour = segment_list[s].neighbours[end];
+          if (neighbour != numbers::invalid_unsigned_int)
+            n += scaled_normal(neighbour, segment_list[s].neighbour_t[end]);
+          vertex_normals[s][end] = n / n.norm();
+        }
   }
 
   Projection

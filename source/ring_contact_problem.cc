@@ -165,7 +165,7 @@ namespace RingContact
   RingContactProblem::make_sparsity_pattern()
   {
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, true);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     contact->add_couplings(dsp);
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
@@ -247,22 +247,35 @@ namespace RingContact
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
     std::vector<Tensor<2, 2>>            grad_u;
-    std::vector<Tensor<2, 2>>            grad_phi, A_grad_phi;
+    std::vector<unsigned int>            u_dofs, component;
+    std::vector<Tensor<1, 2>>            grad_phi;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         hp_fe_values.reinit(cell);
-        const FEValues<2> &fe_values = hp_fe_values.get_present_fe_values();
-        const unsigned int n         = cell->get_fe().n_dofs_per_cell();
-        const Material    &material  = materials.at(cell->material_id());
+        const FEValues<2>      &fe_values = hp_fe_values.get_present_fe_values();
+        const FiniteElement<2> &fe        = cell->get_fe();
+        const unsigned int      n         = fe.n_dofs_per_cell();
+        const Material         &material  = materials.at(cell->material_id());
         cell_matrix.reinit(n, n);
         cell_rhs.reinit(n);
         dofs.resize(n);
         grad_u.resize(fe_values.n_quadrature_points);
-        grad_phi.resize(n);
-        A_grad_phi.resize(n);
         cell->get_dof_indices(dofs);
         fe_values[displacement].get_function_gradients(solution, grad_u);
+
+        // The displacement shape functions each have one nonzero component
+        // c: Grad(phi) = e_c (x) grad(phi_c), so that P : Grad(phi_i) =
+        // P_cJ d_J phi_i and the tangent is d_J phi_i A_cJdL d_L phi_j.
+        u_dofs.clear();
+        component.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            component[i] = fe.system_to_component_index(i).first;
+            if (component[i] < 2)
+              u_dofs.push_back(i);
+          }
+        grad_phi.resize(u_dofs.size());
 
         for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
           {
@@ -270,19 +283,24 @@ namespace RingContact
             Tensor<4, 2> A;
             material.stress_and_tangent(grad_u[q], P, A);
             const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
+              grad_phi[a] = fe_values.shape_grad(u_dofs[a], q);
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
               {
-                grad_phi[i]   = fe_values[displacement].gradient(i, q);
-                A_grad_phi[i] = double_contract<2, 0, 3, 1>(A, grad_phi[i]);
-              }
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                if (grad_phi[i].norm_square() == 0)
-                  continue;
-                cell_rhs(i) -= scalar_product(P, grad_phi[i]) * JxW;
-                for (unsigned int j = 0; j < n; ++j)
-                  cell_matrix(i, j) +=
-                    scalar_product(grad_phi[i], A_grad_phi[j]) * JxW;
+                const unsigned int i = u_dofs[a], c = component[i];
+                cell_rhs(i) -= (P[c] * grad_phi[a]) * JxW;
+                // A_cJdL grad_phi_a[J], for each d and L.
+                Tensor<2, 2> Ag;
+                for (unsigned int J = 0; J < 2; ++J)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    for (unsigned int L = 0; L < 2; ++L)
+                      Ag[d][L] += grad_phi[a][J] * A[c][J][d][L];
+                for (unsigned int b = 0; b < u_dofs.size(); ++b)
+                  {
+                    const unsigned int j = u_dofs[b];
+                    cell_matrix(i, j) +=
+                      (Ag[component[j]] * grad_phi[b]) * JxW;
+                  }
               }
           }
         for (unsigned int i = 0; i < n; ++i)

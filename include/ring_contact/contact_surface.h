@@ -51,6 +51,15 @@ namespace RingContact
     void
     evaluate(const double t, std::vector<double> &values) const;
 
+    /// Values and first and second derivatives into caller's arrays of at
+    /// least size() entries (no allocation: used in the hot loops).
+    void
+    evaluate(const double t, double *values, double *first, double *second)
+      const;
+
+    /// The largest basis this class is used with (degree 4).
+    static constexpr unsigned int max_size = 5;
+
   private:
     std::vector<Polynomials::Polynomial<double>> polynomials;
   };
@@ -230,6 +239,8 @@ namespace RingContact
     LagrangeBasis1D             displacement;
     LagrangeBasis1D             multiplier;
     std::vector<double>         multiplier_node_parameters;
+    /// Vertex normals at both ends of each segment (set by update()).
+    std::vector<std::array<Tensor<1, 2>, 2>> vertex_normals;
     /// The segments that share each vertex (by global vertex index).
     std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
 
