@@ -10,13 +10,14 @@ namespace RingContact
   ContactInterface::ContactInterface(const DoFHandler<2>     &dof_handler,
                                      const ContactParameters &parameters,
                                      const IntegrationScheme &scheme,
-                                     const unsigned int       mapping_degree,
+                                     const unsigned int slave_mapping_degree,
+                                     const unsigned int master_mapping_degree,
                                      const double complementarity_constant,
                                      const bool   geometrically_linear)
-    : slave(dof_handler, parameters.slave_boundary_id, mapping_degree)
+    : slave(dof_handler, parameters.slave_boundary_id, slave_mapping_degree)
     , master(dof_handler,
              parameters.master_boundary_id,
-             mapping_degree,
+             master_mapping_degree,
              parameters.smooth_master_normals)
     , quadrature(contact_quadrature(scheme,
                                     slave.displacement_basis().size() - 1))

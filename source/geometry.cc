@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <set>
 
@@ -132,24 +133,185 @@ namespace RingContact
             }
     }
 
+    namespace
+    {
+      // A reader for gmsh ASCII files (format 1 and 2.2) with linear or
+      // quadratic quadrilaterals and lines (gmsh types 3/10 and 1/8), for
+      // the meshes deal.II's GridIn does not take (9-node quadrilaterals).
+      // Only the vertices make the triangulation: the curved geometry comes
+      // from the polar manifold, and the mid-side nodes of the circles are
+      // checked to lie on it.
+      void
+      read_gmsh_by_hand(Triangulation<2> &triangulation,
+                        std::istream     &in,
+                        const std::string &filename)
+      {
+        const auto fail = [&](const std::string &what) {
+          throw std::runtime_error("cannot read mesh file '" + filename +
+                                   "': " + what);
+        };
+        std::string line;
+        bool        format_1 = false;
+        while (std::getline(in, line) && line != "$NOD" && line != "$Nodes")
+          ;
+        format_1 = (line == "$NOD");
+        if (line != "$NOD" && line != "$Nodes")
+          fail("no node section");
+        std::size_t n_nodes = 0;
+        in >> n_nodes;
+        std::map<long, Point<2>> nodes;
+        for (std::size_t i = 0; i < n_nodes; ++i)
+          {
+            long   id;
+            double x, y, z;
+            if (!(in >> id >> x >> y >> z))
+              fail("bad node line");
+            nodes[id] = Point<2>(x, y);
+          }
+        while (std::getline(in, line) && line != "$ELM" &&
+               line != "$Elements")
+          ;
+        std::size_t n_elements = 0;
+        in >> n_elements;
+
+        std::vector<Point<2>>    vertices;
+        std::map<long, unsigned> vertex_of_node;
+        const auto vertex = [&](const long node) {
+          const auto it = vertex_of_node.find(node);
+          if (it != vertex_of_node.end())
+            return it->second;
+          if (nodes.count(node) == 0)
+            fail("element refers to unknown node " + std::to_string(node));
+          vertex_of_node[node] = vertices.size();
+          vertices.push_back(nodes[node]);
+          return static_cast<unsigned>(vertices.size() - 1);
+        };
+        std::vector<CellData<2>>                        cells;
+        SubCellData                                     lines;
+        std::vector<std::pair<Point<2>, Point<2>>>      mid_side; // mid, end
+        for (std::size_t e = 0; e < n_elements; ++e)
+          {
+            long id, type, physical = 0, tag;
+            in >> id >> type;
+            std::size_t n_element_nodes = 0;
+            if (format_1)
+              in >> physical >> tag >> n_element_nodes;
+            else
+              {
+                long n_tags;
+                in >> n_tags;
+                for (long t = 0; t < n_tags; ++t)
+                  {
+                    in >> tag;
+                    if (t == 0)
+                      physical = tag;
+                  }
+                n_element_nodes = type == 1  ? 2 :
+                                  type == 8  ? 3 :
+                                  type == 3  ? 4 :
+                                  type == 10 ? 9 :
+                                  type == 15 ? 1 :
+                                               0;
+              }
+            std::vector<long> element_nodes(n_element_nodes);
+            for (auto &n : element_nodes)
+              in >> n;
+            if (!in)
+              fail("bad element line");
+            if (type == 3 || type == 10)
+              {
+                // gmsh: corners counterclockwise; deal.II: lexicographic.
+                CellData<2> cell;
+                cell.vertices    = {vertex(element_nodes[0]),
+                                    vertex(element_nodes[1]),
+                                    vertex(element_nodes[3]),
+                                    vertex(element_nodes[2])};
+                cell.material_id = physical;
+                cells.push_back(cell);
+              }
+            else if (type == 1 || type == 8)
+              {
+                CellData<1> segment;
+                segment.vertices    = {vertex(element_nodes[0]),
+                                       vertex(element_nodes[1])};
+                segment.boundary_id = physical;
+                lines.boundary_lines.push_back(segment);
+                if (type == 8)
+                  mid_side.emplace_back(nodes[element_nodes[2]],
+                                        nodes[element_nodes[0]]);
+              }
+            else if (type != 15)
+              fail("element type " + std::to_string(type) +
+                   " (only quadrilaterals and lines)");
+          }
+        if (cells.empty())
+          fail("no quadrilaterals");
+        // The mid-side nodes of the boundary lines lie on the circles, as
+        // the polar manifold puts them.
+        for (const auto &[mid, end] : mid_side)
+          if (std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
+            fail("a mid-side node of a boundary line is not on the circle of "
+                 "its end nodes");
+        GridTools::consistently_order_cells(cells);
+        triangulation.create_triangulation(vertices, cells, lines);
+      }
+    } // namespace
+
     void
     read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
     {
       std::ifstream in(filename);
       if (!in)
         throw std::runtime_error("cannot open mesh file '" + filename + "'");
-      // The stream reader keeps the duplicated interface nodes: the two
-      // rings stay two bodies.
+      // Quadratic elements (gmsh types 8 and 10) go to our own reader; the
+      // others to deal.II's, which keeps the duplicated interface nodes:
+      // the two rings stay two bodies.
+      std::stringstream buffer;
+      buffer << in.rdbuf();
+      const std::string text = buffer.str();
+      bool              quadratic = false;
+      {
+        std::istringstream lines(text);
+        std::string        line;
+        bool               in_elements = false;
+        while (std::getline(lines, line))
+          {
+            if (line == "$ELM" || line == "$Elements")
+              {
+                in_elements = true;
+                std::getline(lines, line);
+                continue;
+              }
+            if (line == "$ENDELM" || line == "$EndElements")
+              break;
+            if (in_elements)
+              {
+                std::istringstream fields(line);
+                long               id, type;
+                fields >> id >> type;
+                if (type == 8 || type == 10)
+                  {
+                    quadratic = true;
+                    break;
+                  }
+              }
+          }
+      }
+      std::istringstream stream(text);
+      if (quadratic)
+        {
+          read_gmsh_by_hand(triangulation, stream, filename);
+          return;
+        }
       GridIn<2> grid_in(triangulation);
       try
         {
-          grid_in.read_msh(in);
+          grid_in.read_msh(stream);
         }
       catch (const std::exception &e)
         {
           throw std::runtime_error("cannot read mesh file '" + filename +
-                                   "' as a linear gmsh mesh (format 1 or "
-                                   "2.2)");
+                                   "' as a gmsh mesh (format 1 or 2.2)");
         }
     }
 

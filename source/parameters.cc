@@ -354,10 +354,13 @@ namespace RingContact
                         "displacement degree.");
       prm.declare_entry("Mapping degree",
                         "1",
-                        Patterns::Integer(1, 4),
+                        Patterns::Integer(0, 4),
                         "1: straight element edges (faceted circles, as the "
                         "original's linear mesh); 2 or more: edges follow the "
-                        "circles (polar manifold).");
+                        "circles (polar manifold); 0: isoparametric, each "
+                        "ring's mapping degree is its displacement degree "
+                        "(as the original's meshes: linear rings faceted, "
+                        "quadratic rings curved).");
       prm.declare_entry("Reduced integration",
                         "false",
                         Patterns::Bool(),

@@ -256,7 +256,7 @@ namespace RingContact
 
   void
   VtuWriter::write(const DoFHandler<2>                    &dof_handler,
-                   const Mapping<2>                       &mapping,
+                   const hp::MappingCollection<2>         &mapping,
                    const Vector<double>                   &solution,
                    const Vector<double>                   &nodal_gap,
                    const std::map<unsigned int, Material> &materials,
@@ -306,7 +306,15 @@ namespace RingContact
     GapPostprocessor gap;
     faces.add_data_vector(nodal_gap, gap);
     faces.set_flags(flags);
-    faces.build_patches(mapping, subdivisions);
+    // DataOutFaces takes one mapping: that of the slave ring.
+    unsigned int slave_fe_index = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == slave_boundary_id)
+          slave_fe_index = cell->active_fe_index();
+    faces.build_patches(mapping[std::min<unsigned int>(slave_fe_index,
+                                                       mapping.size() - 1)],
+                        subdivisions);
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
     std::ofstream surface(directory + "/" + surface_name);

@@ -89,7 +89,9 @@ namespace RingContact
         q_collection.push_back(
           QGauss<2>(fe.reduced_integration ? degree : degree + 1));
       }
-    mapping_collection.push_back(MappingQ<2>(fe.mapping_degree));
+    // One mapping per ring (the order of the finite elements).
+    for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
+      mapping_collection.push_back(MappingQ<2>(fe.mapping_degree_of(ring)));
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 :
@@ -103,13 +105,15 @@ namespace RingContact
                    parameters.materials.youngs_modulus_inner) /
           ContactSurface(dof_handler,
                          parameters.contact.slave_boundary_id,
-                         fe.mapping_degree)
+                         fe.mapping_degree_of(slave_ring))
             .min_segment_length();
     contact = std::make_unique<ContactInterface>(
       dof_handler,
       parameters.contact,
       scheme,
-      fe.mapping_degree,
+      fe.mapping_degree_of(slave_ring),
+      fe.mapping_degree_of(slave_ring == Ids::outer_ring ? Ids::inner_ring :
+                                                           Ids::outer_ring),
       c,
       parameters.materials.kinematics == Kinematics::small_strain);
     probe_dof =
@@ -519,7 +523,7 @@ namespace RingContact
         const unsigned int subdivisions =
           parameters.output.vtu_subdivisions > 0 ?
             parameters.output.vtu_subdivisions :
-            std::max(parameters.finite_elements.mapping_degree,
+            std::max(std::max(parameters.finite_elements.mapping_degree, 1u),
                      std::max(parameters.finite_elements.degree_outer,
                               parameters.finite_elements.degree_inner));
         vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
@@ -530,7 +534,7 @@ namespace RingContact
     for (const auto dof : contact->multiplier_dofs())
       nodal_gap(dof) = contact->gap_at(dof, solution);
     vtu_writer->write(dof_handler,
-                      mapping_collection[0],
+                      mapping_collection,
                       solution,
                       nodal_gap,
                       materials,

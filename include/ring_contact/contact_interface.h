@@ -55,7 +55,8 @@ namespace RingContact
     ContactInterface(const DoFHandler<2>      &dof_handler,
                      const ContactParameters  &parameters,
                      const IntegrationScheme  &scheme,
-                     const unsigned int        mapping_degree,
+                     const unsigned int        slave_mapping_degree,
+                     const unsigned int        master_mapping_degree,
                      const double              complementarity_constant,
                      const bool                geometrically_linear);
 

@@ -87,6 +87,17 @@ namespace RingContact
     pressure_spread    ///< (max - min) / reference over the slave nodes
   };
 
+  /// Boundary and material ids of the original mesh (gmsh physical tags).
+  namespace Ids
+  {
+    constexpr unsigned int outer_ring         = 100; // C1
+    constexpr unsigned int inner_ring         = 101; // C2
+    constexpr unsigned int outer_boundary     = 200; // S1R1, r = R1
+    constexpr unsigned int outer_ring_contact = 300; // S1R2, r = R2
+    constexpr unsigned int inner_ring_contact = 400; // S2R2, r = R2
+    constexpr unsigned int inner_boundary     = 500; // S2R3, r = R3
+  } // namespace Ids
+
   struct MeshParameters
   {
     MeshSource   source;
@@ -129,8 +140,17 @@ namespace RingContact
     unsigned int degree_outer;
     unsigned int degree_inner;
     unsigned int multiplier_degree;
-    unsigned int mapping_degree;
+    unsigned int mapping_degree; ///< 0: isoparametric (see below)
     bool         reduced_integration;
+
+    /// The mapping degree of a ring (material id 100 or 101).
+    unsigned int
+    mapping_degree_of(const unsigned int ring) const
+    {
+      if (mapping_degree > 0)
+        return mapping_degree;
+      return ring == Ids::outer_ring ? degree_outer : degree_inner;
+    }
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -138,16 +158,6 @@ namespace RingContact
     parse_parameters(ParameterHandler &prm);
   };
 
-  /// Boundary and material ids of the original mesh (gmsh physical tags).
-  namespace Ids
-  {
-    constexpr unsigned int outer_ring         = 100; // C1
-    constexpr unsigned int inner_ring         = 101; // C2
-    constexpr unsigned int outer_boundary     = 200; // S1R1, r = R1
-    constexpr unsigned int outer_ring_contact = 300; // S1R2, r = R2
-    constexpr unsigned int inner_ring_contact = 400; // S2R2, r = R2
-    constexpr unsigned int inner_boundary     = 500; // S2R3, r = R3
-  } // namespace Ids
 
   struct ContactParameters
   {

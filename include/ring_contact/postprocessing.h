@@ -5,7 +5,7 @@
 #define ring_contact_postprocessing_h
 
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/mapping.h>
+#include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/material.h>
@@ -77,7 +77,7 @@ namespace RingContact
 
     void
     write(const DoFHandler<2>                     &dof_handler,
-          const Mapping<2>                        &mapping,
+          const hp::MappingCollection<2>          &mapping,
           const Vector<double>                    &solution,
           const Vector<double>                    &nodal_gap,
           const std::map<unsigned int, Material> &materials,
