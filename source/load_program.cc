@@ -22,8 +22,8 @@ namespace RingContact
   {
     if (parameters.program == LoadProgramType::ramp)
       return step * parameters.time_step;
-    // Rotation: the pseudo-time is the rotation parameter s itself.
-    return parameters.rotation_elements * step / parameters.rotation_steps;
+    // Rotation: the pseudo-time runs from 0 to 1 over the steps.
+    return static_cast<double>(step) / parameters.rotation_steps;
   }
 
   LoadState
@@ -40,10 +40,10 @@ namespace RingContact
         return {t < dt ? p * t / dt : p, 0.0};
       }
     // Rotation: the full pressure from the first step on (reached linearly
-    // within the first step if that step has to be cut), then s = t.
+    // within the first step if that step has to be cut), s = s_end t.
     const double t1 = time(1);
     const double p  = parameters.rotation_pressure * std::min(1.0, t / t1);
-    return {p, t};
+    return {p, parameters.rotation_elements * t};
   }
 
   LoadState
