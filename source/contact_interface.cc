@@ -32,13 +32,17 @@ namespace RingContact
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       {
         const auto &segment = slave.segments()[s];
-        for (const auto dof : segment.multiplier_dofs)
-          if (multiplier_index.count(dof) == 0)
-            {
-              multiplier_index[dof] = multiplier_dof_list.size();
-              multiplier_dof_list.push_back(dof);
-              reference_weight.push_back(0.0);
-            }
+        for (unsigned int k = 0; k < segment.multiplier_dofs.size(); ++k)
+          {
+            const auto dof = segment.multiplier_dofs[k];
+            if (multiplier_index.count(dof) == 0)
+              {
+                multiplier_index[dof] = multiplier_dof_list.size();
+                multiplier_dof_list.push_back(dof);
+                reference_weight.push_back(0.0);
+              }
+            node_sites[dof].emplace_back(s, slave.multiplier_nodes()[k]);
+          }
         for (unsigned int q = 0; q < exact.size(); ++q)
           {
             std::vector<double> Phi;
@@ -362,59 +366,26 @@ namespace RingContact
     return dof;
   }
 
-  namespace
-  {
-    // The parameter t of a multiplier dof on a segment, if it is there.
-    bool
-    node_parameter(const ContactSurface         &surface,
-                   const SurfaceSegment         &segment,
-                   const types::global_dof_index dof,
-                   double                       &t)
-    {
-      const auto it = std::find(segment.multiplier_dofs.begin(),
-                                segment.multiplier_dofs.end(),
-                                dof);
-      if (it == segment.multiplier_dofs.end())
-        return false;
-      t = surface.multiplier_nodes()[it - segment.multiplier_dofs.begin()];
-      return true;
-    }
-  } // namespace
-
   double
   ContactInterface::stretch_at(const types::global_dof_index dof) const
   {
-    double       sum = 0;
-    unsigned int n   = 0;
-    for (unsigned int s = 0; s < slave.segments().size(); ++s)
-      {
-        double t;
-        if (node_parameter(slave, slave.segments()[s], dof, t))
-          {
-            sum += slave.current_point(s, t).dx.norm() /
-                   slave.reference_point(s, t).dx.norm();
-            ++n;
-          }
-      }
-    return n > 0 ? sum / n : 1.0;
+    double      sum   = 0;
+    const auto &sites = node_sites.at(dof);
+    for (const auto &[s, t] : sites)
+      sum += slave.current_point(s, t).dx.norm() /
+             slave.reference_point(s, t).dx.norm();
+    return sum / sites.size();
   }
 
   double
   ContactInterface::gap_at(const types::global_dof_index dof,
                           const Vector<double>         &solution) const
   {
-    for (unsigned int s = 0; s < slave.segments().size(); ++s)
-      {
-        double t;
-        if (node_parameter(slave, slave.segments()[s], dof, t))
-          {
-            Projection p = master.project(slave.current_point(s, t).x);
-            if (geometrically_linear)
-              p.gap += linear_gap_increment(solution, s, t, p);
-            return p.gap;
-          }
-      }
-    return 0.0;
+    const auto [s, t] = node_sites.at(dof).front();
+    Projection p      = master.project(slave.current_point(s, t).x);
+    if (geometrically_linear)
+      p.gap += linear_gap_increment(solution, s, t, p);
+    return p.gap;
   }
 
   double

@@ -154,6 +154,11 @@ namespace RingContact
 
     std::vector<types::global_dof_index>          multiplier_dof_list;
     std::map<types::global_dof_index, unsigned int> multiplier_index;
+    /// Where each multiplier node sits: (slave segment, t), one entry per
+    /// segment that shares it.
+    std::map<types::global_dof_index,
+             std::vector<std::pair<unsigned int, double>>>
+      node_sites;
     std::vector<double> reference_weight; ///< w_k = int Phi_k dS
     std::vector<double> weighted_gap;     ///< g~_k
     std::vector<bool>   active;
