@@ -1,0 +1,97 @@
+// An independent computation: the values the original Code_Aster test
+// reports (VALE_CALC of TEST_RESU in the public ssnp152a.comm and
+// ssnp152c.comm: LAGS_C at node N10, i.e. node A). With the same choices as
+// those inputs (smoothed master normals, LISSAGE = OUI; nodal and Gauss
+// integration; finite strain, GROT_GDEP), and reporting the pressure per
+// reference length (the original's multiplier is a nominal pressure), the
+// program reproduces them to the 9 digits they are printed with.
+#include <ring_contact/config.h>
+#include <ring_contact/ring_contact_problem.h>
+
+#include "tests.h"
+
+#include <cmath>
+#include <iomanip>
+
+using namespace RingContact;
+using RingContactTests::check;
+
+namespace
+{
+  std::vector<double>
+  pressures(const std::string &modelisation, const std::string &scheme)
+  {
+    {
+      std::ofstream prm("aster.prm");
+      prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/" << modelisation
+          << ".prm\nsubsection Contact\n set Integration schemes = " << scheme
+          << "\n set Smooth master normals = true\n"
+          << " set Reported pressure = nominal\nend\n"
+          << "subsection Output\n set VTU interval = 0\n"
+          << " set Print timing = false\n set Write history = false\nend\n"
+          << "subsection Newton\n set Verbose = false\nend\n";
+    }
+    Parameters parameters;
+    parameters.read("aster.prm");
+    std::ostringstream log;
+    RingContactProblem problem(parameters,
+                               parameters.contact.schemes.front(),
+                               log);
+    check(problem.run(), modelisation + " " + scheme + " is solved");
+    std::vector<double> p;
+    for (const auto &row : problem.history())
+      p.push_back(row.pressure_A);
+    return p;
+  }
+
+  void
+  compare(const std::string         &what,
+          const std::vector<double> &ours,
+          const std::vector<std::pair<unsigned int, double>> &aster)
+  {
+    double largest = 0;
+    for (const auto &[step, value] : aster)
+      largest =
+        std::max(largest, std::abs(ours.at(step - 1) - value) / value);
+    RingContactTests::deallog_file
+      << what << ": " << aster.size()
+      << " values of Code_Aster reproduced within 1e-7: "
+      << (largest < 1e-7 ? "yes" : "NO") << std::endl;
+    check(largest < 1e-7,
+          what + ": largest relative difference " + std::to_string(largest));
+  }
+} // namespace
+
+int
+main()
+{
+  // ssnp152a.comm, RESU1 (nodal) and RESU2 (Gauss), steps 1 to 21.
+  const std::vector<double> a_nodal = {
+    9.19489592E+04, 1.15753309E+05, 1.45719119E+05, 1.83440528E+05,
+    2.30923720E+05, 2.90693200E+05, 3.65925335E+05, 4.60616091E+05,
+    5.79791587E+05, 7.29772188E+05, 9.18503450E+05, 1.15597031E+06,
+    1.45471468E+06, 1.83048090E+06, 2.30301873E+06, 2.89707887E+06,
+    3.64364217E+06, 4.58142879E+06, 5.75873791E+06, 7.23566853E+06,
+    9.08676545E+06};
+  const std::vector<double> a_gauss = {
+    9.21382551E+04, 1.15991611E+05, 1.46019112E+05, 1.83818178E+05,
+    2.31399124E+05, 2.91291652E+05, 3.66678667E+05, 4.61564364E+05,
+    5.80985208E+05, 7.31274574E+05, 9.20394379E+05, 1.15835012E+06,
+    1.45770951E+06, 1.83424932E+06, 2.30775996E+06, 2.90304310E+06,
+    3.65114335E+06, 4.59086061E+06, 5.77059346E+06, 7.25056464E+06,
+    9.10547242E+06};
+  const auto steps = [](const std::vector<double> &values) {
+    std::vector<std::pair<unsigned int, double>> s;
+    for (unsigned int k = 0; k < values.size(); ++k)
+      s.emplace_back(k + 1, values[k]);
+    return s;
+  };
+  compare("A, nodal", pressures("ssnp152a", "nodal"), steps(a_nodal));
+  compare("A, Gauss 3", pressures("ssnp152a", "Gauss 3"), steps(a_gauss));
+
+  // ssnp152c.comm: step 100 (s = 1), nodal and 2 Gauss points.
+  compare("C, nodal", pressures("ssnp152c", "nodal"), {{100, 9.08676484E+06}});
+  compare("C, Gauss 2",
+          pressures("ssnp152c", "Gauss 2"),
+          {{100, 9.10546887E+06}});
+}
