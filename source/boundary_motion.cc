@@ -9,10 +9,11 @@ namespace RingContact
   BoundaryMotion::BoundaryMotion(const double       radial_displacement,
                                  const double       rotation_angle,
                                  const unsigned int n_components)
-    : Function<2>(n_components)
-    , radial_displacement(radial_displacement)
-    , rotation_angle(rotation_angle)
-  {}
+      : Function<2>(n_components)
+      , radial_displacement(radial_displacement)
+      , rotation_angle(rotation_angle)
+  {
+  }
 
   double
   BoundaryMotion::value(const Point<2> &X, const unsigned int component) const

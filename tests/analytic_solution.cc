@@ -57,8 +57,7 @@ main()
               stress.contact_pressure(p),
               1e-12),
         "sigma_rr(R2-) = -sigma_n");
-  check(std::abs(radial_stress(stress.A2(p), stress.B2(p), 0.2)) <
-          1e-9 * p,
+  check(std::abs(radial_stress(stress.A2(p), stress.B2(p), 0.2)) < 1e-9 * p,
         "sigma_rr(R3) = 0");
   check(close(stress.radial_displacement(0.6 + 1e-14, p),
               stress.radial_displacement(0.6 - 1e-14, p),

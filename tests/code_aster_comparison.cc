@@ -45,14 +45,13 @@ namespace
   }
 
   void
-  compare(const std::string         &what,
-          const std::vector<double> &ours,
+  compare(const std::string                                  &what,
+          const std::vector<double>                          &ours,
           const std::vector<std::pair<unsigned int, double>> &aster)
   {
     double largest = 0;
     for (const auto &[step, value] : aster)
-      largest =
-        std::max(largest, std::abs(ours.at(step - 1) - value) / value);
+      largest = std::max(largest, std::abs(ours.at(step - 1) - value) / value);
     RingContactTests::deallog_file
       << what << ": " << aster.size()
       << " values of Code_Aster reproduced within 1e-7: "
@@ -66,21 +65,22 @@ int
 main()
 {
   // ssnp152a.comm, RESU1 (nodal) and RESU2 (Gauss), steps 1 to 21.
-  const std::vector<double> a_nodal = {
-    9.19489592E+04, 1.15753309E+05, 1.45719119E+05, 1.83440528E+05,
-    2.30923720E+05, 2.90693200E+05, 3.65925335E+05, 4.60616091E+05,
-    5.79791587E+05, 7.29772188E+05, 9.18503450E+05, 1.15597031E+06,
-    1.45471468E+06, 1.83048090E+06, 2.30301873E+06, 2.89707887E+06,
-    3.64364217E+06, 4.58142879E+06, 5.75873791E+06, 7.23566853E+06,
-    9.08676545E+06};
-  const std::vector<double> a_gauss = {
-    9.21382551E+04, 1.15991611E+05, 1.46019112E+05, 1.83818178E+05,
-    2.31399124E+05, 2.91291652E+05, 3.66678667E+05, 4.61564364E+05,
-    5.80985208E+05, 7.31274574E+05, 9.20394379E+05, 1.15835012E+06,
-    1.45770951E+06, 1.83424932E+06, 2.30775996E+06, 2.90304310E+06,
-    3.65114335E+06, 4.59086061E+06, 5.77059346E+06, 7.25056464E+06,
-    9.10547242E+06};
-  const auto steps = [](const std::vector<double> &values) {
+  const std::vector<double> a_nodal
+    = {9.19489592E+04, 1.15753309E+05, 1.45719119E+05, 1.83440528E+05,
+       2.30923720E+05, 2.90693200E+05, 3.65925335E+05, 4.60616091E+05,
+       5.79791587E+05, 7.29772188E+05, 9.18503450E+05, 1.15597031E+06,
+       1.45471468E+06, 1.83048090E+06, 2.30301873E+06, 2.89707887E+06,
+       3.64364217E+06, 4.58142879E+06, 5.75873791E+06, 7.23566853E+06,
+       9.08676545E+06};
+  const std::vector<double> a_gauss
+    = {9.21382551E+04, 1.15991611E+05, 1.46019112E+05, 1.83818178E+05,
+       2.31399124E+05, 2.91291652E+05, 3.66678667E+05, 4.61564364E+05,
+       5.80985208E+05, 7.31274574E+05, 9.20394379E+05, 1.15835012E+06,
+       1.45770951E+06, 1.83424932E+06, 2.30775996E+06, 2.90304310E+06,
+       3.65114335E+06, 4.59086061E+06, 5.77059346E+06, 7.25056464E+06,
+       9.10547242E+06};
+  const auto steps = [](const std::vector<double> &values)
+  {
     std::vector<std::pair<unsigned int, double>> s;
     for (unsigned int k = 0; k < values.size(); ++k)
       s.emplace_back(k + 1, values[k]);

@@ -35,16 +35,14 @@ namespace
     DoFHandler<2>     dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
     const QGauss<2> quadrature(n_gauss);
-    FEValues<2>     fe_values(fe,
-                          quadrature,
-                          update_gradients | update_JxW_values);
+    FEValues<2> fe_values(fe, quadrature, update_gradients | update_JxW_values);
     fe_values.reinit(dof_handler.begin_active());
     const Material material(1e9,
                             0.2,
                             PlaneAssumption::plane_stress,
                             Kinematics::small_strain);
-    Tensor<2, 2> P;
-    Tensor<4, 2> A;
+    Tensor<2, 2>   P;
+    Tensor<4, 2>   A;
     material.stress_and_tangent(Tensor<2, 2>(), P, A);
     const FEValuesExtractors::Vector u(0);
     LAPACKFullMatrix<double>         K(fe.n_dofs_per_cell());
@@ -53,8 +51,8 @@ namespace
         for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
           K(i, j) += scalar_product(fe_values[u].gradient(i, q),
                                     double_contract<2, 0, 3, 1>(
-                                      A, fe_values[u].gradient(j, q))) *
-                     fe_values.JxW(q);
+                                      A, fe_values[u].gradient(j, q)))
+                     * fe_values.JxW(q);
     Vector<double>     values;
     FullMatrix<double> vectors;
     K.compute_eigenvalues_symmetric(-1e300, 1e300, 0, values, vectors);
@@ -110,12 +108,11 @@ main()
   const auto p_reduced = run_h(true);
   double     largest   = 0;
   for (unsigned int k = 0; k < p_full.size(); ++k)
-    largest =
-      std::max(largest, std::abs(p_reduced[k] - p_full[k]) / p_full[k]);
+    largest = std::max(largest, std::abs(p_reduced[k] - p_full[k]) / p_full[k]);
   out << "modelisation H, pressure at A, reduced against full integration: "
       << "largest relative difference over the 21 steps below 1e-3: "
       << (largest < 1e-3 ? "yes" : "NO") << std::endl;
   check(largest < 1e-3,
-        "reduced integration changes the pressure by " +
-          std::to_string(largest));
+        "reduced integration changes the pressure by "
+          + std::to_string(largest));
 }

@@ -52,13 +52,13 @@ namespace RingContact
   class ContactInterface
   {
   public:
-    ContactInterface(const DoFHandler<2>      &dof_handler,
-                     const ContactParameters  &parameters,
-                     const IntegrationScheme  &scheme,
-                     const unsigned int        slave_mapping_degree,
-                     const unsigned int        master_mapping_degree,
-                     const double              complementarity_constant,
-                     const bool                geometrically_linear);
+    ContactInterface(const DoFHandler<2>     &dof_handler,
+                     const ContactParameters &parameters,
+                     const IntegrationScheme &scheme,
+                     const unsigned int       slave_mapping_degree,
+                     const unsigned int       master_mapping_degree,
+                     const double             complementarity_constant,
+                     const bool               geometrically_linear);
 
     /// Pair every slave quadrature point with the current master surface,
     /// compute the weighted gaps and choose the active set from the current
@@ -152,13 +152,13 @@ namespace RingContact
 
     const bool segment_based;
 
-    std::vector<types::global_dof_index>          multiplier_dof_list;
+    std::vector<types::global_dof_index>            multiplier_dof_list;
     std::map<types::global_dof_index, unsigned int> multiplier_index;
     /// Where each multiplier node sits: (slave segment, t), one entry per
     /// segment that shares it.
     std::map<types::global_dof_index,
              std::vector<std::pair<unsigned int, double>>>
-      node_sites;
+                        node_sites;
     std::vector<double> reference_weight; ///< w_k = int Phi_k dS
     std::vector<double> weighted_gap;     ///< g~_k
     std::vector<bool>   active;

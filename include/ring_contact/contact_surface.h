@@ -54,8 +54,10 @@ namespace RingContact
     /// Values and first and second derivatives into caller's arrays of at
     /// least size() entries (no allocation: used in the hot loops).
     void
-    evaluate(const double t, double *values, double *first, double *second)
-      const;
+    evaluate(const double t,
+             double      *values,
+             double      *first,
+             double      *second) const;
 
     /// The largest basis this class is used with (degree 4).
     static constexpr unsigned int max_size = 5;
@@ -91,9 +93,9 @@ namespace RingContact
     std::vector<Tensor<1, 2>> nodal_displacements;
     /// The segments that share the vertex at t = 0 and t = 1 (invalid at
     /// the end of an open surface), and the vertex's parameter on them.
-    std::array<unsigned int, 2> neighbours = {{numbers::invalid_unsigned_int,
-                                              numbers::invalid_unsigned_int}};
-    std::array<double, 2>       neighbour_t = {{0, 0}};
+    std::array<unsigned int, 2> neighbours
+      = {{numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
+    std::array<double, 2> neighbour_t = {{0, 0}};
   };
 
   /// Result of the closest-point projection of a point onto a surface.

@@ -40,9 +40,9 @@ namespace RingContact
   /// Where the contact integrals are evaluated on each slave segment.
   enum class ContactIntegration
   {
-    nodal,       ///< at the slave nodes (Gauss-Lobatto, the original's default)
-    gauss,       ///< n Gauss points per slave segment
-    simpson,     ///< composite Simpson rule of order n (n sub-intervals)
+    nodal,   ///< at the slave nodes (Gauss-Lobatto, the original's default)
+    gauss,   ///< n Gauss points per slave segment
+    simpson, ///< composite Simpson rule of order n (n sub-intervals)
     newton_cotes, ///< closed Newton-Cotes rule with n+1 points (n = 1,2,4,6)
     segment_based ///< slave segments cut where the master vertices project,
                   ///< n Gauss points on each piece (mortar integration)
@@ -96,7 +96,7 @@ namespace RingContact
     constexpr unsigned int outer_ring_contact = 300; // S1R2, r = R2
     constexpr unsigned int inner_ring_contact = 400; // S2R2, r = R2
     constexpr unsigned int inner_boundary     = 500; // S2R3, r = R3
-  } // namespace Ids
+  }                                                  // namespace Ids
 
   struct MeshParameters
   {
@@ -223,8 +223,8 @@ namespace RingContact
   /// One check of the original's TEST_RESU kind.
   struct CheckParameters
   {
-    CheckedQuantity quantity;
-    bool            every_step;
+    CheckedQuantity           quantity;
+    bool                      every_step;
     std::vector<unsigned int> steps; ///< when not every step
     double                    tolerance;
 

@@ -76,19 +76,19 @@ namespace RingContact
               const unsigned int subdivisions);
 
     void
-    write(const DoFHandler<2>                     &dof_handler,
-          const hp::MappingCollection<2>          &mapping,
-          const Vector<double>                    &solution,
-          const Vector<double>                    &nodal_gap,
+    write(const DoFHandler<2>                    &dof_handler,
+          const hp::MappingCollection<2>         &mapping,
+          const Vector<double>                   &solution,
+          const Vector<double>                   &nodal_gap,
           const std::map<unsigned int, Material> &materials,
-          const types::boundary_id                 slave_boundary_id,
-          const unsigned int                       step,
-          const double                             time);
+          const types::boundary_id                slave_boundary_id,
+          const unsigned int                      step,
+          const double                            time);
 
   private:
-    const std::string                         directory;
-    const std::string                         tag;
-    const unsigned int                        subdivisions;
+    const std::string                           directory;
+    const std::string                           tag;
+    const unsigned int                          subdivisions;
     std::vector<std::pair<double, std::string>> bulk_records;
     std::vector<std::pair<double, std::string>> surface_records;
   };

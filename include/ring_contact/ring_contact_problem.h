@@ -139,33 +139,33 @@ namespace RingContact
     const IntegrationScheme scheme;
     std::ostream           &log;
 
-    Triangulation<2>                  triangulation;
-    DoFHandler<2>                     dof_handler;
-    hp::FECollection<2>               fe_collection;
-    hp::MappingCollection<2>          mapping_collection;
-    hp::QCollection<2>                q_collection;
-    const FEValuesExtractors::Vector  displacement;
-    std::map<unsigned int, Material>  materials; ///< by ring (material id)
+    Triangulation<2>                 triangulation;
+    DoFHandler<2>                    dof_handler;
+    hp::FECollection<2>              fe_collection;
+    hp::MappingCollection<2>         mapping_collection;
+    hp::QCollection<2>               q_collection;
+    const FEValuesExtractors::Vector displacement;
+    std::map<unsigned int, Material> materials; ///< by ring (material id)
     types::material_id               slave_ring;
-    const AnalyticSolution            analytic;
-    const LoadProgram                 load_program;
+    const AnalyticSolution           analytic;
+    const LoadProgram                load_program;
     /// The contact patch test (two blocks) instead of the rings.
     const bool                        patch_test;
     std::unique_ptr<ContactInterface> contact;
 
     /// Homogeneous constraints of a Newton update: fixed displacements on
     /// r = R1 and r = R3, zero multiplier off the slave surface.
-    AffineConstraints<double>  constraints;
-    std::vector<bool>          is_dirichlet;
-    SparsityPattern            sparsity_pattern;
-    SparseMatrix<double>       system_matrix;
-    Vector<double>             system_rhs;
-    Vector<double>             internal_force;
-    Vector<double>             solution;
-    Vector<double>             previous_solution;
-    double                     previous_time, current_time;
-    LoadState                  current_load;
-    types::global_dof_index    probe_dof;
+    AffineConstraints<double> constraints;
+    std::vector<bool>         is_dirichlet;
+    SparsityPattern           sparsity_pattern;
+    SparseMatrix<double>      system_matrix;
+    Vector<double>            system_rhs;
+    Vector<double>            internal_force;
+    Vector<double>            solution;
+    Vector<double>            previous_solution;
+    double                    previous_time, current_time;
+    LoadState                 current_load;
+    types::global_dof_index   probe_dof;
 
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
