@@ -15,8 +15,7 @@ namespace RingContact
       , R3(R3)
   {
     // Plane strain is plane stress with E/(1 - nu^2) and nu/(1 - nu).
-    const auto effective = [plane](const double E, const double nu)
-    {
+    const auto effective = [plane](const double E, const double nu) {
       if (plane == PlaneAssumption::plane_stress)
         return std::make_pair(E, nu);
       return std::make_pair(E / (1 - nu * nu), nu / (1 - nu));
@@ -35,17 +34,15 @@ namespace RingContact
                          mat.youngs_modulus_inner,
                          mat.poissons_ratio_inner,
                          mat.plane)
-  {
-  }
+  {}
 
   double
   AnalyticSolution::contact_pressure(const double p) const
   {
     const double a = R1 * R1, b = R2 * R2, c = R3 * R3;
-    return 2 * p * a
-           / (a * (1 + nu1) + b * (1 - nu1)
-              + (E1 / E2) * (a - b) / (b - c)
-                  * (b * (1 - nu2) + c * (1 + nu2)));
+    return 2 * p * a /
+           (a * (1 + nu1) + b * (1 - nu1) +
+            (E1 / E2) * (a - b) / (b - c) * (b * (1 - nu2) + c * (1 + nu2)));
   }
 
   double

@@ -12,8 +12,7 @@ namespace RingContact
       : Function<2>(n_components)
       , radial_displacement(radial_displacement)
       , rotation_angle(rotation_angle)
-  {
-  }
+  {}
 
   double
   BoundaryMotion::value(const Point<2> &X, const unsigned int component) const

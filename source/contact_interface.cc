@@ -27,33 +27,34 @@ namespace RingContact
   {
     // The multiplier nodes, and w_k = int Phi_k dS with a rule that is exact
     // for the multiplier times the reference length element.
-    const QGauss<1> exact(slave.geometry_basis().size()
-                          + slave.multiplier_basis().size());
+    const QGauss<1> exact(slave.geometry_basis().size() +
+                          slave.multiplier_basis().size());
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
-    {
-      const auto &segment = slave.segments()[s];
-      for (unsigned int k = 0; k < segment.multiplier_dofs.size(); ++k)
       {
-        const auto dof = segment.multiplier_dofs[k];
-        if (multiplier_index.count(dof) == 0)
-        {
-          multiplier_index[dof] = multiplier_dof_list.size();
-          multiplier_dof_list.push_back(dof);
-          reference_weight.push_back(0.0);
-        }
-        node_sites[dof].emplace_back(s, slave.multiplier_nodes()[k]);
+        const auto &segment = slave.segments()[s];
+        for (unsigned int k = 0; k < segment.multiplier_dofs.size(); ++k)
+          {
+            const auto dof = segment.multiplier_dofs[k];
+            if (multiplier_index.count(dof) == 0)
+              {
+                multiplier_index[dof] = multiplier_dof_list.size();
+                multiplier_dof_list.push_back(dof);
+                reference_weight.push_back(0.0);
+              }
+            node_sites[dof].emplace_back(s, slave.multiplier_nodes()[k]);
+          }
+        for (unsigned int q = 0; q < exact.size(); ++q)
+          {
+            std::vector<double> Phi;
+            slave.multiplier_basis().evaluate(exact.point(q)[0], Phi);
+            const double dS =
+              slave.reference_point(s, exact.point(q)[0]).dx.norm() *
+              exact.weight(q);
+            for (unsigned int k = 0; k < Phi.size(); ++k)
+              reference_weight[multiplier_index[segment.multiplier_dofs[k]]] +=
+                Phi[k] * dS;
+          }
       }
-      for (unsigned int q = 0; q < exact.size(); ++q)
-      {
-        std::vector<double> Phi;
-        slave.multiplier_basis().evaluate(exact.point(q)[0], Phi);
-        const double dS = slave.reference_point(s, exact.point(q)[0]).dx.norm()
-                          * exact.weight(q);
-        for (unsigned int k = 0; k < Phi.size(); ++k)
-          reference_weight[multiplier_index[segment.multiplier_dofs[k]]]
-            += Phi[k] * dS;
-      }
-    }
     weighted_gap.assign(multiplier_dof_list.size(), 0.0);
     segment_length = slave.min_segment_length();
     active.assign(multiplier_dof_list.size(), true);
@@ -78,16 +79,16 @@ namespace RingContact
     // strain: pair in the reference configuration, and the gap is the
     // reference gap plus the normal jump of the displacement.
     if (geometrically_linear)
-    {
-      const Vector<double> zero(solution.size());
-      slave.update(zero);
-      master.update(zero);
-    }
+      {
+        const Vector<double> zero(solution.size());
+        slave.update(zero);
+        master.update(zero);
+      }
     else
-    {
-      slave.update(solution);
-      master.update(solution);
-    }
+      {
+        slave.update(solution);
+        master.update(solution);
+      }
 
     if (segment_based)
       pair_pieces(solution);
@@ -97,29 +98,29 @@ namespace RingContact
     // Weighted gaps and the active set from the current multipliers.
     std::fill(weighted_gap.begin(), weighted_gap.end(), 0.0);
     for (const auto &point : points)
-    {
-      const auto         &segment = slave.segments()[point.slave_segment];
-      std::vector<double> Phi;
-      slave.multiplier_basis().evaluate(point.eta, Phi);
-      for (unsigned int k = 0; k < Phi.size(); ++k)
-        weighted_gap[multiplier_index[segment.multiplier_dofs[k]]]
-          += Phi[k] * point.projection.gap * point.current_length;
-    }
+      {
+        const auto         &segment = slave.segments()[point.slave_segment];
+        std::vector<double> Phi;
+        slave.multiplier_basis().evaluate(point.eta, Phi);
+        for (unsigned int k = 0; k < Phi.size(); ++k)
+          weighted_gap[multiplier_index[segment.multiplier_dofs[k]]] +=
+            Phi[k] * point.projection.gap * point.current_length;
+      }
     unsigned int n_changed = 0;
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
-    {
-      const double lambda = solution(multiplier_dof_list[k]);
-      // Closed when w lambda - c g~ >= 0; a gap of round-off size (at
-      // the start the surfaces touch exactly) counts as closed.
-      const double round_off = 1e-12 * complementarity_constant
-                               * reference_weight[k] * segment_length;
-      const bool closed = reference_weight[k] * lambda
-                            - complementarity_constant * weighted_gap[k]
-                          >= -round_off;
-      if (closed != active[k])
-        ++n_changed;
-      active[k] = closed;
-    }
+      {
+        const double lambda = solution(multiplier_dof_list[k]);
+        // Closed when w lambda - c g~ >= 0; a gap of round-off size (at
+        // the start the surfaces touch exactly) counts as closed.
+        const double round_off = 1e-12 * complementarity_constant *
+                                 reference_weight[k] * segment_length;
+        const bool closed = reference_weight[k] * lambda -
+                              complementarity_constant * weighted_gap[k] >=
+                            -round_off;
+        if (closed != active[k])
+          ++n_changed;
+        active[k] = closed;
+      }
     return n_changed;
   }
 
@@ -132,25 +133,25 @@ namespace RingContact
     new_points.reserve(slave.segments().size() * quadrature.size());
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       for (unsigned int q = 0; q < quadrature.size(); ++q)
-      {
-        const unsigned int index     = new_points.size();
-        const unsigned int preferred = index < points.size()
-                                         ? points[index].projection.segment
-                                         : numbers::invalid_unsigned_int;
-        ContactPoint       point;
-        point.slave_segment  = s;
-        point.eta            = quadrature.point(q)[0];
-        point.weight         = quadrature.weight(q);
-        point.xi             = point.eta;
-        point.w              = point.weight;
-        const CurvePoint x   = slave.current_point(s, point.eta);
-        point.projection     = master.project(x.x, preferred);
-        point.current_length = x.dx.norm() * point.weight;
-        if (geometrically_linear)
-          point.projection.gap
-            += linear_gap_increment(solution, s, point.eta, point.projection);
-        new_points.push_back(point);
-      }
+        {
+          const unsigned int index     = new_points.size();
+          const unsigned int preferred = index < points.size() ?
+                                           points[index].projection.segment :
+                                           numbers::invalid_unsigned_int;
+          ContactPoint       point;
+          point.slave_segment  = s;
+          point.eta            = quadrature.point(q)[0];
+          point.weight         = quadrature.weight(q);
+          point.xi             = point.eta;
+          point.w              = point.weight;
+          const CurvePoint x   = slave.current_point(s, point.eta);
+          point.projection     = master.project(x.x, preferred);
+          point.current_length = x.dx.norm() * point.weight;
+          if (geometrically_linear)
+            point.projection.gap +=
+              linear_gap_increment(solution, s, point.eta, point.projection);
+          new_points.push_back(point);
+        }
     points = std::move(new_points);
   }
 
@@ -161,97 +162,98 @@ namespace RingContact
     // line through a master vertex along the vertex normal crosses it. On
     // each piece the partner is one master segment, the integrand is
     // smooth, and Gauss points integrate it to the accuracy of the rule.
-    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-    { return a[0] * b[1] - a[1] * b[0]; };
+    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
     std::vector<ContactPoint> new_points;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
-    {
-      // Master vertices near the segment.
-      std::vector<Point<2>> corners;
-      for (const double t : {0.0, 0.5, 1.0})
-        corners.push_back(slave.current_point(s, t).x);
-      BoundingBox<2> box(corners);
-      const double   length = corners.front().distance(corners.back());
-      box.extend(0.5 * length);
-
-      // Crossings eta of h(eta) = (x_s(eta) - x_v) x n_v = 0.
-      std::vector<std::pair<double, unsigned int>> cuts; // eta, vertex
-      std::set<unsigned int>                       seen;
-      for (const unsigned int m : master.segments_near(box))
-        for (unsigned int end = 0; end < 2; ++end)
-        {
-          const unsigned int v = master.segments()[m].vertices[end];
-          if (!seen.insert(v).second)
-            continue;
-          const Point<2>     xv  = master.current_point(m, end).x;
-          const Tensor<1, 2> nv  = master.vertex_normal(m, end);
-          double             eta = 0.5;
-          for (unsigned int it = 0; it < 20; ++it)
-          {
-            const CurvePoint p     = slave.current_point(s, eta);
-            const double     h     = cross(p.x - xv, nv);
-            const double     slope = cross(p.dx, nv);
-            if (slope == 0)
-              break;
-            const double d = -h / slope;
-            eta += d;
-            if (std::abs(d) < 1e-15)
-              break;
-          }
-          if (std::isfinite(eta) && eta > 1e-10 && eta < 1 - 1e-10
-              && slave.current_point(s, eta).x.distance(xv) < length)
-            cuts.emplace_back(eta, v);
-        }
-      std::sort(cuts.begin(), cuts.end());
-
-      // The pieces, the partner of each (from its midpoint), and the
-      // Gauss points on it.
-      std::vector<std::pair<double, unsigned int>> ends
-        = {{0.0, numbers::invalid_unsigned_int}};
-      ends.insert(ends.end(), cuts.begin(), cuts.end());
-      ends.emplace_back(1.0, numbers::invalid_unsigned_int);
-      for (unsigned int i = 0; i + 1 < ends.size(); ++i)
       {
-        const double eta_a = ends[i].first, eta_b = ends[i + 1].first;
-        if (eta_b - eta_a < 1e-12)
-          continue;
-        const unsigned int index     = new_points.size();
-        const unsigned int preferred = index < points.size()
-                                         ? points[index].projection.segment
-                                         : numbers::invalid_unsigned_int;
-        const Projection   middle
-          = master.project(slave.current_point(s, 0.5 * (eta_a + eta_b)).x,
-                           preferred);
-        const unsigned int partner = middle.segment;
-        const auto        &m_seg   = master.segments()[partner];
-        std::array<int, 2> piece_end;
-        for (unsigned int side = 0; side < 2; ++side)
-        {
-          const unsigned int v = ends[i + side].second;
-          piece_end[side]      = v == m_seg.vertices[0]   ? 0
-                                 : v == m_seg.vertices[1] ? 1
-                                                          : -1;
-        }
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          ContactPoint point;
-          point.slave_segment  = s;
-          point.piece          = {{eta_a, eta_b}};
-          point.piece_end      = piece_end;
-          point.xi             = quadrature.point(q)[0];
-          point.w              = quadrature.weight(q);
-          point.eta            = eta_a + (eta_b - eta_a) * point.xi;
-          point.weight         = (eta_b - eta_a) * point.w;
-          const CurvePoint x   = slave.current_point(s, point.eta);
-          point.projection     = master.project_onto(x.x, partner);
-          point.current_length = x.dx.norm() * point.weight;
-          if (geometrically_linear)
-            point.projection.gap
-              += linear_gap_increment(solution, s, point.eta, point.projection);
-          new_points.push_back(point);
-        }
+        // Master vertices near the segment.
+        std::vector<Point<2>> corners;
+        for (const double t : {0.0, 0.5, 1.0})
+          corners.push_back(slave.current_point(s, t).x);
+        BoundingBox<2> box(corners);
+        const double   length = corners.front().distance(corners.back());
+        box.extend(0.5 * length);
+
+        // Crossings eta of h(eta) = (x_s(eta) - x_v) x n_v = 0.
+        std::vector<std::pair<double, unsigned int>> cuts; // eta, vertex
+        std::set<unsigned int>                       seen;
+        for (const unsigned int m : master.segments_near(box))
+          for (unsigned int end = 0; end < 2; ++end)
+            {
+              const unsigned int v = master.segments()[m].vertices[end];
+              if (!seen.insert(v).second)
+                continue;
+              const Point<2>     xv  = master.current_point(m, end).x;
+              const Tensor<1, 2> nv  = master.vertex_normal(m, end);
+              double             eta = 0.5;
+              for (unsigned int it = 0; it < 20; ++it)
+                {
+                  const CurvePoint p     = slave.current_point(s, eta);
+                  const double     h     = cross(p.x - xv, nv);
+                  const double     slope = cross(p.dx, nv);
+                  if (slope == 0)
+                    break;
+                  const double d = -h / slope;
+                  eta += d;
+                  if (std::abs(d) < 1e-15)
+                    break;
+                }
+              if (std::isfinite(eta) && eta > 1e-10 && eta < 1 - 1e-10 &&
+                  slave.current_point(s, eta).x.distance(xv) < length)
+                cuts.emplace_back(eta, v);
+            }
+        std::sort(cuts.begin(), cuts.end());
+
+        // The pieces, the partner of each (from its midpoint), and the
+        // Gauss points on it.
+        std::vector<std::pair<double, unsigned int>> ends = {
+          {0.0, numbers::invalid_unsigned_int}};
+        ends.insert(ends.end(), cuts.begin(), cuts.end());
+        ends.emplace_back(1.0, numbers::invalid_unsigned_int);
+        for (unsigned int i = 0; i + 1 < ends.size(); ++i)
+          {
+            const double eta_a = ends[i].first, eta_b = ends[i + 1].first;
+            if (eta_b - eta_a < 1e-12)
+              continue;
+            const unsigned int index     = new_points.size();
+            const unsigned int preferred = index < points.size() ?
+                                             points[index].projection.segment :
+                                             numbers::invalid_unsigned_int;
+            const Projection   middle =
+              master.project(slave.current_point(s, 0.5 * (eta_a + eta_b)).x,
+                             preferred);
+            const unsigned int partner = middle.segment;
+            const auto        &m_seg   = master.segments()[partner];
+            std::array<int, 2> piece_end;
+            for (unsigned int side = 0; side < 2; ++side)
+              {
+                const unsigned int v = ends[i + side].second;
+                piece_end[side]      = v == m_seg.vertices[0] ? 0 :
+                                       v == m_seg.vertices[1] ? 1 :
+                                                                -1;
+              }
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                ContactPoint point;
+                point.slave_segment  = s;
+                point.piece          = {{eta_a, eta_b}};
+                point.piece_end      = piece_end;
+                point.xi             = quadrature.point(q)[0];
+                point.w              = quadrature.weight(q);
+                point.eta            = eta_a + (eta_b - eta_a) * point.xi;
+                point.weight         = (eta_b - eta_a) * point.w;
+                const CurvePoint x   = slave.current_point(s, point.eta);
+                point.projection     = master.project_onto(x.x, partner);
+                point.current_length = x.dx.norm() * point.weight;
+                if (geometrically_linear)
+                  point.projection.gap += linear_gap_increment(
+                    solution, s, point.eta, point.projection);
+                new_points.push_back(point);
+              }
+          }
       }
-    }
     points = std::move(new_points);
   }
 
@@ -259,22 +261,21 @@ namespace RingContact
   ContactInterface::sparsity_covers_pairing() const
   {
     for (const auto &point : points)
-    {
-      if (pattern_pairs.count({point.slave_segment, point.projection.segment})
-          == 0)
-        return false;
-      if (point.projection.at_vertex
-          && pattern_pairs.count(
-               {point.slave_segment, point.projection.neighbour})
-               == 0)
-        return false;
-      if (master.smooths_normals() || segment_based)
-        for (const unsigned int b :
-             master.segments()[point.projection.segment].neighbours)
-          if (b != numbers::invalid_unsigned_int
-              && pattern_pairs.count({point.slave_segment, b}) == 0)
-            return false;
-    }
+      {
+        if (pattern_pairs.count(
+              {point.slave_segment, point.projection.segment}) == 0)
+          return false;
+        if (point.projection.at_vertex &&
+            pattern_pairs.count(
+              {point.slave_segment, point.projection.neighbour}) == 0)
+          return false;
+        if (master.smooths_normals() || segment_based)
+          for (const unsigned int b :
+               master.segments()[point.projection.segment].neighbours)
+            if (b != numbers::invalid_unsigned_int &&
+                pattern_pairs.count({point.slave_segment, b}) == 0)
+              return false;
+      }
     return true;
   }
 
@@ -286,31 +287,31 @@ namespace RingContact
     // which a slip may reach next): one block couples all their unknowns.
     pattern_pairs.clear();
     for (const auto &point : points)
-    {
-      pattern_pairs.insert({point.slave_segment, point.projection.segment});
-      for (const unsigned int m : master_neighbours[point.projection.segment])
-        pattern_pairs.insert({point.slave_segment, m});
-    }
+      {
+        pattern_pairs.insert({point.slave_segment, point.projection.segment});
+        for (const unsigned int m : master_neighbours[point.projection.segment])
+          pattern_pairs.insert({point.slave_segment, m});
+      }
     std::map<unsigned int, std::vector<types::global_dof_index>> block;
     for (const auto &[s, m] : pattern_pairs)
-    {
-      auto &dofs = block[s];
-      if (dofs.empty())
-        for (const auto *list : {&slave.segments()[s].dofs_x,
-                                 &slave.segments()[s].dofs_y,
-                                 &slave.segments()[s].multiplier_dofs})
+      {
+        auto &dofs = block[s];
+        if (dofs.empty())
+          for (const auto *list : {&slave.segments()[s].dofs_x,
+                                   &slave.segments()[s].dofs_y,
+                                   &slave.segments()[s].multiplier_dofs})
+            dofs.insert(dofs.end(), list->begin(), list->end());
+        for (const auto *list :
+             {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})
           dofs.insert(dofs.end(), list->begin(), list->end());
-      for (const auto *list :
-           {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})
-        dofs.insert(dofs.end(), list->begin(), list->end());
-    }
+      }
     for (auto &[s, dofs] : block)
-    {
-      std::sort(dofs.begin(), dofs.end());
-      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-      for (const auto row : dofs)
-        dsp.add_entries(row, dofs.begin(), dofs.end(), true);
-    }
+      {
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        for (const auto row : dofs)
+          dsp.add_entries(row, dofs.begin(), dofs.end(), true);
+      }
   }
 
   double
@@ -321,22 +322,21 @@ namespace RingContact
   {
     const auto displacement_at = [&](const ContactSurface &surface,
                                      const unsigned int    segment,
-                                     const double          t)
-    {
+                                     const double          t) {
       std::vector<double> N;
       surface.displacement_basis().evaluate(t, N);
       const auto  &seg = surface.segments()[segment];
       Tensor<1, 2> u;
       for (unsigned int i = 0; i < N.size(); ++i)
-      {
-        u[0] += N[i] * solution(seg.dofs_x[i]);
-        u[1] += N[i] * solution(seg.dofs_y[i]);
-      }
+        {
+          u[0] += N[i] * solution(seg.dofs_x[i]);
+          u[1] += N[i] * solution(seg.dofs_y[i]);
+        }
       return u;
     };
-    const Tensor<1, 2> jump
-      = displacement_at(slave, slave_segment, t)
-        - displacement_at(master, projection.segment, projection.t);
+    const Tensor<1, 2> jump =
+      displacement_at(slave, slave_segment, t) -
+      displacement_at(master, projection.segment, projection.t);
     // The surfaces hold the reference configuration here.
     return jump * master.normal(projection);
   }
@@ -354,15 +354,15 @@ namespace RingContact
     types::global_dof_index dof  = numbers::invalid_dof_index;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       for (unsigned int k = 0; k < slave.multiplier_nodes().size(); ++k)
-      {
-        const double distance = point.distance(
-          slave.reference_point(s, slave.multiplier_nodes()[k]).x);
-        if (distance < best)
         {
-          best = distance;
-          dof  = slave.segments()[s].multiplier_dofs[k];
+          const double distance = point.distance(
+            slave.reference_point(s, slave.multiplier_nodes()[k]).x);
+          if (distance < best)
+            {
+              best = distance;
+              dof  = slave.segments()[s].multiplier_dofs[k];
+            }
         }
-      }
     return dof;
   }
 
@@ -372,8 +372,8 @@ namespace RingContact
     double      sum   = 0;
     const auto &sites = node_sites.at(dof);
     for (const auto &[s, t] : sites)
-      sum += slave.current_point(s, t).dx.norm()
-             / slave.reference_point(s, t).dx.norm();
+      sum += slave.current_point(s, t).dx.norm() /
+             slave.reference_point(s, t).dx.norm();
     return sum / sites.size();
   }
 
@@ -397,26 +397,26 @@ namespace RingContact
     double              error = 0, norm = 0;
     std::vector<double> Phi;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
-    {
-      const auto &segment = slave.segments()[s];
-      for (unsigned int q = 0; q < rule.size(); ++q)
       {
-        const double t = rule.point(q)[0];
-        slave.multiplier_basis().evaluate(t, Phi);
-        double lambda = 0;
-        for (unsigned int k = 0; k < Phi.size(); ++k)
-          lambda += Phi[k] * solution(segment.multiplier_dofs[k]);
-        const double ds = slave.current_point(s, t).dx.norm();
-        const double dS = slave.reference_point(s, t).dx.norm();
-        // Cauchy: lambda over ds; nominal: lambda ds/dS over dS.
-        const double pressure
-          = measure == PressureMeasure::cauchy ? lambda : lambda * ds / dS;
-        const double length
-          = (measure == PressureMeasure::cauchy ? ds : dS) * rule.weight(q);
-        error += (pressure - reference) * (pressure - reference) * length;
-        norm += reference * reference * length;
+        const auto &segment = slave.segments()[s];
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            const double t = rule.point(q)[0];
+            slave.multiplier_basis().evaluate(t, Phi);
+            double lambda = 0;
+            for (unsigned int k = 0; k < Phi.size(); ++k)
+              lambda += Phi[k] * solution(segment.multiplier_dofs[k]);
+            const double ds = slave.current_point(s, t).dx.norm();
+            const double dS = slave.reference_point(s, t).dx.norm();
+            // Cauchy: lambda over ds; nominal: lambda ds/dS over dS.
+            const double pressure =
+              measure == PressureMeasure::cauchy ? lambda : lambda * ds / dS;
+            const double length =
+              (measure == PressureMeasure::cauchy ? ds : dS) * rule.weight(q);
+            error += (pressure - reference) * (pressure - reference) * length;
+            norm += reference * reference * length;
+          }
       }
-    }
     return std::sqrt(error / norm);
   }
 } // namespace RingContact

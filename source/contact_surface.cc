@@ -34,12 +34,12 @@ namespace RingContact
     second.resize(size());
     std::array<double, 3> v;
     for (unsigned int i = 0; i < size(); ++i)
-    {
-      polynomials[i].value(t, 2, v.data());
-      values[i] = v[0];
-      first[i]  = v[1];
-      second[i] = v[2];
-    }
+      {
+        polynomials[i].value(t, 2, v.data());
+        values[i] = v[0];
+        first[i]  = v[1];
+        second[i] = v[2];
+      }
   }
 
   void
@@ -50,12 +50,12 @@ namespace RingContact
   {
     double v[3];
     for (unsigned int i = 0; i < size(); ++i)
-    {
-      polynomials[i].value(t, 2, v);
-      values[i] = v[0];
-      first[i]  = v[1];
-      second[i] = v[2];
-    }
+      {
+        polynomials[i].value(t, 2, v);
+        values[i] = v[0];
+        first[i]  = v[1];
+        second[i] = v[2];
+      }
   }
 
   void
@@ -93,8 +93,8 @@ namespace RingContact
                                  const bool               smooth_normals)
       : smooth_normals(smooth_normals)
   {
-    const std::vector<double> geometry_nodes
-      = gauss_lobatto_nodes(mapping_degree);
+    const std::vector<double> geometry_nodes =
+      gauss_lobatto_nodes(mapping_degree);
     AssertThrow(geometry_nodes.size() <= LagrangeBasis1D::max_size,
                 ExcMessage("mapping degree above 4 is not supported"));
     geometry = LagrangeBasis1D(geometry_nodes);
@@ -102,73 +102,76 @@ namespace RingContact
     std::vector<double> displacement_nodes, multiplier_nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary()
-            && cell->face(f)->boundary_id() == boundary_id)
-        {
-          const auto                           face = cell->face(f);
-          const FiniteElement<2>              &fe   = cell->get_fe();
-          std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-          face->get_dof_indices(face_dofs, cell->active_fe_index());
-
-          SurfaceSegment segment;
-          segment.cell     = cell;
-          segment.face_no  = f;
-          segment.vertices = {{face->vertex_index(0), face->vertex_index(1)}};
-
-          // Sort the face dofs by component, and record where each sits
-          // along the face (its support point in face coordinates).
-          std::vector<double> u_nodes, lambda_nodes;
-          for (unsigned int i = 0; i < face_dofs.size(); ++i)
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == boundary_id)
           {
-            const auto [component, index_in_base]
-              = fe.face_system_to_component_index(i);
-            const auto &base
-              = fe.base_element(fe.component_to_base_index(component).first);
-            const double t = base.unit_face_support_point(index_in_base)[0];
-            if (component == 0)
-            {
-              segment.dofs_x.push_back(face_dofs[i]);
-              u_nodes.push_back(t);
-            }
-            else if (component == 1)
-              segment.dofs_y.push_back(face_dofs[i]);
-            else
-            {
-              segment.multiplier_dofs.push_back(face_dofs[i]);
-              lambda_nodes.push_back(t);
-            }
-          }
-          // All faces of the surface belong to one ring: one element.
-          if (segment_list.empty())
-          {
-            displacement_nodes = u_nodes;
-            multiplier_nodes   = lambda_nodes;
-          }
-          AssertThrow(u_nodes == displacement_nodes
-                        && lambda_nodes == multiplier_nodes,
-                      ExcMessage("contact surface "
-                                 + std::to_string(boundary_id)
-                                 + " mixes finite elements"));
+            const auto                           face = cell->face(f);
+            const FiniteElement<2>              &fe   = cell->get_fe();
+            std::vector<types::global_dof_index> face_dofs(
+              fe.n_dofs_per_face());
+            face->get_dof_indices(face_dofs, cell->active_fe_index());
 
-          // Reference geometry: the mapping's support points, on the
-          // face's manifold.
-          const Point<2> v0 = face->vertex(0), v1 = face->vertex(1);
-          for (const double t : geometry_nodes)
-            segment.reference_nodes.push_back(
-              (t == 0.0) ? v0
-              : (t == 1.0)
-                ? v1
-                : face->get_manifold().get_intermediate_point(v0, v1, t));
+            SurfaceSegment segment;
+            segment.cell     = cell;
+            segment.face_no  = f;
+            segment.vertices = {{face->vertex_index(0), face->vertex_index(1)}};
 
-          // Outward normal: n = (dx_y, -dx_x) / |dx| must point from the
-          // cell center towards the face.
-          segment.orientation = 1.0;
-          segment_list.push_back(segment);
-          const CurvePoint mid = reference_point(segment_list.size() - 1, 0.5);
-          const Tensor<1, 2> rotated({mid.dx[1], -mid.dx[0]});
-          if (rotated * (mid.x - cell->center()) < 0)
-            segment_list.back().orientation = -1.0;
-        }
+            // Sort the face dofs by component, and record where each sits
+            // along the face (its support point in face coordinates).
+            std::vector<double> u_nodes, lambda_nodes;
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+              {
+                const auto [component, index_in_base] =
+                  fe.face_system_to_component_index(i);
+                const auto &base =
+                  fe.base_element(fe.component_to_base_index(component).first);
+                const double t = base.unit_face_support_point(index_in_base)[0];
+                if (component == 0)
+                  {
+                    segment.dofs_x.push_back(face_dofs[i]);
+                    u_nodes.push_back(t);
+                  }
+                else if (component == 1)
+                  segment.dofs_y.push_back(face_dofs[i]);
+                else
+                  {
+                    segment.multiplier_dofs.push_back(face_dofs[i]);
+                    lambda_nodes.push_back(t);
+                  }
+              }
+            // All faces of the surface belong to one ring: one element.
+            if (segment_list.empty())
+              {
+                displacement_nodes = u_nodes;
+                multiplier_nodes   = lambda_nodes;
+              }
+            AssertThrow(u_nodes == displacement_nodes &&
+                          lambda_nodes == multiplier_nodes,
+                        ExcMessage("contact surface " +
+                                   std::to_string(boundary_id) +
+                                   " mixes finite elements"));
+
+            // Reference geometry: the mapping's support points, on the
+            // face's manifold.
+            const Point<2> v0 = face->vertex(0), v1 = face->vertex(1);
+            for (const double t : geometry_nodes)
+              segment.reference_nodes.push_back(
+                (t == 0.0) ?
+                  v0 :
+                (t == 1.0) ?
+                  v1 :
+                  face->get_manifold().get_intermediate_point(v0, v1, t));
+
+            // Outward normal: n = (dx_y, -dx_x) / |dx| must point from the
+            // cell center towards the face.
+            segment.orientation = 1.0;
+            segment_list.push_back(segment);
+            const CurvePoint mid =
+              reference_point(segment_list.size() - 1, 0.5);
+            const Tensor<1, 2> rotated({mid.dx[1], -mid.dx[0]});
+            if (rotated * (mid.x - cell->center()) < 0)
+              segment_list.back().orientation = -1.0;
+          }
     AssertThrow(displacement_nodes.size() <= LagrangeBasis1D::max_size,
                 ExcMessage("displacement degree above 4 is not supported"));
     displacement               = LagrangeBasis1D(displacement_nodes);
@@ -179,16 +182,16 @@ namespace RingContact
         segments_at_vertex[v].push_back(s);
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (unsigned int end = 0; end < 2; ++end)
-      {
-        const unsigned int v = segment_list[s].vertices[end];
-        for (const unsigned int other : segments_at_vertex[v])
-          if (other != s)
-          {
-            segment_list[s].neighbours[end] = other;
-            segment_list[s].neighbour_t[end]
-              = segment_list[other].vertices[0] == v ? 0.0 : 1.0;
-          }
-      }
+        {
+          const unsigned int v = segment_list[s].vertices[end];
+          for (const unsigned int other : segments_at_vertex[v])
+            if (other != s)
+              {
+                segment_list[s].neighbours[end] = other;
+                segment_list[s].neighbour_t[end] =
+                  segment_list[other].vertices[0] == v ? 0.0 : 1.0;
+              }
+        }
   }
 
   CurvePoint
@@ -201,11 +204,11 @@ namespace RingContact
     const auto &nodes = segment_list[segment].reference_nodes;
     CurvePoint  p;
     for (unsigned int j = 0; j < nodes.size(); ++j)
-    {
-      p.x += N[j] * nodes[j];
-      p.dx += dN[j] * nodes[j];
-      p.ddx += ddN[j] * nodes[j];
-    }
+      {
+        p.x += N[j] * nodes[j];
+        p.dx += dN[j] * nodes[j];
+        p.ddx += ddN[j] * nodes[j];
+      }
     return p;
   }
 
@@ -219,11 +222,11 @@ namespace RingContact
     displacement.evaluate(t, N, dN, ddN);
     const auto &u = segment_list[segment].nodal_displacements;
     for (unsigned int i = 0; i < u.size(); ++i)
-    {
-      p.x += N[i] * u[i];
-      p.dx += dN[i] * u[i];
-      p.ddx += ddN[i] * u[i];
-    }
+      {
+        p.x += N[i] * u[i];
+        p.dx += dN[i] * u[i];
+        p.ddx += ddN[i] * u[i];
+      }
     return p;
   }
 
@@ -261,18 +264,18 @@ namespace RingContact
   ContactSurface::normal(const Projection &projection) const
   {
     if (smooth_normals)
-    {
-      const Tensor<1, 2> m
-        = smoothed_normal_direction(projection.segment, projection.t);
-      return m / m.norm();
-    }
+      {
+        const Tensor<1, 2> m =
+          smoothed_normal_direction(projection.segment, projection.t);
+        return m / m.norm();
+      }
     if (!projection.at_vertex)
       return normal(projection.segment,
                     current_point(projection.segment, projection.t));
     // Length-weighted average of the two segments' normals at the vertex.
-    const Tensor<1, 2> n
-      = scaled_normal(projection.segment, projection.t)
-        + scaled_normal(projection.neighbour, projection.neighbour_t);
+    const Tensor<1, 2> n =
+      scaled_normal(projection.segment, projection.t) +
+      scaled_normal(projection.neighbour, projection.neighbour_t);
     return n / n.norm();
   }
 
@@ -283,30 +286,31 @@ namespace RingContact
   {
     // Newton on f(t) = (x - x(t)) x m(t) with m(t) = (1 - t) n0 + t n1,
     // from the orthogonal projection.
-    const Tensor<1, 2> n0    = vertex_normal(segment, 0);
-    const Tensor<1, 2> n1    = vertex_normal(segment, 1);
-    const auto         cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b)
-    { return a[0] * b[1] - a[1] * b[0]; };
+    const Tensor<1, 2> n0 = vertex_normal(segment, 0);
+    const Tensor<1, 2> n1 = vertex_normal(segment, 1);
+    const auto cross      = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
     double t = project_onto_segment(x, segment, 1.0).t;
     for (unsigned int it = 0; it < 30; ++it)
-    {
-      const CurvePoint   p     = current_point(segment, t);
-      const Tensor<1, 2> m     = (1 - t) * n0 + t * n1;
-      const double       f     = cross(x - p.x, m);
-      const double       slope = -cross(p.dx, m) + cross(x - p.x, n1 - n0);
-      const double       dt    = -f / slope;
-      t += dt;
-      if (std::abs(dt) < 1e-15 || !std::isfinite(t))
-        break;
-      t = std::max(-1.0, std::min(2.0, t));
-    }
+      {
+        const CurvePoint   p     = current_point(segment, t);
+        const Tensor<1, 2> m     = (1 - t) * n0 + t * n1;
+        const double       f     = cross(x - p.x, m);
+        const double       slope = -cross(p.dx, m) + cross(x - p.x, n1 - n0);
+        const double       dt    = -f / slope;
+        t += dt;
+        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
+          break;
+        t = std::max(-1.0, std::min(2.0, t));
+      }
     Projection projection;
     projection.segment = segment;
     if (!std::isfinite(t) || t < -extension || t > 1 + extension)
-    {
-      projection.clamped = true;
-      t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
-    }
+      {
+        projection.clamped = true;
+        t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
+      }
     projection.t   = t;
     projection.gap = (x - current_point(segment, t).x) * normal(projection);
     return projection;
@@ -318,21 +322,21 @@ namespace RingContact
     std::vector<Box> boxes;
     boxes.reserve(segment_list.size());
     for (unsigned int s = 0; s < segment_list.size(); ++s)
-    {
-      auto &segment = segment_list[s];
-      segment.nodal_displacements.resize(segment.dofs_x.size());
-      for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
-        segment.nodal_displacements[i] = Tensor<1, 2>(
-          {solution(segment.dofs_x[i]), solution(segment.dofs_y[i])});
-      // Box around the current segment: its end points and a few points
-      // in between, extended by a margin for the curvature.
-      std::vector<Point<2>> points;
-      for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0})
-        points.push_back(current_point(s, t).x);
-      BoundingBox<2> box(points);
-      box.extend(0.1 * points.front().distance(points.back()));
-      boxes.emplace_back(box, s);
-    }
+      {
+        auto &segment = segment_list[s];
+        segment.nodal_displacements.resize(segment.dofs_x.size());
+        for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
+          segment.nodal_displacements[i] = Tensor<1, 2>(
+            {solution(segment.dofs_x[i]), solution(segment.dofs_y[i])});
+        // Box around the current segment: its end points and a few points
+        // in between, extended by a margin for the curvature.
+        std::vector<Point<2>> points;
+        for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0})
+          points.push_back(current_point(s, t).x);
+        BoundingBox<2> box(points);
+        box.extend(0.1 * points.front().distance(points.back()));
+        boxes.emplace_back(box, s);
+      }
     search_tree = pack_rtree(boxes);
 
     // Vertex normals: the length-weighted average of the normals of the
@@ -340,13 +344,13 @@ namespace RingContact
     vertex_normals.resize(segment_list.size());
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (unsigned int end = 0; end < 2; ++end)
-      {
-        Tensor<1, 2>       n         = scaled_normal(s, end);
-        const unsigned int neighbour = segment_list[s].neighbours[end];
-        if (neighbour != numbers::invalid_unsigned_int)
-          n += scaled_normal(neighbour, segment_list[s].neighbour_t[end]);
-        vertex_normals[s][end] = n / n.norm();
-      }
+        {
+          Tensor<1, 2>       n         = scaled_normal(s, end);
+          const unsigned int neighbour = segment_list[s].neighbours[end];
+          if (neighbour != numbers::invalid_unsigned_int)
+            n += scaled_normal(neighbour, segment_list[s].neighbour_t[end]);
+          vertex_normals[s][end] = n / n.norm();
+        }
   }
 
   Projection
@@ -359,23 +363,23 @@ namespace RingContact
     const Point<2> b = current_point(segment, 1).x;
     double         t = ((x - a) * (b - a)) / (b - a).norm_square();
     for (unsigned int it = 0; it < 30; ++it)
-    {
-      const CurvePoint p     = current_point(segment, t);
-      const double     r     = (x - p.x) * p.dx;
-      const double     slope = -p.dx * p.dx + (x - p.x) * p.ddx;
-      const double     dt    = -r / slope;
-      t += dt;
-      if (std::abs(dt) < 1e-15 || !std::isfinite(t))
-        break;
-      t = std::max(-1.0, std::min(2.0, t));
-    }
+      {
+        const CurvePoint p     = current_point(segment, t);
+        const double     r     = (x - p.x) * p.dx;
+        const double     slope = -p.dx * p.dx + (x - p.x) * p.ddx;
+        const double     dt    = -r / slope;
+        t += dt;
+        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
+          break;
+        t = std::max(-1.0, std::min(2.0, t));
+      }
     Projection projection;
     projection.segment = segment;
     if (!std::isfinite(t) || t < -extension || t > 1 + extension)
-    {
-      projection.clamped = true;
-      t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
-    }
+      {
+        projection.clamped = true;
+        t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
+      }
     projection.t       = t;
     const CurvePoint p = current_point(segment, t);
     projection.gap     = (x - p.x) * normal(segment, p);
@@ -401,32 +405,32 @@ namespace RingContact
     double           best_distance = std::numeric_limits<double>::max();
     double           end_distance  = std::numeric_limits<double>::max();
     for (const auto &candidate : candidates)
-    {
-      const Projection p
-        = smooth_normals
-            ? project_along_smoothed_normal(x, candidate.second, tolerance)
-            : project_onto_segment(x, candidate.second, tolerance);
-      const double distance = x.distance(current_point(p.segment, p.t).x);
-      if (p.clamped)
       {
-        if (distance < end_distance)
-        {
-          closest_end  = p;
-          end_distance = distance;
-        }
-        continue;
+        const Projection p =
+          smooth_normals ?
+            project_along_smoothed_normal(x, candidate.second, tolerance) :
+            project_onto_segment(x, candidate.second, tolerance);
+        const double distance = x.distance(current_point(p.segment, p.t).x);
+        if (p.clamped)
+          {
+            if (distance < end_distance)
+              {
+                closest_end  = p;
+                end_distance = distance;
+              }
+            continue;
+          }
+        if (p.segment == preferred)
+          {
+            best          = p;
+            best_distance = -1; // kept whatever the others
+          }
+        else if (distance < best_distance)
+          {
+            best          = p;
+            best_distance = distance;
+          }
       }
-      if (p.segment == preferred)
-      {
-        best          = p;
-        best_distance = -1; // kept whatever the others
-      }
-      else if (distance < best_distance)
-      {
-        best          = p;
-        best_distance = distance;
-      }
-    }
     if (best.segment == numbers::invalid_unsigned_int)
       best = closest_end;
 
@@ -436,29 +440,30 @@ namespace RingContact
     // depend on which of the two segments the search met first.
     constexpr double at_vertex = 1e-6;
     if (smooth_normals)
-    {
-      // The smoothed normal is continuous: no special case at vertices.
-      // With no projection at all (far from the surface) the closest end
-      // is used with its vertex normal, and t fixed.
-      if (best.clamped)
-        best.gap = (x - current_point(best.segment, best.t).x) * normal(best);
-      return best;
-    }
-    if (best.clamped || std::abs(best.t) < at_vertex
-        || std::abs(1 - best.t) < at_vertex)
-    {
-      const unsigned int end = best.t < 0.5 ? 0 : 1;
-      const unsigned int v   = segment_list[best.segment].vertices[end];
-      for (const unsigned int other : segments_at_vertex.at(v))
-        if (other != best.segment)
-        {
-          best.at_vertex   = true;
-          best.t           = end;
-          best.neighbour   = other;
-          best.neighbour_t = segment_list[other].vertices[0] == v ? 0 : 1;
+      {
+        // The smoothed normal is continuous: no special case at vertices.
+        // With no projection at all (far from the surface) the closest end
+        // is used with its vertex normal, and t fixed.
+        if (best.clamped)
           best.gap = (x - current_point(best.segment, best.t).x) * normal(best);
-        }
-    }
+        return best;
+      }
+    if (best.clamped || std::abs(best.t) < at_vertex ||
+        std::abs(1 - best.t) < at_vertex)
+      {
+        const unsigned int end = best.t < 0.5 ? 0 : 1;
+        const unsigned int v   = segment_list[best.segment].vertices[end];
+        for (const unsigned int other : segments_at_vertex.at(v))
+          if (other != best.segment)
+            {
+              best.at_vertex   = true;
+              best.t           = end;
+              best.neighbour   = other;
+              best.neighbour_t = segment_list[other].vertices[0] == v ? 0 : 1;
+              best.gap =
+                (x - current_point(best.segment, best.t).x) * normal(best);
+            }
+      }
     return best;
   }
 
@@ -467,9 +472,9 @@ namespace RingContact
                                const unsigned int segment) const
   {
     // No clamping: an extension of 100 % of the segment is accepted.
-    Projection p = smooth_normals
-                     ? project_along_smoothed_normal(x, segment, 1.0)
-                     : project_onto_segment(x, segment, 1.0);
+    Projection p = smooth_normals ?
+                     project_along_smoothed_normal(x, segment, 1.0) :
+                     project_onto_segment(x, segment, 1.0);
     p.gap        = (x - current_point(segment, p.t).x) * normal(p);
     return p;
   }
@@ -503,30 +508,30 @@ namespace RingContact
                      const unsigned int       slave_degree)
   {
     switch (scheme.type)
-    {
-      case ContactIntegration::nodal:
-        // At the slave nodes, with the weights that integrate the
-        // element's polynomials: trapezoid for linear, Simpson for
-        // quadratic segments.
-        return QGaussLobatto<1>(slave_degree + 1);
-      case ContactIntegration::gauss:
-      case ContactIntegration::segment_based: // the rule on each piece
-        return QGauss<1>(scheme.n_points);
-      case ContactIntegration::simpson:
-        return QIterated<1>(QSimpson<1>(), scheme.n_points);
-      case ContactIntegration::newton_cotes:
-        switch (scheme.n_points)
-        {
-          case 1:
-            return QTrapezoid<1>();
-          case 2:
-            return QSimpson<1>();
-          case 4:
-            return QMilne<1>();
-          case 6:
-            return QWeddle<1>();
-        }
-    }
+      {
+        case ContactIntegration::nodal:
+          // At the slave nodes, with the weights that integrate the
+          // element's polynomials: trapezoid for linear, Simpson for
+          // quadratic segments.
+          return QGaussLobatto<1>(slave_degree + 1);
+        case ContactIntegration::gauss:
+        case ContactIntegration::segment_based: // the rule on each piece
+          return QGauss<1>(scheme.n_points);
+        case ContactIntegration::simpson:
+          return QIterated<1>(QSimpson<1>(), scheme.n_points);
+        case ContactIntegration::newton_cotes:
+          switch (scheme.n_points)
+            {
+              case 1:
+                return QTrapezoid<1>();
+              case 2:
+                return QSimpson<1>();
+              case 4:
+                return QMilne<1>();
+              case 6:
+                return QWeddle<1>();
+            }
+      }
     AssertThrow(false, ExcMessage("unknown contact integration scheme"));
     return Quadrature<1>();
   }

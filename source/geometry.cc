@@ -29,27 +29,29 @@ namespace RingContact
       const auto add_ring = [&](const double       r_in,
                                 const double       r_out,
                                 const unsigned int n_radial,
-                                const unsigned int material_id)
-      {
+                                const unsigned int material_id) {
         const unsigned int offset = vertices.size();
         for (unsigned int j = 0; j <= n_radial; ++j)
           for (unsigned int i = 0; i < n_around; ++i)
-          {
-            const double r   = r_in + (r_out - r_in) * j / n_radial;
-            const double phi = 2 * numbers::PI * i / n_around;
-            vertices.emplace_back(r * std::cos(phi), r * std::sin(phi));
-          }
-        const auto v = [&](const unsigned int i, const unsigned int j)
-        { return offset + j * n_around + (i % n_around); };
+            {
+              const double r   = r_in + (r_out - r_in) * j / n_radial;
+              const double phi = 2 * numbers::PI * i / n_around;
+              vertices.emplace_back(r * std::cos(phi), r * std::sin(phi));
+            }
+        const auto v = [&](const unsigned int i, const unsigned int j) {
+          return offset + j * n_around + (i % n_around);
+        };
         for (unsigned int j = 0; j < n_radial; ++j)
           for (unsigned int i = 0; i < n_around; ++i)
-          {
-            CellData<2> cell;
-            cell.vertices
-              = {v(i, j), v(i, j + 1), v(i + 1, j), v(i + 1, j + 1)};
-            cell.material_id = material_id;
-            cells.push_back(cell);
-          }
+            {
+              CellData<2> cell;
+              cell.vertices    = {v(i, j),
+                                  v(i, j + 1),
+                                  v(i + 1, j),
+                                  v(i + 1, j + 1)};
+              cell.material_id = material_id;
+              cells.push_back(cell);
+            }
       };
       add_ring(mesh.interface_radius,
                mesh.outer_radius,
@@ -67,21 +69,21 @@ namespace RingContact
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
-          {
-            const double r     = face->center().norm();
-            const bool   outer = cell->material_id() == Ids::outer_ring;
-            // face->center() of a straight face lies inside the circle.
-            const double r_face
-              = 0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
-            (void)r;
-            if (std::abs(r_face - mesh.outer_radius) < tol)
-              face->set_boundary_id(Ids::outer_boundary);
-            else if (std::abs(r_face - mesh.inner_radius) < tol)
-              face->set_boundary_id(Ids::inner_boundary);
-            else
-              face->set_boundary_id(outer ? Ids::outer_ring_contact
-                                          : Ids::inner_ring_contact);
-          }
+            {
+              const double r     = face->center().norm();
+              const bool   outer = cell->material_id() == Ids::outer_ring;
+              // face->center() of a straight face lies inside the circle.
+              const double r_face =
+                0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
+              (void)r;
+              if (std::abs(r_face - mesh.outer_radius) < tol)
+                face->set_boundary_id(Ids::outer_boundary);
+              else if (std::abs(r_face - mesh.inner_radius) < tol)
+                face->set_boundary_id(Ids::inner_boundary);
+              else
+                face->set_boundary_id(outer ? Ids::outer_ring_contact :
+                                              Ids::inner_ring_contact);
+            }
     }
 
     void
@@ -94,23 +96,25 @@ namespace RingContact
       std::vector<CellData<2>> cells;
       const auto               add_block = [&](const double       y0,
                                  const unsigned int nx,
-                                 const unsigned int material_id)
-      {
+                                 const unsigned int material_id) {
         const unsigned int offset = vertices.size(), ny = 2;
         for (unsigned int j = 0; j <= ny; ++j)
           for (unsigned int i = 0; i <= nx; ++i)
             vertices.emplace_back(1.0 * i / nx, y0 + 0.5 * j / ny);
         for (unsigned int j = 0; j < ny; ++j)
           for (unsigned int i = 0; i < nx; ++i)
-          {
-            CellData<2> cell;
-            const auto  v = [&](const unsigned int a, const unsigned int b)
-            { return offset + b * (nx + 1) + a; };
-            cell.vertices
-              = {v(i, j), v(i + 1, j), v(i, j + 1), v(i + 1, j + 1)};
-            cell.material_id = material_id;
-            cells.push_back(cell);
-          }
+            {
+              CellData<2> cell;
+              const auto  v = [&](const unsigned int a, const unsigned int b) {
+                return offset + b * (nx + 1) + a;
+              };
+              cell.vertices    = {v(i, j),
+                                  v(i + 1, j),
+                                  v(i, j + 1),
+                                  v(i + 1, j + 1)};
+              cell.material_id = material_id;
+              cells.push_back(cell);
+            }
       };
       add_block(-0.5, mesh.patch_elements_lower, Ids::outer_ring);
       add_block(0.0, mesh.patch_elements_upper, Ids::inner_ring);
@@ -118,19 +122,19 @@ namespace RingContact
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
-          {
-            const double y     = face->center()[1];
-            const bool   lower = cell->material_id() == Ids::outer_ring;
-            if (std::abs(y + 0.5) < 1e-12)
-              face->set_boundary_id(Ids::outer_boundary);
-            else if (std::abs(y - 0.5) < 1e-12)
-              face->set_boundary_id(Ids::inner_boundary);
-            else if (std::abs(y) < 1e-12)
-              face->set_boundary_id(lower ? Ids::outer_ring_contact
-                                          : Ids::inner_ring_contact);
-            else
-              face->set_boundary_id(0); // free sides
-          }
+            {
+              const double y     = face->center()[1];
+              const bool   lower = cell->material_id() == Ids::outer_ring;
+              if (std::abs(y + 0.5) < 1e-12)
+                face->set_boundary_id(Ids::outer_boundary);
+              else if (std::abs(y - 0.5) < 1e-12)
+                face->set_boundary_id(Ids::inner_boundary);
+              else if (std::abs(y) < 1e-12)
+                face->set_boundary_id(lower ? Ids::outer_ring_contact :
+                                              Ids::inner_ring_contact);
+              else
+                face->set_boundary_id(0); // free sides
+            }
     }
 
     namespace
@@ -146,10 +150,9 @@ namespace RingContact
                         std::istream      &in,
                         const std::string &filename)
       {
-        const auto fail = [&](const std::string &what)
-        {
-          throw std::runtime_error("cannot read mesh file '" + filename
-                                   + "': " + what);
+        const auto fail = [&](const std::string &what) {
+          throw std::runtime_error("cannot read mesh file '" + filename +
+                                   "': " + what);
         };
         std::string line;
         bool        format_1 = false;
@@ -162,13 +165,13 @@ namespace RingContact
         in >> n_nodes;
         std::map<long, Point<2>> nodes;
         for (std::size_t i = 0; i < n_nodes; ++i)
-        {
-          long   id;
-          double x, y, z;
-          if (!(in >> id >> x >> y >> z))
-            fail("bad node line");
-          nodes[id] = Point<2>(x, y);
-        }
+          {
+            long   id;
+            double x, y, z;
+            if (!(in >> id >> x >> y >> z))
+              fail("bad node line");
+            nodes[id] = Point<2>(x, y);
+          }
         while (std::getline(in, line) && line != "$ELM" && line != "$Elements")
           ;
         std::size_t n_elements = 0;
@@ -176,8 +179,7 @@ namespace RingContact
 
         std::vector<Point<2>>    vertices;
         std::map<long, unsigned> vertex_of_node;
-        const auto               vertex = [&](const long node)
-        {
+        const auto               vertex = [&](const long node) {
           const auto it = vertex_of_node.find(node);
           if (it != vertex_of_node.end())
             return it->second;
@@ -191,60 +193,60 @@ namespace RingContact
         SubCellData                                lines;
         std::vector<std::pair<Point<2>, Point<2>>> mid_side; // mid, end
         for (std::size_t e = 0; e < n_elements; ++e)
-        {
-          long id, type, physical = 0, tag;
-          in >> id >> type;
-          std::size_t n_element_nodes = 0;
-          if (format_1)
-            in >> physical >> tag >> n_element_nodes;
-          else
           {
-            long n_tags;
-            in >> n_tags;
-            for (long t = 0; t < n_tags; ++t)
-            {
-              in >> tag;
-              if (t == 0)
-                physical = tag;
-            }
-            n_element_nodes = type == 1    ? 2
-                              : type == 8  ? 3
-                              : type == 3  ? 4
-                              : type == 10 ? 9
-                              : type == 15 ? 1
-                                           : 0;
+            long id, type, physical = 0, tag;
+            in >> id >> type;
+            std::size_t n_element_nodes = 0;
+            if (format_1)
+              in >> physical >> tag >> n_element_nodes;
+            else
+              {
+                long n_tags;
+                in >> n_tags;
+                for (long t = 0; t < n_tags; ++t)
+                  {
+                    in >> tag;
+                    if (t == 0)
+                      physical = tag;
+                  }
+                n_element_nodes = type == 1  ? 2 :
+                                  type == 8  ? 3 :
+                                  type == 3  ? 4 :
+                                  type == 10 ? 9 :
+                                  type == 15 ? 1 :
+                                               0;
+              }
+            std::vector<long> element_nodes(n_element_nodes);
+            for (auto &n : element_nodes)
+              in >> n;
+            if (!in)
+              fail("bad element line");
+            if (type == 3 || type == 10)
+              {
+                // gmsh: corners counterclockwise; deal.II: lexicographic.
+                CellData<2> cell;
+                cell.vertices    = {vertex(element_nodes[0]),
+                                    vertex(element_nodes[1]),
+                                    vertex(element_nodes[3]),
+                                    vertex(element_nodes[2])};
+                cell.material_id = physical;
+                cells.push_back(cell);
+              }
+            else if (type == 1 || type == 8)
+              {
+                CellData<1> segment;
+                segment.vertices    = {vertex(element_nodes[0]),
+                                       vertex(element_nodes[1])};
+                segment.boundary_id = physical;
+                lines.boundary_lines.push_back(segment);
+                if (type == 8)
+                  mid_side.emplace_back(nodes[element_nodes[2]],
+                                        nodes[element_nodes[0]]);
+              }
+            else if (type != 15)
+              fail("element type " + std::to_string(type) +
+                   " (only quadrilaterals and lines)");
           }
-          std::vector<long> element_nodes(n_element_nodes);
-          for (auto &n : element_nodes)
-            in >> n;
-          if (!in)
-            fail("bad element line");
-          if (type == 3 || type == 10)
-          {
-            // gmsh: corners counterclockwise; deal.II: lexicographic.
-            CellData<2> cell;
-            cell.vertices    = {vertex(element_nodes[0]),
-                                vertex(element_nodes[1]),
-                                vertex(element_nodes[3]),
-                                vertex(element_nodes[2])};
-            cell.material_id = physical;
-            cells.push_back(cell);
-          }
-          else if (type == 1 || type == 8)
-          {
-            CellData<1> segment;
-            segment.vertices
-              = {vertex(element_nodes[0]), vertex(element_nodes[1])};
-            segment.boundary_id = physical;
-            lines.boundary_lines.push_back(segment);
-            if (type == 8)
-              mid_side.emplace_back(nodes[element_nodes[2]],
-                                    nodes[element_nodes[0]]);
-          }
-          else if (type != 15)
-            fail("element type " + std::to_string(type)
-                 + " (only quadrilaterals and lines)");
-        }
         if (cells.empty())
           fail("no quadrilaterals");
         // The mid-side nodes of the boundary lines lie on the circles, as
@@ -276,55 +278,55 @@ namespace RingContact
         std::string        line;
         bool               in_elements = false;
         while (std::getline(lines, line))
-        {
-          if (line == "$ELM" || line == "$Elements")
           {
-            in_elements = true;
-            std::getline(lines, line);
-            continue;
-          }
-          if (line == "$ENDELM" || line == "$EndElements")
-            break;
-          if (in_elements)
-          {
-            std::istringstream fields(line);
-            long               id, type;
-            fields >> id >> type;
-            if (type == 8 || type == 10)
-            {
-              quadratic = true;
+            if (line == "$ELM" || line == "$Elements")
+              {
+                in_elements = true;
+                std::getline(lines, line);
+                continue;
+              }
+            if (line == "$ENDELM" || line == "$EndElements")
               break;
-            }
+            if (in_elements)
+              {
+                std::istringstream fields(line);
+                long               id, type;
+                fields >> id >> type;
+                if (type == 8 || type == 10)
+                  {
+                    quadratic = true;
+                    break;
+                  }
+              }
           }
-        }
       }
       std::istringstream stream(text);
       if (quadratic)
-      {
-        read_gmsh_by_hand(triangulation, stream, filename);
-        return;
-      }
+        {
+          read_gmsh_by_hand(triangulation, stream, filename);
+          return;
+        }
       GridIn<2> grid_in(triangulation);
       try
-      {
-        grid_in.read_msh(stream);
-      }
+        {
+          grid_in.read_msh(stream);
+        }
       catch (const std::exception &e)
-      {
-        throw std::runtime_error("cannot read mesh file '" + filename
-                                 + "' as a gmsh mesh (format 1 or 2.2)");
-      }
+        {
+          throw std::runtime_error("cannot read mesh file '" + filename +
+                                   "' as a gmsh mesh (format 1 or 2.2)");
+        }
     }
 
     void
     create_mesh(Triangulation<2> &triangulation, const Parameters &parameters)
     {
       if (parameters.mesh.source == MeshSource::patch_test)
-      {
-        make_blocks(triangulation, parameters.mesh);
-        triangulation.refine_global(parameters.mesh.global_refinements);
-        return;
-      }
+        {
+          make_blocks(triangulation, parameters.mesh);
+          triangulation.refine_global(parameters.mesh.global_refinements);
+          return;
+        }
       if (parameters.mesh.source == MeshSource::generated)
         make_rings(triangulation, parameters.mesh);
       else
@@ -344,66 +346,64 @@ namespace RingContact
     check_rings(const Triangulation<2> &triangulation,
                 const Parameters       &parameters)
     {
-      const std::string name = parameters.mesh.source == MeshSource::generated
-                                 ? std::string("the generated mesh")
-                                 : "mesh '" + parameters.mesh.mesh_file + "'";
+      const std::string name = parameters.mesh.source == MeshSource::generated ?
+                                 std::string("the generated mesh") :
+                                 "mesh '" + parameters.mesh.mesh_file + "'";
 
       std::set<types::material_id>                               materials;
       std::map<types::boundary_id, std::set<types::material_id>> rings_of;
       std::map<types::boundary_id, double> worst_radius_error;
       for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        materials.insert(cell->material_id());
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-          {
-            const auto id = face->boundary_id();
-            rings_of[id].insert(cell->material_id());
-            double expected = parameters.mesh.interface_radius;
-            if (id == Ids::outer_boundary)
-              expected = parameters.mesh.outer_radius;
-            else if (id == Ids::inner_boundary)
-              expected = parameters.mesh.inner_radius;
-            for (unsigned int v = 0; v < 2; ++v)
-              worst_radius_error[id]
-                = std::max(worst_radius_error[id],
-                           std::abs(face->vertex(v).norm() - expected));
-          }
-      }
+        {
+          materials.insert(cell->material_id());
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const auto id = face->boundary_id();
+                rings_of[id].insert(cell->material_id());
+                double expected = parameters.mesh.interface_radius;
+                if (id == Ids::outer_boundary)
+                  expected = parameters.mesh.outer_radius;
+                else if (id == Ids::inner_boundary)
+                  expected = parameters.mesh.inner_radius;
+                for (unsigned int v = 0; v < 2; ++v)
+                  worst_radius_error[id] =
+                    std::max(worst_radius_error[id],
+                             std::abs(face->vertex(v).norm() - expected));
+              }
+        }
       for (const unsigned int m : {Ids::outer_ring, Ids::inner_ring})
         if (materials.count(m) == 0)
-          throw std::runtime_error(name + " has no cells with material id "
-                                   + std::to_string(m)
-                                   + " (100: outer ring, 101: inner ring)");
+          throw std::runtime_error(name + " has no cells with material id " +
+                                   std::to_string(m) +
+                                   " (100: outer ring, 101: inner ring)");
 
-      const auto require_boundary
-        = [&](const unsigned int id, const std::string &role)
-      {
+      const auto require_boundary = [&](const unsigned int id,
+                                        const std::string &role) {
         if (rings_of.count(id) == 0)
-          throw std::runtime_error(name + " has no boundary with id "
-                                   + std::to_string(id) + " (the " + role
-                                   + ")");
+          throw std::runtime_error(name + " has no boundary with id " +
+                                   std::to_string(id) + " (the " + role + ")");
         if (rings_of.at(id).size() != 1)
-          throw std::runtime_error(name + ": boundary " + std::to_string(id)
-                                   + " (the " + role
-                                   + ") touches both rings; it must belong to "
-                                     "one");
+          throw std::runtime_error(name + ": boundary " + std::to_string(id) +
+                                   " (the " + role +
+                                   ") touches both rings; it must belong to "
+                                   "one");
         if (worst_radius_error.at(id) > 1e-6 * parameters.mesh.outer_radius)
           throw std::runtime_error(
-            name + ": boundary " + std::to_string(id) + " (the " + role
-            + ") is not on its circle; its vertices are up to "
-            + std::to_string(worst_radius_error.at(id))
-            + " m off (check the radii in subsection 'Mesh')");
+            name + ": boundary " + std::to_string(id) + " (the " + role +
+            ") is not on its circle; its vertices are up to " +
+            std::to_string(worst_radius_error.at(id)) +
+            " m off (check the radii in subsection 'Mesh')");
       };
       require_boundary(Ids::outer_boundary, "outer boundary r = R1");
       require_boundary(Ids::inner_boundary, "inner boundary r = R3");
       require_boundary(parameters.contact.slave_boundary_id, "slave surface");
       require_boundary(parameters.contact.master_boundary_id, "master surface");
-      if (*rings_of.at(parameters.contact.slave_boundary_id).begin()
-          == *rings_of.at(parameters.contact.master_boundary_id).begin())
-        throw std::runtime_error(name
-                                 + ": the slave and master surfaces belong to "
-                                   "the same ring");
+      if (*rings_of.at(parameters.contact.slave_boundary_id).begin() ==
+          *rings_of.at(parameters.contact.master_boundary_id).begin())
+        throw std::runtime_error(name +
+                                 ": the slave and master surfaces belong to "
+                                 "the same ring");
     }
   } // namespace Geometry
 } // namespace RingContact

@@ -7,15 +7,14 @@ namespace RingContact
 {
   LoadProgram::LoadProgram(const LoadParameters &parameters)
       : parameters(parameters)
-  {
-  }
+  {}
 
   unsigned int
   LoadProgram::n_steps() const
   {
-    return parameters.program == LoadProgramType::ramp
-             ? parameters.ramp_steps
-             : parameters.rotation_steps;
+    return parameters.program == LoadProgramType::ramp ?
+             parameters.ramp_steps :
+             parameters.rotation_steps;
   }
 
   double
@@ -31,15 +30,15 @@ namespace RingContact
   LoadProgram::state(const double t) const
   {
     if (parameters.program == LoadProgramType::ramp)
-    {
-      // p(t) = p0 10^(t - 1.1); the first step starts from zero load, so
-      // within it (0 < t < dt, only reached when it is cut) p grows
-      // linearly to p(dt).
-      const double dt = parameters.time_step;
-      const double p
-        = parameters.reference_pressure * std::pow(10.0, std::max(t, dt) - 1.1);
-      return {t < dt ? p * t / dt : p, 0.0};
-    }
+      {
+        // p(t) = p0 10^(t - 1.1); the first step starts from zero load, so
+        // within it (0 < t < dt, only reached when it is cut) p grows
+        // linearly to p(dt).
+        const double dt = parameters.time_step;
+        const double p =
+          parameters.reference_pressure * std::pow(10.0, std::max(t, dt) - 1.1);
+        return {t < dt ? p * t / dt : p, 0.0};
+      }
     // Rotation: the full pressure from the first step on (reached linearly
     // within the first step if that step has to be cut), s = s_end t.
     const double t1 = time(1);

@@ -29,51 +29,51 @@ main(int argc, char **argv)
                             "       ring_contact --print-parameters   (all "
                             "entries, defaults, docs)\n";
   if (argc != 2)
-  {
-    std::cerr << usage;
-    return 2;
-  }
+    {
+      std::cerr << usage;
+      return 2;
+    }
   const std::string argument = argv[1];
   if (argument == "--help" || argument == "-h")
-  {
-    std::cout << usage;
-    return 0;
-  }
+    {
+      std::cout << usage;
+      return 0;
+    }
   if (argument == "--print-parameters")
-  {
-    Parameters::print_reference(std::cout, true);
-    return 0;
-  }
+    {
+      Parameters::print_reference(std::cout, true);
+      return 0;
+    }
 
   try
-  {
-    Parameters parameters;
-    parameters.read(argument);
-    std::filesystem::create_directories(parameters.output.directory);
-
-    std::vector<HistoryRow> history;
-    std::vector<Verdict>    verdicts;
-    bool                    solved = true;
-    for (const auto &scheme : parameters.contact.schemes)
     {
-      RingContactProblem problem(parameters, scheme, std::cout);
-      solved = problem.run() && solved;
-      history.insert(history.end(),
-                     problem.history().begin(),
-                     problem.history().end());
-      const auto v = evaluate_checks(parameters.checks, problem.history());
-      verdicts.insert(verdicts.end(), v.begin(), v.end());
+      Parameters parameters;
+      parameters.read(argument);
+      std::filesystem::create_directories(parameters.output.directory);
+
+      std::vector<HistoryRow> history;
+      std::vector<Verdict>    verdicts;
+      bool                    solved = true;
+      for (const auto &scheme : parameters.contact.schemes)
+        {
+          RingContactProblem problem(parameters, scheme, std::cout);
+          solved = problem.run() && solved;
+          history.insert(history.end(),
+                         problem.history().begin(),
+                         problem.history().end());
+          const auto v = evaluate_checks(parameters.checks, problem.history());
+          verdicts.insert(verdicts.end(), v.begin(), v.end());
+        }
+      if (parameters.output.write_history)
+        write_history(parameters.output.directory + "/history.csv", history);
+      const bool pass = print_verdicts(std::cout, verdicts);
+      if (!solved)
+        std::cout << "A load step could not be solved (see above).\n";
+      return (pass && solved) ? 0 : 1;
     }
-    if (parameters.output.write_history)
-      write_history(parameters.output.directory + "/history.csv", history);
-    const bool pass = print_verdicts(std::cout, verdicts);
-    if (!solved)
-      std::cout << "A load step could not be solved (see above).\n";
-    return (pass && solved) ? 0 : 1;
-  }
   catch (const std::exception &e)
-  {
-    std::cerr << "ring_contact: error: " << one_line_message(e) << std::endl;
-    return 1;
-  }
+    {
+      std::cerr << "ring_contact: error: " << one_line_message(e) << std::endl;
+      return 1;
+    }
 }

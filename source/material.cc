@@ -29,24 +29,23 @@ namespace RingContact
       , poissons_ratio(nu)
       , plane(plane)
       , kinematics(kinematics)
-      , lambda(plane == PlaneAssumption::plane_strain
-                 ? lame_lambda(E, nu)
-                 : 2 * lame_lambda(E, nu) * lame_mu(E, nu)
-                     / (lame_lambda(E, nu) + 2 * lame_mu(E, nu)))
+      , lambda(plane == PlaneAssumption::plane_strain ?
+                 lame_lambda(E, nu) :
+                 2 * lame_lambda(E, nu) * lame_mu(E, nu) /
+                   (lame_lambda(E, nu) + 2 * lame_mu(E, nu)))
       , mu(lame_mu(E, nu))
       , lambda_3d(lame_lambda(E, nu))
-  {
-  }
+  {}
 
   Tensor<2, 2>
   Material::stress(const Tensor<2, 2> &H) const
   {
     const Tensor<2, 2> I = unit_symmetric_tensor<2>();
     if (kinematics == Kinematics::small_strain)
-    {
-      const Tensor<2, 2> eps = 0.5 * (H + transpose(H));
-      return lambda * trace(eps) * I + 2 * mu * eps;
-    }
+      {
+        const Tensor<2, 2> eps = 0.5 * (H + transpose(H));
+        return lambda * trace(eps) * I + 2 * mu * eps;
+      }
     const Tensor<2, 2> F = I + H;
     const Tensor<2, 2> E = 0.5 * (transpose(F) * F - I);
     const Tensor<2, 2> S = lambda * trace(E) * I + 2 * mu * E;
@@ -60,17 +59,17 @@ namespace RingContact
   {
     const Tensor<2, 2> I = unit_symmetric_tensor<2>();
     if (kinematics == Kinematics::small_strain)
-    {
-      const Tensor<2, 2> eps = 0.5 * (H + transpose(H));
-      P                      = lambda * trace(eps) * I + 2 * mu * eps;
-      for (unsigned int i = 0; i < 2; ++i)
-        for (unsigned int J = 0; J < 2; ++J)
-          for (unsigned int k = 0; k < 2; ++k)
-            for (unsigned int L = 0; L < 2; ++L)
-              A[i][J][k][L] = lambda * I[i][J] * I[k][L]
-                              + mu * (I[i][k] * I[J][L] + I[i][L] * I[J][k]);
-      return;
-    }
+      {
+        const Tensor<2, 2> eps = 0.5 * (H + transpose(H));
+        P                      = lambda * trace(eps) * I + 2 * mu * eps;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int J = 0; J < 2; ++J)
+            for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int L = 0; L < 2; ++L)
+                A[i][J][k][L] = lambda * I[i][J] * I[k][L] +
+                                mu * (I[i][k] * I[J][L] + I[i][L] * I[J][k]);
+        return;
+      }
     // P_iJ = F_iM S_MJ, S = lambda tr(E) I + 2 mu E. Differentiating,
     // A_iJkL = delta_ik S_LJ + F_iM C_MJLQ F_kQ
     //        = delta_ik S_LJ + lambda F_iJ F_kL + mu F_iL F_kJ
@@ -84,15 +83,15 @@ namespace RingContact
       for (unsigned int J = 0; J < 2; ++J)
         for (unsigned int k = 0; k < 2; ++k)
           for (unsigned int L = 0; L < 2; ++L)
-            A[i][J][k][L] = I[i][k] * S[L][J] + lambda * F[i][J] * F[k][L]
-                            + mu * F[i][L] * F[k][J] + mu * FFt[i][k] * I[J][L];
+            A[i][J][k][L] = I[i][k] * S[L][J] + lambda * F[i][J] * F[k][L] +
+                            mu * F[i][L] * F[k][J] + mu * FFt[i][k] * I[J][L];
   }
 
   double
   Material::thickness_stretch(const Tensor<2, 2> &H) const
   {
-    if (kinematics == Kinematics::small_strain
-        || plane == PlaneAssumption::plane_strain)
+    if (kinematics == Kinematics::small_strain ||
+        plane == PlaneAssumption::plane_strain)
       return 1.0;
     // S33 = 0: E33 = -lambda/(lambda + 2 mu) (E11 + E22), F33^2 = 1 + 2 E33.
     const Tensor<2, 2> I   = unit_symmetric_tensor<2>();

@@ -28,8 +28,8 @@ namespace RingContact
             const std::string &what)
     {
       if (!ok)
-        throw std::runtime_error("parameter '" + entry + "' in subsection '"
-                                 + subsection + "' " + what);
+        throw std::runtime_error("parameter '" + entry + "' in subsection '" +
+                                 subsection + "' " + what);
     }
   } // namespace
 
@@ -41,18 +41,18 @@ namespace RingContact
   IntegrationScheme::name() const
   {
     switch (type)
-    {
-      case ContactIntegration::nodal:
-        return "nodal";
-      case ContactIntegration::gauss:
-        return "Gauss " + std::to_string(n_points);
-      case ContactIntegration::simpson:
-        return "Simpson " + std::to_string(n_points);
-      case ContactIntegration::newton_cotes:
-        return "Newton-Cotes " + std::to_string(n_points);
-      case ContactIntegration::segment_based:
-        return "segment-based " + std::to_string(n_points);
-    }
+      {
+        case ContactIntegration::nodal:
+          return "nodal";
+        case ContactIntegration::gauss:
+          return "Gauss " + std::to_string(n_points);
+        case ContactIntegration::simpson:
+          return "Simpson " + std::to_string(n_points);
+        case ContactIntegration::newton_cotes:
+          return "Newton-Cotes " + std::to_string(n_points);
+        case ContactIntegration::segment_based:
+          return "segment-based " + std::to_string(n_points);
+      }
     return "";
   }
 
@@ -60,18 +60,18 @@ namespace RingContact
   IntegrationScheme::tag() const
   {
     switch (type)
-    {
-      case ContactIntegration::nodal:
-        return "nodal";
-      case ContactIntegration::gauss:
-        return "gauss" + std::to_string(n_points);
-      case ContactIntegration::simpson:
-        return "simpson" + std::to_string(n_points);
-      case ContactIntegration::newton_cotes:
-        return "newtoncotes" + std::to_string(n_points);
-      case ContactIntegration::segment_based:
-        return "segments" + std::to_string(n_points);
-    }
+      {
+        case ContactIntegration::nodal:
+          return "nodal";
+        case ContactIntegration::gauss:
+          return "gauss" + std::to_string(n_points);
+        case ContactIntegration::simpson:
+          return "simpson" + std::to_string(n_points);
+        case ContactIntegration::newton_cotes:
+          return "newtoncotes" + std::to_string(n_points);
+        case ContactIntegration::segment_based:
+          return "segments" + std::to_string(n_points);
+      }
     return "";
   }
 
@@ -89,47 +89,47 @@ namespace RingContact
     if (lower == "nodal")
       return scheme;
     if (!(in >> n))
-      throw std::runtime_error("contact integration scheme '" + text
-                               + "' needs a number of points, e.g. 'Gauss 2'");
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' needs a number of points, e.g. 'Gauss 2'");
     std::string rest;
     if (in >> rest)
-      throw std::runtime_error("contact integration scheme '" + text
-                               + "' has trailing text '" + rest + "'");
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' has trailing text '" + rest + "'");
     if (lower == "gauss")
-    {
-      scheme.type = ContactIntegration::gauss;
-      if (n < 1 || n > 20)
-        throw std::runtime_error("contact integration scheme '" + text
-                                 + "': Gauss needs 1 to 20 points");
-    }
+      {
+        scheme.type = ContactIntegration::gauss;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Gauss needs 1 to 20 points");
+      }
     else if (lower == "simpson")
-    {
-      scheme.type = ContactIntegration::simpson;
-      if (n < 1 || n > 20)
-        throw std::runtime_error("contact integration scheme '" + text
-                                 + "': Simpson order must be 1 to 20");
-    }
+      {
+        scheme.type = ContactIntegration::simpson;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Simpson order must be 1 to 20");
+      }
     else if (lower == "newton-cotes")
-    {
-      scheme.type = ContactIntegration::newton_cotes;
-      if (n != 1 && n != 2 && n != 4 && n != 6)
-        throw std::runtime_error("contact integration scheme '" + text
-                                 + "': Newton-Cotes order must be 1, 2, 4 "
+      {
+        scheme.type = ContactIntegration::newton_cotes;
+        if (n != 1 && n != 2 && n != 4 && n != 6)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Newton-Cotes order must be 1, 2, 4 "
                                    "or 6");
-    }
+      }
     else if (lower == "segment-based")
-    {
-      scheme.type = ContactIntegration::segment_based;
-      if (n < 1 || n > 20)
-        throw std::runtime_error("contact integration scheme '" + text
-                                 + "': segment-based needs 1 to 20 Gauss "
+      {
+        scheme.type = ContactIntegration::segment_based;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': segment-based needs 1 to 20 Gauss "
                                    "points per piece");
-    }
+      }
     else
       throw std::runtime_error(
-        "unknown contact integration scheme '" + text
-        + "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n, "
-          "segment-based n)");
+        "unknown contact integration scheme '" + text +
+        "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n, "
+        "segment-based n)");
     scheme.n_points = static_cast<unsigned int>(n);
     return scheme;
   }
@@ -209,27 +209,27 @@ namespace RingContact
     prm.enter_subsection("Mesh");
     {
       const std::string source_name = prm.get("Mesh source");
-      source               = source_name == "generated" ? MeshSource::generated
-                             : source_name == "patch test" ? MeshSource::patch_test
-                                                           : MeshSource::gmsh_file;
+      source = source_name == "generated"  ? MeshSource::generated :
+               source_name == "patch test" ? MeshSource::patch_test :
+                                             MeshSource::gmsh_file;
       patch_elements_lower = prm.get_integer("Patch test elements lower block");
       patch_elements_upper = prm.get_integer("Patch test elements upper block");
       mesh_file            = prm.get("Mesh file");
       if (source == MeshSource::gmsh_file)
-      {
-        require(!mesh_file.empty(),
-                "Mesh",
-                "Mesh file",
-                "is empty but 'Mesh source' is 'gmsh file'");
-        std::filesystem::path path(mesh_file);
-        if (path.is_relative())
-          path = std::filesystem::path(prm_folder) / path;
-        mesh_file = path.lexically_normal().string();
-        require(std::filesystem::exists(mesh_file),
-                "Mesh",
-                "Mesh file",
-                "names a file that does not exist: " + mesh_file);
-      }
+        {
+          require(!mesh_file.empty(),
+                  "Mesh",
+                  "Mesh file",
+                  "is empty but 'Mesh source' is 'gmsh file'");
+          std::filesystem::path path(mesh_file);
+          if (path.is_relative())
+            path = std::filesystem::path(prm_folder) / path;
+          mesh_file = path.lexically_normal().string();
+          require(std::filesystem::exists(mesh_file),
+                  "Mesh",
+                  "Mesh file",
+                  "names a file that does not exist: " + mesh_file);
+        }
       elements_around       = prm.get_integer("Elements around");
       radial_elements_outer = prm.get_integer("Radial elements outer ring");
       radial_elements_inner = prm.get_integer("Radial elements inner ring");
@@ -317,12 +317,12 @@ namespace RingContact
                 "Materials",
                 std::string("Poisson's ratio ") + name + " ring",
                 "must satisfy -1 < nu < 0.5, got " + to_text(nu));
-      kinematics = prm.get("Kinematics") == "finite strain"
-                     ? Kinematics::finite_strain
-                     : Kinematics::small_strain;
-      plane      = prm.get("Plane assumption") == "plane stress"
-                     ? PlaneAssumption::plane_stress
-                     : PlaneAssumption::plane_strain;
+      kinematics = prm.get("Kinematics") == "finite strain" ?
+                     Kinematics::finite_strain :
+                     Kinematics::small_strain;
+      plane      = prm.get("Plane assumption") == "plane stress" ?
+                     PlaneAssumption::plane_stress :
+                     PlaneAssumption::plane_strain;
     }
     prm.leave_subsection();
   }
@@ -455,26 +455,26 @@ namespace RingContact
       require(slave_boundary_id != master_boundary_id,
               "Contact",
               "Slave boundary",
-              "must differ from 'Master boundary' (both are "
-                + std::to_string(slave_boundary_id) + ")");
+              "must differ from 'Master boundary' (both are " +
+                std::to_string(slave_boundary_id) + ")");
       schemes.clear();
       for (const auto &entry :
            Utilities::split_string_list(prm.get("Integration schemes")))
-      {
-        try
         {
-          schemes.push_back(IntegrationScheme::parse(entry));
+          try
+            {
+              schemes.push_back(IntegrationScheme::parse(entry));
+            }
+          catch (const std::exception &e)
+            {
+              require(false, "Contact", "Integration schemes", e.what());
+            }
         }
-        catch (const std::exception &e)
-        {
-          require(false, "Contact", "Integration schemes", e.what());
-        }
-      }
       smooth_master_normals    = prm.get_bool("Smooth master normals");
       complementarity_constant = prm.get_double("Complementarity constant");
-      reported_pressure        = prm.get("Reported pressure") == "Cauchy"
-                                   ? PressureMeasure::cauchy
-                                   : PressureMeasure::nominal;
+      reported_pressure        = prm.get("Reported pressure") == "Cauchy" ?
+                                   PressureMeasure::cauchy :
+                                   PressureMeasure::nominal;
       const auto xy            = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Probe point")));
       probe_point = Point<2>(xy[0], xy[1]);
@@ -531,8 +531,8 @@ namespace RingContact
   {
     prm.enter_subsection("Load program");
     {
-      program            = prm.get("Program") == "ramp" ? LoadProgramType::ramp
-                                                        : LoadProgramType::rotation;
+      program = prm.get("Program") == "ramp" ? LoadProgramType::ramp :
+                                               LoadProgramType::rotation;
       reference_pressure = prm.get_double("Reference pressure");
       ramp_steps         = prm.get_integer("Ramp steps");
       time_step          = prm.get_double("Time step");
@@ -702,10 +702,9 @@ namespace RingContact
     prm.enter_subsection("Checks");
     {
       const std::string name = prm.get("Quantity");
-      quantity  = name == "pressure at A" ? CheckedQuantity::pressure_at_A
-                  : name == "pressure spread"
-                    ? CheckedQuantity::pressure_spread
-                    : CheckedQuantity::l2_pressure_error;
+      quantity  = name == "pressure at A"   ? CheckedQuantity::pressure_at_A :
+                  name == "pressure spread" ? CheckedQuantity::pressure_spread :
+                                              CheckedQuantity::l2_pressure_error;
       tolerance = prm.get_double("Tolerance");
       const std::string steps_text = Utilities::trim(prm.get("Steps"));
       every_step                   = (steps_text == "all");
@@ -714,24 +713,24 @@ namespace RingContact
         steps.push_back(numbers::invalid_unsigned_int);
       else if (!every_step && steps_text != "none")
         for (const auto &s : Utilities::split_string_list(steps_text))
-        {
-          int n = 0;
-          try
           {
-            n = Utilities::string_to_int(s);
+            int n = 0;
+            try
+              {
+                n = Utilities::string_to_int(s);
+              }
+            catch (...)
+              {
+                n = 0;
+              }
+            require(n >= 1,
+                    "Checks",
+                    "Steps",
+                    "must be 'all', 'last', 'none' or step numbers >= 1, "
+                    "got '" +
+                      s + "'");
+            steps.push_back(n);
           }
-          catch (...)
-          {
-            n = 0;
-          }
-          require(n >= 1,
-                  "Checks",
-                  "Steps",
-                  "must be 'all', 'last', 'none' or step numbers >= 1, "
-                  "got '"
-                    + s + "'");
-          steps.push_back(n);
-        }
     }
     prm.leave_subsection();
   }
@@ -758,47 +757,47 @@ namespace RingContact
   {
     prm_file = filename;
     if (!std::filesystem::exists(filename))
-      throw std::runtime_error("parameter file '" + filename
-                               + "' does not exist");
+      throw std::runtime_error("parameter file '" + filename +
+                               "' does not exist");
     ParameterHandler prm;
     declare_parameters(prm);
     try
-    {
-      prm.parse_input(filename);
-    }
+      {
+        prm.parse_input(filename);
+      }
     catch (const std::exception &e)
-    {
-      throw std::runtime_error(filename + ": " + one_line_message(e));
-    }
+      {
+        throw std::runtime_error(filename + ": " + one_line_message(e));
+      }
 
     const std::filesystem::path path(filename);
-    const std::string           folder
-      = path.has_parent_path() ? path.parent_path().string() : ".";
+    const std::string           folder =
+      path.has_parent_path() ? path.parent_path().string() : ".";
     const std::string name = path.stem().string();
     try
-    {
-      mesh.parse_parameters(prm, folder);
-      materials.parse_parameters(prm);
-      finite_elements.parse_parameters(prm);
-      contact.parse_parameters(prm);
-      load.parse_parameters(prm);
-      newton.parse_parameters(prm);
-      output.parse_parameters(prm, name);
-      checks.parse_parameters(prm);
+      {
+        mesh.parse_parameters(prm, folder);
+        materials.parse_parameters(prm);
+        finite_elements.parse_parameters(prm);
+        contact.parse_parameters(prm);
+        load.parse_parameters(prm);
+        newton.parse_parameters(prm);
+        output.parse_parameters(prm, name);
+        checks.parse_parameters(prm);
 
-      const unsigned int slave_degree
-        = (contact.slave_boundary_id == Ids::outer_ring_contact)
-            ? finite_elements.degree_outer
-            : finite_elements.degree_inner;
-      require(finite_elements.multiplier_degree <= slave_degree,
-              "Finite elements",
-              "Multiplier degree",
-              "must not exceed the displacement degree of the slave ring");
-    }
+        const unsigned int slave_degree =
+          (contact.slave_boundary_id == Ids::outer_ring_contact) ?
+            finite_elements.degree_outer :
+            finite_elements.degree_inner;
+        require(finite_elements.multiplier_degree <= slave_degree,
+                "Finite elements",
+                "Multiplier degree",
+                "must not exceed the displacement degree of the slave ring");
+      }
     catch (const std::exception &e)
-    {
-      throw std::runtime_error(filename + ": " + e.what());
-    }
+      {
+        throw std::runtime_error(filename + ": " + e.what());
+      }
   }
 
   void
@@ -807,7 +806,7 @@ namespace RingContact
     ParameterHandler prm;
     declare_parameters(prm);
     prm.print_parameters(out,
-                         as_prm ? ParameterHandler::PRM
-                                : ParameterHandler::Text);
+                         as_prm ? ParameterHandler::PRM :
+                                  ParameterHandler::Text);
   }
 } // namespace RingContact

@@ -16,33 +16,32 @@ namespace RingContact
                   const std::vector<HistoryRow> &history)
   {
     std::vector<Verdict> verdicts;
-    const auto           check_row = [&](const HistoryRow &row)
-    {
+    const auto           check_row = [&](const HistoryRow &row) {
       Verdict v;
       v.scheme    = row.scheme;
       v.step      = row.step;
       v.tolerance = checks.tolerance;
       if (checks.quantity == CheckedQuantity::pressure_at_A)
-      {
-        v.quantity  = "pressure at A";
-        v.value     = row.pressure_A;
-        v.reference = row.analytic;
-        v.error     = row.relative_error;
-      }
+        {
+          v.quantity  = "pressure at A";
+          v.value     = row.pressure_A;
+          v.reference = row.analytic;
+          v.error     = row.relative_error;
+        }
       else if (checks.quantity == CheckedQuantity::pressure_spread)
-      {
-        v.quantity  = "pressure spread";
-        v.value     = (row.pressure_max - row.pressure_min) / row.analytic;
-        v.reference = 0;
-        v.error     = v.value;
-      }
+        {
+          v.quantity = "pressure spread";
+          v.value = (row.pressure_max - row.pressure_min) / row.analytic;
+          v.reference = 0;
+          v.error     = v.value;
+        }
       else
-      {
-        v.quantity  = "L2 error of pressure";
-        v.value     = row.l2_relative_error;
-        v.reference = 0;
-        v.error     = row.l2_relative_error;
-      }
+        {
+          v.quantity  = "L2 error of pressure";
+          v.value     = row.l2_relative_error;
+          v.reference = 0;
+          v.error     = row.l2_relative_error;
+        }
       v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
       verdicts.push_back(v);
     };
@@ -51,32 +50,32 @@ namespace RingContact
         check_row(row);
     else
       for (const unsigned int step : checks.steps)
-      {
-        if (history.empty())
-          break;
-        const unsigned int wanted
-          = step == numbers::invalid_unsigned_int ? history.back().step : step;
-        bool found = false;
-        for (const auto &row : history)
-          if (row.step == wanted)
-          {
-            check_row(row);
-            found = true;
-          }
-        if (!found)
         {
-          // A checked step that was never reached fails.
-          Verdict v{history.front().scheme,
-                    "step not reached",
-                    wanted,
-                    std::nan(""),
-                    0,
-                    std::nan(""),
-                    checks.tolerance,
-                    false};
-          verdicts.push_back(v);
+          if (history.empty())
+            break;
+          const unsigned int wanted =
+            step == numbers::invalid_unsigned_int ? history.back().step : step;
+          bool found = false;
+          for (const auto &row : history)
+            if (row.step == wanted)
+              {
+                check_row(row);
+                found = true;
+              }
+          if (!found)
+            {
+              // A checked step that was never reached fails.
+              Verdict v{history.front().scheme,
+                        "step not reached",
+                        wanted,
+                        std::nan(""),
+                        0,
+                        std::nan(""),
+                        checks.tolerance,
+                        false};
+              verdicts.push_back(v);
+            }
         }
-      }
     return verdicts;
   }
 
@@ -91,15 +90,16 @@ namespace RingContact
         << std::setw(11) << "tolerance"
         << "  verdict\n";
     for (const auto &v : verdicts)
-    {
-      out << std::left << std::setw(18) << v.scheme << std::setw(22)
-          << v.quantity << std::right << std::setw(5) << v.step
-          << std::setprecision(7) << std::setw(15) << v.value << std::setw(15)
-          << v.reference << std::fixed << std::setprecision(4) << std::setw(11)
-          << 100 * v.error << "%" << std::setw(10) << 100 * v.tolerance << "%"
-          << (v.pass ? "  PASS" : "  FAIL") << std::defaultfloat << '\n';
-      all_pass = all_pass && v.pass;
-    }
+      {
+        out << std::left << std::setw(18) << v.scheme << std::setw(22)
+            << v.quantity << std::right << std::setw(5) << v.step
+            << std::setprecision(7) << std::setw(15) << v.value << std::setw(15)
+            << v.reference << std::fixed << std::setprecision(4)
+            << std::setw(11) << 100 * v.error << "%" << std::setw(10)
+            << 100 * v.tolerance << "%" << (v.pass ? "  PASS" : "  FAIL")
+            << std::defaultfloat << '\n';
+        all_pass = all_pass && v.pass;
+      }
     unsigned int n_pass = 0;
     for (const auto &v : verdicts)
       n_pass += v.pass;
@@ -136,8 +136,7 @@ namespace RingContact
       explicit StressPostprocessor(
         const std::map<unsigned int, Material> &materials)
           : materials(materials)
-      {
-      }
+      {}
 
       void
       evaluate_vector_field(
@@ -147,18 +146,18 @@ namespace RingContact
         const auto      cell     = inputs.template get_cell<2>();
         const Material &material = materials.at(cell->material_id());
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-        {
-          Tensor<2, 2> H;
-          for (unsigned int d = 0; d < 2; ++d)
-            H[d] = inputs.solution_gradients[q][d];
-          const Tensor<2, 2> s      = material.cauchy_stress(H);
-          computed_quantities[q][0] = s[0][0];
-          computed_quantities[q][1] = s[1][1];
-          computed_quantities[q][2] = s[0][1];
-          computed_quantities[q][3]
-            = std::sqrt(s[0][0] * s[0][0] + s[1][1] * s[1][1]
-                        - s[0][0] * s[1][1] + 3 * s[0][1] * s[0][1]);
-        }
+          {
+            Tensor<2, 2> H;
+            for (unsigned int d = 0; d < 2; ++d)
+              H[d] = inputs.solution_gradients[q][d];
+            const Tensor<2, 2> s      = material.cauchy_stress(H);
+            computed_quantities[q][0] = s[0][0];
+            computed_quantities[q][1] = s[1][1];
+            computed_quantities[q][2] = s[0][1];
+            computed_quantities[q][3] =
+              std::sqrt(s[0][0] * s[0][0] + s[1][1] * s[1][1] -
+                        s[0][0] * s[1][1] + 3 * s[0][1] * s[0][1]);
+          }
       }
 
       std::vector<std::string>
@@ -184,8 +183,7 @@ namespace RingContact
       explicit SlaveFaces(const types::boundary_id id)
           : DataOutFaces<2>(true)
           , slave_id(id)
-      {
-      }
+      {}
 
       FaceDescriptor
       first_face() override
@@ -210,8 +208,8 @@ namespace RingContact
         for (; cell != this->triangulation->end(); ++cell, f = 0)
           if (cell->is_active())
             for (; f < cell->n_faces(); ++f)
-              if (cell->face(f)->at_boundary()
-                  && cell->face(f)->boundary_id() == slave_id)
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == slave_id)
                 return {cell, f};
         return {this->triangulation->end(), 0};
       }
@@ -225,8 +223,7 @@ namespace RingContact
     public:
       GapPostprocessor()
           : DataPostprocessorScalar<2>("gap", update_values)
-      {
-      }
+      {}
 
       void
       evaluate_vector_field(
@@ -253,8 +250,7 @@ namespace RingContact
       : directory(directory)
       , tag(tag)
       , subdivisions(subdivisions)
-  {
-  }
+  {}
 
   void
   VtuWriter::write(const DoFHandler<2>                    &dof_handler,
@@ -266,9 +262,10 @@ namespace RingContact
                    const unsigned int                      step,
                    const double                            time)
   {
-    const std::vector<std::string> names
-      = {"displacement", "displacement", "contact_pressure"};
-    DataOutBase::VtkFlags flags;
+    const std::vector<std::string> names = {"displacement",
+                                            "displacement",
+                                            "contact_pressure"};
+    DataOutBase::VtkFlags          flags;
     flags.write_higher_order_cells = subdivisions > 1;
     flags.time                     = time;
     // Fast zlib: best compression costs more than the solve here.
@@ -291,8 +288,8 @@ namespace RingContact
     data_out.build_patches(mapping,
                            subdivisions,
                            DataOut<2>::curved_inner_cells);
-    const std::string bulk_name
-      = "solution-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
+    const std::string bulk_name =
+      "solution-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
     std::ofstream bulk(directory + "/" + bulk_name);
     data_out.write_vtu(bulk);
     bulk_records.emplace_back(time, bulk_name);
@@ -316,8 +313,8 @@ namespace RingContact
     faces.build_patches(
       mapping[std::min<unsigned int>(slave_fe_index, mapping.size() - 1)],
       subdivisions);
-    const std::string surface_name
-      = "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
+    const std::string surface_name =
+      "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
     std::ofstream surface(directory + "/" + surface_name);
     faces.write_vtu(surface);
     surface_records.emplace_back(time, surface_name);

@@ -34,8 +34,8 @@ namespace RingContact
       , current_time(0)
       , current_load{0, 0}
       , timer(log,
-              parameters.output.print_timing ? TimerOutput::summary
-                                             : TimerOutput::never,
+              parameters.output.print_timing ? TimerOutput::summary :
+                                               TimerOutput::never,
               TimerOutput::wall_times)
   {
     const auto &m = parameters.materials;
@@ -60,8 +60,8 @@ namespace RingContact
     Geometry::create_mesh(triangulation, parameters);
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary()
-            && face->boundary_id() == parameters.contact.slave_boundary_id)
+        if (face->at_boundary() &&
+            face->boundary_id() == parameters.contact.slave_boundary_id)
           slave_ring = cell->material_id();
   }
 
@@ -75,18 +75,18 @@ namespace RingContact
     TimerOutput::Scope t(timer, "setup");
     const auto        &fe = parameters.finite_elements;
     for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
-    {
-      const unsigned int degree
-        = ring == Ids::outer_ring ? fe.degree_outer : fe.degree_inner;
-      if (ring == slave_ring)
-        fe_collection.push_back(
-          FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(fe.multiplier_degree), 1));
-      else
-        fe_collection.push_back(
-          FESystem<2>(FE_Q<2>(degree), 2, FE_Nothing<2>(), 1));
-      q_collection.push_back(
-        QGauss<2>(fe.reduced_integration ? degree : degree + 1));
-    }
+      {
+        const unsigned int degree =
+          ring == Ids::outer_ring ? fe.degree_outer : fe.degree_inner;
+        if (ring == slave_ring)
+          fe_collection.push_back(
+            FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(fe.multiplier_degree), 1));
+        else
+          fe_collection.push_back(
+            FESystem<2>(FE_Q<2>(degree), 2, FE_Nothing<2>(), 1));
+        q_collection.push_back(
+          QGauss<2>(fe.reduced_integration ? degree : degree + 1));
+      }
     // One mapping per ring (the order of the finite elements).
     for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
       mapping_collection.push_back(MappingQ<2>(fe.mapping_degree_of(ring)));
@@ -99,22 +99,22 @@ namespace RingContact
     double c = parameters.contact.complementarity_constant;
     if (c == 0)
       c = std::max(parameters.materials.youngs_modulus_outer,
-                   parameters.materials.youngs_modulus_inner)
-          / ContactSurface(dof_handler,
-                           parameters.contact.slave_boundary_id,
-                           fe.mapping_degree_of(slave_ring))
-              .min_segment_length();
+                   parameters.materials.youngs_modulus_inner) /
+          ContactSurface(dof_handler,
+                         parameters.contact.slave_boundary_id,
+                         fe.mapping_degree_of(slave_ring))
+            .min_segment_length();
     contact = std::make_unique<ContactInterface>(
       dof_handler,
       parameters.contact,
       scheme,
       fe.mapping_degree_of(slave_ring),
-      fe.mapping_degree_of(slave_ring == Ids::outer_ring ? Ids::inner_ring
-                                                         : Ids::outer_ring),
+      fe.mapping_degree_of(slave_ring == Ids::outer_ring ? Ids::inner_ring :
+                                                           Ids::outer_ring),
       c,
       parameters.materials.kinematics == Kinematics::small_strain);
-    probe_dof
-      = contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
+    probe_dof =
+      contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
 
     solution.reinit(dof_handler.n_dofs());
     previous_solution.reinit(dof_handler.n_dofs());
@@ -142,8 +142,8 @@ namespace RingContact
     if (patch_test)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
-          if (std::abs(cell->vertex(v)[0]) < 1e-12
-              && std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
+          if (std::abs(cell->vertex(v)[0]) < 1e-12 &&
+              std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
             constraints.add_line(
               cell->vertex_dof_index(v, 0, cell->active_fe_index()));
     is_dirichlet.assign(dof_handler.n_dofs(), false);
@@ -151,9 +151,8 @@ namespace RingContact
       is_dirichlet[i] = constraints.is_constrained(i);
 
     // The multiplier lives on the slave surface only.
-    const IndexSet all_multipliers
-      = DoFTools::extract_dofs(dof_handler,
-                               ComponentMask({false, false, true}));
+    const IndexSet all_multipliers =
+      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
     std::set<types::global_dof_index> slave_multipliers(
       contact->multiplier_dofs().begin(), contact->multiplier_dofs().end());
     for (const auto i : all_multipliers)
@@ -187,40 +186,40 @@ namespace RingContact
   RingContactProblem::apply_boundary_motion(const LoadState &load)
   {
     if (patch_test)
-    {
-      // The top moves down by the shortening of the two blocks under the
-      // uniaxial pressure p (small strain): p (H1 / E1* + H2 / E2*).
-      const auto modulus = [&](const double E, const double nu)
       {
-        return parameters.materials.plane == PlaneAssumption::plane_stress
-                 ? E
-                 : E / (1 - nu * nu);
-      };
-      const auto  &m = parameters.materials;
-      const double shortening
-        = load.pressure
-          * (0.5 / modulus(m.youngs_modulus_outer, m.poissons_ratio_outer)
-             + 0.5 / modulus(m.youngs_modulus_inner, m.poissons_ratio_inner));
-      std::map<types::global_dof_index, double> boundary_values;
-      VectorTools::interpolate_boundary_values(
-        mapping_collection,
-        dof_handler,
-        Ids::inner_boundary,
-        Functions::ConstantFunction<2>(std::vector<double>{0, -shortening, 0}),
-        boundary_values,
-        ComponentMask({false, true, false}));
-      for (const auto &[dof, value] : boundary_values)
-        solution(dof) = value;
-      current_load = load;
-      return;
-    }
-    const double angle = 2 * numbers::PI * load.rotation_elements
-                         / (parameters.mesh.elements_around
-                            * (1u << parameters.mesh.global_refinements));
+        // The top moves down by the shortening of the two blocks under the
+        // uniaxial pressure p (small strain): p (H1 / E1* + H2 / E2*).
+        const auto modulus = [&](const double E, const double nu) {
+          return parameters.materials.plane == PlaneAssumption::plane_stress ?
+                   E :
+                   E / (1 - nu * nu);
+        };
+        const auto  &m = parameters.materials;
+        const double shortening =
+          load.pressure *
+          (0.5 / modulus(m.youngs_modulus_outer, m.poissons_ratio_outer) +
+           0.5 / modulus(m.youngs_modulus_inner, m.poissons_ratio_inner));
+        std::map<types::global_dof_index, double> boundary_values;
+        VectorTools::interpolate_boundary_values(
+          mapping_collection,
+          dof_handler,
+          Ids::inner_boundary,
+          Functions::ConstantFunction<2>(
+            std::vector<double>{0, -shortening, 0}),
+          boundary_values,
+          ComponentMask({false, true, false}));
+        for (const auto &[dof, value] : boundary_values)
+          solution(dof) = value;
+        current_load = load;
+        return;
+      }
+    const double angle = 2 * numbers::PI * load.rotation_elements /
+                         (parameters.mesh.elements_around *
+                          (1u << parameters.mesh.global_refinements));
     const BoundaryMotion outer(analytic.f_R1(load.pressure), 0.0, 3);
     const BoundaryMotion inner(analytic.f_R3(load.pressure), angle, 3);
-    std::map<types::boundary_id, const Function<2> *> motion
-      = {{Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
+    std::map<types::boundary_id, const Function<2> *> motion = {
+      {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
     std::map<types::global_dof_index, double> boundary_values;
     VectorTools::interpolate_boundary_values(mapping_collection,
                                              dof_handler,
@@ -255,62 +254,62 @@ namespace RingContact
     std::vector<Tensor<1, 2>>            grad_phi;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      hp_fe_values.reinit(cell);
-      const FEValues<2>      &fe_values = hp_fe_values.get_present_fe_values();
-      const FiniteElement<2> &fe        = cell->get_fe();
-      const unsigned int      n         = fe.n_dofs_per_cell();
-      const Material         &material  = materials.at(cell->material_id());
-      cell_matrix.reinit(n, n);
-      cell_rhs.reinit(n);
-      dofs.resize(n);
-      grad_u.resize(fe_values.n_quadrature_points);
-      cell->get_dof_indices(dofs);
-      fe_values[displacement].get_function_gradients(solution, grad_u);
-
-      // The displacement shape functions each have one nonzero component
-      // c: Grad(phi) = e_c (x) grad(phi_c), so that P : Grad(phi_i) =
-      // P_cJ d_J phi_i and the tangent is d_J phi_i A_cJdL d_L phi_j.
-      u_dofs.clear();
-      component.resize(n);
-      for (unsigned int i = 0; i < n; ++i)
       {
-        component[i] = fe.system_to_component_index(i).first;
-        if (component[i] < 2)
-          u_dofs.push_back(i);
-      }
-      grad_phi.resize(u_dofs.size());
+        hp_fe_values.reinit(cell);
+        const FEValues<2> &fe_values     = hp_fe_values.get_present_fe_values();
+        const FiniteElement<2> &fe       = cell->get_fe();
+        const unsigned int      n        = fe.n_dofs_per_cell();
+        const Material         &material = materials.at(cell->material_id());
+        cell_matrix.reinit(n, n);
+        cell_rhs.reinit(n);
+        dofs.resize(n);
+        grad_u.resize(fe_values.n_quadrature_points);
+        cell->get_dof_indices(dofs);
+        fe_values[displacement].get_function_gradients(solution, grad_u);
 
-      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-      {
-        Tensor<2, 2> P;
-        Tensor<4, 2> A;
-        material.stress_and_tangent(grad_u[q], P, A);
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int a = 0; a < u_dofs.size(); ++a)
-          grad_phi[a] = fe_values.shape_grad(u_dofs[a], q);
-        for (unsigned int a = 0; a < u_dofs.size(); ++a)
-        {
-          const unsigned int i = u_dofs[a], c = component[i];
-          cell_rhs(i) -= (P[c] * grad_phi[a]) * JxW;
-          // A_cJdL grad_phi_a[J], for each d and L.
-          Tensor<2, 2> Ag;
-          for (unsigned int J = 0; J < 2; ++J)
-            for (unsigned int d = 0; d < 2; ++d)
-              for (unsigned int L = 0; L < 2; ++L)
-                Ag[d][L] += grad_phi[a][J] * A[c][J][d][L];
-          for (unsigned int b = 0; b < u_dofs.size(); ++b)
+        // The displacement shape functions each have one nonzero component
+        // c: Grad(phi) = e_c (x) grad(phi_c), so that P : Grad(phi_i) =
+        // P_cJ d_J phi_i and the tangent is d_J phi_i A_cJdL d_L phi_j.
+        u_dofs.clear();
+        component.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
           {
-            const unsigned int j = u_dofs[b];
-            cell_matrix(i, j) += (Ag[component[j]] * grad_phi[b]) * JxW;
+            component[i] = fe.system_to_component_index(i).first;
+            if (component[i] < 2)
+              u_dofs.push_back(i);
           }
-        }
+        grad_phi.resize(u_dofs.size());
+
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          {
+            Tensor<2, 2> P;
+            Tensor<4, 2> A;
+            material.stress_and_tangent(grad_u[q], P, A);
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
+              grad_phi[a] = fe_values.shape_grad(u_dofs[a], q);
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
+              {
+                const unsigned int i = u_dofs[a], c = component[i];
+                cell_rhs(i) -= (P[c] * grad_phi[a]) * JxW;
+                // A_cJdL grad_phi_a[J], for each d and L.
+                Tensor<2, 2> Ag;
+                for (unsigned int J = 0; J < 2; ++J)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    for (unsigned int L = 0; L < 2; ++L)
+                      Ag[d][L] += grad_phi[a][J] * A[c][J][d][L];
+                for (unsigned int b = 0; b < u_dofs.size(); ++b)
+                  {
+                    const unsigned int j = u_dofs[b];
+                    cell_matrix(i, j) += (Ag[component[j]] * grad_phi[b]) * JxW;
+                  }
+              }
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          internal_force(dofs[i]) -= cell_rhs(i);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
       }
-      for (unsigned int i = 0; i < n; ++i)
-        internal_force(dofs[i]) -= cell_rhs(i);
-      constraints.distribute_local_to_global(
-        cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
-    }
 
     contact->assemble(solution, constraints, system_matrix, system_rhs);
   }
@@ -354,35 +353,35 @@ namespace RingContact
     iterations            = 0;
     double first_residual = 0;
     for (unsigned int it = 0;; ++it)
-    {
-      const unsigned int n_changed = assemble_newton_system();
+      {
+        const unsigned int n_changed = assemble_newton_system();
 
-      double reaction = 0;
-      for (types::global_dof_index i = 0; i < internal_force.size(); ++i)
-        if (is_dirichlet[i])
-          reaction += internal_force(i) * internal_force(i);
-      reaction       = std::sqrt(reaction);
-      final_residual = system_rhs.l2_norm() / std::max(reaction, 1e-300);
-      if (it == 0)
-        first_residual = final_residual;
-      if (newton.verbose)
-        log << "    Newton " << std::setw(2) << it << "  relative residual "
-            << std::scientific << std::setprecision(3) << final_residual
-            << std::defaultfloat << "  active " << contact->n_active() << "/"
-            << contact->multiplier_dofs().size() << "  changed " << n_changed
-            << '\n';
-      if (!std::isfinite(final_residual))
-        return false;
-      if (final_residual < newton.tolerance && n_changed == 0)
-        return true;
-      if (it == newton.max_iterations
-          || (it > 2 && final_residual > 1e6 * first_residual))
-        return false;
+        double reaction = 0;
+        for (types::global_dof_index i = 0; i < internal_force.size(); ++i)
+          if (is_dirichlet[i])
+            reaction += internal_force(i) * internal_force(i);
+        reaction       = std::sqrt(reaction);
+        final_residual = system_rhs.l2_norm() / std::max(reaction, 1e-300);
+        if (it == 0)
+          first_residual = final_residual;
+        if (newton.verbose)
+          log << "    Newton " << std::setw(2) << it << "  relative residual "
+              << std::scientific << std::setprecision(3) << final_residual
+              << std::defaultfloat << "  active " << contact->n_active() << "/"
+              << contact->multiplier_dofs().size() << "  changed " << n_changed
+              << '\n';
+        if (!std::isfinite(final_residual))
+          return false;
+        if (final_residual < newton.tolerance && n_changed == 0)
+          return true;
+        if (it == newton.max_iterations ||
+            (it > 2 && final_residual > 1e6 * first_residual))
+          return false;
 
-      solve_linear_system(newton_update);
-      solution += newton_update;
-      ++iterations;
-    }
+        solve_linear_system(newton_update);
+        solution += newton_update;
+        ++iterations;
+      }
   }
 
   // One step of the load program, cut in halves while Newton fails.
@@ -394,60 +393,60 @@ namespace RingContact
     unsigned int cuts = 0, total_iterations = 0;
     Timer        wall;
     while (current_time < t_end - 1e-12 * std::abs(t_end))
-    {
-      const double         t_next    = std::min(current_time + dt, t_end);
-      const Vector<double> converged = solution;
+      {
+        const double         t_next    = std::min(current_time + dt, t_end);
+        const Vector<double> converged = solution;
 
-      // Predictor: extrapolate the last increment when it was of the
-      // same kind (pressure only, or rotation only).
-      const LoadState next  = load_program.state(t_next);
-      const LoadState now   = current_load;
-      const LoadState prev  = load_program.state(previous_time);
-      double          scale = 0;
-      if (parameters.newton.extrapolate && current_time > previous_time)
-      {
-        const double dp0 = now.pressure - prev.pressure,
-                     dp1 = next.pressure - now.pressure;
-        const double ds0 = now.rotation_elements - prev.rotation_elements,
-                     ds1 = next.rotation_elements - now.rotation_elements;
-        if (ds0 == 0 && ds1 == 0 && dp0 != 0)
-          scale = dp1 / dp0;
-        else if (dp0 == 0 && dp1 == 0 && ds0 != 0)
-          scale = ds1 / ds0;
-      }
-      if (scale != 0)
-        solution.add(scale, converged, -scale, previous_solution);
-      apply_boundary_motion(next);
+        // Predictor: extrapolate the last increment when it was of the
+        // same kind (pressure only, or rotation only).
+        const LoadState next  = load_program.state(t_next);
+        const LoadState now   = current_load;
+        const LoadState prev  = load_program.state(previous_time);
+        double          scale = 0;
+        if (parameters.newton.extrapolate && current_time > previous_time)
+          {
+            const double dp0 = now.pressure - prev.pressure,
+                         dp1 = next.pressure - now.pressure;
+            const double ds0 = now.rotation_elements - prev.rotation_elements,
+                         ds1 = next.rotation_elements - now.rotation_elements;
+            if (ds0 == 0 && ds1 == 0 && dp0 != 0)
+              scale = dp1 / dp0;
+            else if (dp0 == 0 && dp1 == 0 && ds0 != 0)
+              scale = ds1 / ds0;
+          }
+        if (scale != 0)
+          solution.add(scale, converged, -scale, previous_solution);
+        apply_boundary_motion(next);
 
-      unsigned int iterations = 0;
-      double       residual   = 0;
-      const bool   ok         = solve_newton_step(iterations, residual);
-      total_iterations += iterations;
-      if (ok)
-      {
-        previous_solution = converged;
-        previous_time     = current_time;
-        current_time      = t_next;
-        continue;
+        unsigned int iterations = 0;
+        double       residual   = 0;
+        const bool   ok         = solve_newton_step(iterations, residual);
+        total_iterations += iterations;
+        if (ok)
+          {
+            previous_solution = converged;
+            previous_time     = current_time;
+            current_time      = t_next;
+            continue;
+          }
+        // Failed: back to the last converged state, half the increment.
+        solution     = converged;
+        current_load = load_program.state(current_time);
+        contact->update(solution);
+        if (cuts == parameters.newton.max_step_cuts)
+          {
+            log << "Step " << step << ": Newton did not converge after " << cuts
+                << " step cuts (last relative residual " << residual
+                << " at t = " << t_next << ", increment " << dt
+                << "); stopping with the last converged state (t = "
+                << current_time << ")\n";
+            return false;
+          }
+        ++cuts;
+        dt /= 2;
+        log << "  step " << step << ": Newton failed (relative residual "
+            << residual << "), cutting the increment to " << dt << '\n';
       }
-      // Failed: back to the last converged state, half the increment.
-      solution     = converged;
-      current_load = load_program.state(current_time);
-      contact->update(solution);
-      if (cuts == parameters.newton.max_step_cuts)
-      {
-        log << "Step " << step << ": Newton did not converge after " << cuts
-            << " step cuts (last relative residual " << residual
-            << " at t = " << t_next << ", increment " << dt
-            << "); stopping with the last converged state (t = " << current_time
-            << ")\n";
-        return false;
-      }
-      ++cuts;
-      dt /= 2;
-      log << "  step " << step << ": Newton failed (relative residual "
-          << residual << "), cutting the increment to " << dt << '\n';
-    }
     postprocess_step(step, total_iterations, cuts, wall.wall_time());
     return true;
   }
@@ -462,12 +461,11 @@ namespace RingContact
   {
     TimerOutput::Scope    t(timer, "postprocessing");
     const PressureMeasure measure  = parameters.contact.reported_pressure;
-    const auto            reported = [&](const types::global_dof_index dof)
-    {
+    const auto            reported = [&](const types::global_dof_index dof) {
       const double lambda = solution(dof);
-      return measure == PressureMeasure::cauchy
-               ? lambda
-               : lambda * contact->stretch_at(dof);
+      return measure == PressureMeasure::cauchy ?
+                          lambda :
+                          lambda * contact->stretch_at(dof);
     };
     HistoryRow row;
     row.scheme         = scheme.name();
@@ -476,19 +474,19 @@ namespace RingContact
     row.load_factor    = current_load.pressure;
     row.rotation       = current_load.rotation_elements;
     row.pressure_A     = reported(probe_dof);
-    row.analytic       = patch_test
-                           ? current_load.pressure
-                           : analytic.contact_pressure(current_load.pressure);
+    row.analytic       = patch_test ?
+                           current_load.pressure :
+                           analytic.contact_pressure(current_load.pressure);
     row.relative_error = (row.pressure_A - row.analytic) / row.analytic;
-    row.l2_relative_error
-      = contact->l2_relative_error(solution, row.analytic, measure);
+    row.l2_relative_error =
+      contact->l2_relative_error(solution, row.analytic, measure);
     row.pressure_min = std::numeric_limits<double>::max();
     row.pressure_max = -std::numeric_limits<double>::max();
     for (const auto dof : contact->multiplier_dofs())
-    {
-      row.pressure_min = std::min(row.pressure_min, reported(dof));
-      row.pressure_max = std::max(row.pressure_max, reported(dof));
-    }
+      {
+        row.pressure_min = std::min(row.pressure_min, reported(dof));
+        row.pressure_max = std::max(row.pressure_max, reported(dof));
+      }
     row.newton_iterations = iterations;
     row.step_cuts         = cuts;
     row.active_nodes      = contact->n_active();
@@ -508,8 +506,8 @@ namespace RingContact
           << 100 * row.l2_relative_error << '%' << std::defaultfloat << '\n';
 
     const unsigned int interval = parameters.output.vtu_interval;
-    if (interval > 0
-        && (step % interval == 0 || step == load_program.n_steps()))
+    if (interval > 0 &&
+        (step % interval == 0 || step == load_program.n_steps()))
       output_results(step);
   }
 
@@ -518,17 +516,17 @@ namespace RingContact
   {
     TimerOutput::Scope t(timer, "output");
     if (!vtu_writer)
-    {
-      const unsigned int subdivisions
-        = parameters.output.vtu_subdivisions > 0
-            ? parameters.output.vtu_subdivisions
-            : std::max(std::max(parameters.finite_elements.mapping_degree, 1u),
-                       std::max(parameters.finite_elements.degree_outer,
-                                parameters.finite_elements.degree_inner));
-      vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
-                                               scheme.tag(),
-                                               subdivisions);
-    }
+      {
+        const unsigned int subdivisions =
+          parameters.output.vtu_subdivisions > 0 ?
+            parameters.output.vtu_subdivisions :
+            std::max(std::max(parameters.finite_elements.mapping_degree, 1u),
+                     std::max(parameters.finite_elements.degree_outer,
+                              parameters.finite_elements.degree_inner));
+        vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
+                                                 scheme.tag(),
+                                                 subdivisions);
+      }
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto dof : contact->multiplier_dofs())
       nodal_gap(dof) = contact->gap_at(dof, solution);

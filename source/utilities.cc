@@ -11,11 +11,11 @@ namespace RingContact
   {
     std::string text;
     if (const auto *deal_ii = dynamic_cast<const dealii::ExceptionBase *>(&e))
-    {
-      std::ostringstream out;
-      deal_ii->print_info(out);
-      text = out.str();
-    }
+      {
+        std::ostringstream out;
+        deal_ii->print_info(out);
+        text = out.str();
+      }
     else
       text = e.what();
     // Collapse all whitespace runs into single spaces.
@@ -25,12 +25,12 @@ namespace RingContact
       if (std::isspace(static_cast<unsigned char>(c)))
         space = !line.empty();
       else
-      {
-        if (space)
-          line += ' ';
-        line += c;
-        space = false;
-      }
+        {
+          if (space)
+            line += ' ';
+          line += c;
+          space = false;
+        }
     return line;
   }
 } // namespace RingContact

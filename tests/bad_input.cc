@@ -27,8 +27,8 @@ namespace
       std::ofstream prm(name + ".prm");
       prm << text;
     }
-    const std::string command = std::string(RING_CONTACT_EXECUTABLE) + " "
-                                + name + ".prm > " + name + ".log 2>&1";
+    const std::string command = std::string(RING_CONTACT_EXECUTABLE) + " " +
+                                name + ".prm > " + name + ".log 2>&1";
     const int     status = std::system(command.c_str());
     std::ifstream log(name + ".log");
     std::string   line, last;
@@ -53,9 +53,9 @@ namespace
       shown.erase(at, folder.size());
     out << name << ": exit code " << code << ": " << shown << std::endl;
     check(code != 0, name + ": the program must fail");
-    check(message.find("error:") != std::string::npos
-            || message.find("stopping") != std::string::npos
-            || message.find("could not be solved") != std::string::npos,
+    check(message.find("error:") != std::string::npos ||
+            message.find("stopping") != std::string::npos ||
+            message.find("could not be solved") != std::string::npos,
           name + ": a clear error message");
     check(message.find(expected) != std::string::npos,
           name + ": message must mention '" + expected + "', got: " + message);
@@ -112,32 +112,32 @@ main()
     bool                     in_elements = false;
     std::vector<std::string> elements;
     while (std::getline(in, line))
-    {
-      if (line == "$ELM")
       {
-        in_elements = true;
+        if (line == "$ELM")
+          {
+            in_elements = true;
+            out << line << '\n';
+            std::getline(in, line); // the count, written below
+            continue;
+          }
+        if (line == "$ENDELM")
+          {
+            out << elements.size() << '\n';
+            for (const auto &e : elements)
+              out << e << '\n';
+            in_elements = false;
+          }
+        if (in_elements)
+          {
+            std::istringstream fields(line);
+            int                id, type, tag;
+            fields >> id >> type >> tag;
+            if (tag != 400)
+              elements.push_back(line);
+            continue;
+          }
         out << line << '\n';
-        std::getline(in, line); // the count, written below
-        continue;
       }
-      if (line == "$ENDELM")
-      {
-        out << elements.size() << '\n';
-        for (const auto &e : elements)
-          out << e << '\n';
-        in_elements = false;
-      }
-      if (in_elements)
-      {
-        std::istringstream fields(line);
-        int                id, type, tag;
-        fields >> id >> type >> tag;
-        if (tag != 400)
-          elements.push_back(line);
-        continue;
-      }
-      out << line << '\n';
-    }
   }
   expect_error("mesh_without_slave",
                "subsection Mesh\n set Mesh source = gmsh file\n"
@@ -153,10 +153,9 @@ main()
   // tolerance): the step is cut and retried, then the run stops with a
   // message and a non-zero exit code.
   expect_error("newton_fails",
-               quiet
-                 + "subsection Newton\n set Maximum iterations = 1\n"
-                   " set Tolerance = 1e-30\n set Maximum step cuts = 2\n"
-                   "end\nsubsection Load program\n set Ramp steps = 2\n"
-                   "end\n",
+               quiet + "subsection Newton\n set Maximum iterations = 1\n"
+                       " set Tolerance = 1e-30\n set Maximum step cuts = 2\n"
+                       "end\nsubsection Load program\n set Ramp steps = 2\n"
+                       "end\n",
                "could not be solved");
 }

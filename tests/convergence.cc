@@ -18,44 +18,44 @@ main()
 {
   auto &out = RingContactTests::deallog_file;
   for (const std::string scheme : {"nodal", "Gauss 2"})
-  {
-    std::vector<double> errors;
-    for (const unsigned int around : {40u, 80u, 160u})
     {
-      {
-        std::ofstream prm("convergence.prm");
-        prm << "subsection Mesh\n set Elements around = " << around
-            << "\n set Radial elements outer ring = " << 3 * around / 40
-            << "\n set Radial elements inner ring = " << 3 * around / 40
-            << "\nend\nsubsection Materials\n"
-            << " set Kinematics = small strain\nend\n"
-            << "subsection Contact\n set Integration schemes = " << scheme
-            << "\nend\nsubsection Load program\n set Ramp steps = 1\n"
-            << "end\nsubsection Output\n set VTU interval = 0\n"
-            << " set Print timing = false\n set Write history = false\n"
-            << "end\nsubsection Newton\n set Verbose = false\nend\n";
-      }
-      Parameters parameters;
-      parameters.read("convergence.prm");
-      std::ostringstream log;
-      RingContactProblem problem(parameters,
-                                 parameters.contact.schemes.front(),
-                                 log);
-      check(problem.run(), "the step converges");
-      errors.push_back(std::abs(problem.history().back().relative_error));
-      out << scheme << ", " << std::setw(3) << around
-          << " elements around: relative error " << std::scientific
-          << std::setprecision(3) << errors.back() << std::defaultfloat;
-      if (errors.size() > 1)
-        out << ", observed order " << std::fixed << std::setprecision(2)
-            << std::log(errors[errors.size() - 2] / errors.back())
-                 / std::log(2.0)
-            << std::defaultfloat;
-      out << std::endl;
+      std::vector<double> errors;
+      for (const unsigned int around : {40u, 80u, 160u})
+        {
+          {
+            std::ofstream prm("convergence.prm");
+            prm << "subsection Mesh\n set Elements around = " << around
+                << "\n set Radial elements outer ring = " << 3 * around / 40
+                << "\n set Radial elements inner ring = " << 3 * around / 40
+                << "\nend\nsubsection Materials\n"
+                << " set Kinematics = small strain\nend\n"
+                << "subsection Contact\n set Integration schemes = " << scheme
+                << "\nend\nsubsection Load program\n set Ramp steps = 1\n"
+                << "end\nsubsection Output\n set VTU interval = 0\n"
+                << " set Print timing = false\n set Write history = false\n"
+                << "end\nsubsection Newton\n set Verbose = false\nend\n";
+          }
+          Parameters parameters;
+          parameters.read("convergence.prm");
+          std::ostringstream log;
+          RingContactProblem problem(parameters,
+                                     parameters.contact.schemes.front(),
+                                     log);
+          check(problem.run(), "the step converges");
+          errors.push_back(std::abs(problem.history().back().relative_error));
+          out << scheme << ", " << std::setw(3) << around
+              << " elements around: relative error " << std::scientific
+              << std::setprecision(3) << errors.back() << std::defaultfloat;
+          if (errors.size() > 1)
+            out << ", observed order " << std::fixed << std::setprecision(2)
+                << std::log(errors[errors.size() - 2] / errors.back()) /
+                     std::log(2.0)
+                << std::defaultfloat;
+          out << std::endl;
+        }
+      check(errors[1] < errors[0] && errors[2] < errors[1],
+            scheme + ": the error falls with refinement");
+      check(std::log(errors[1] / errors[2]) / std::log(2.0) > 1.5,
+            scheme + ": at least order 1.5 between 80 and 160 around");
     }
-    check(errors[1] < errors[0] && errors[2] < errors[1],
-          scheme + ": the error falls with refinement");
-    check(std::log(errors[1] / errors[2]) / std::log(2.0) > 1.5,
-          scheme + ": at least order 1.5 between 80 and 160 around");
-  }
 }

@@ -51,72 +51,75 @@ main()
 
   const double R2 = 0.6, h = 2 * numbers::PI / 40;
   for (const unsigned int degree : {1u, 2u, 3u})
-  {
-    ContactSurface master(dof_handler, Ids::outer_ring_contact, degree);
-    master.update(zero);
-    check(master.segments().size() == 40, "40 master segments");
-    double       worst_gap = 0, worst_t = 0;
-    unsigned int wrong_segment = 0;
-    for (unsigned int k = 0; k < 400; ++k)
     {
-      // Points between r = 0.45 and 0.6, all around, in the middle
-      // 80 % of a segment's angle.
-      const unsigned int j  = k / 10;
-      const double       a0 = j * h, a1 = (j + 1) * h;
-      const double       phi = a0 + (0.1 + 0.8 * (k % 10) / 9.0) * h;
-      const double       r   = 0.45 + 0.15 * ((k * 7) % 11) / 10.0;
-      const Point<2>     x(r * std::cos(phi), r * std::sin(phi));
-      const Projection   p  = master.project(x);
-      const Point<2>     xm = master.current_point(p.segment, p.t).x;
-      // The foot of the projection lies on the segment between a0, a1.
-      const double foot = std::atan2(xm[1], xm[0]) < -1e-12
-                            ? std::atan2(xm[1], xm[0]) + 2 * numbers::PI
-                            : std::atan2(xm[1], xm[0]);
-      if (p.at_vertex || p.clamped || foot < a0 - 1e-12 || foot > a1 + 1e-12)
-        ++wrong_segment;
-      // The master's outward normal points to the centre: the gap of a
-      // point inside the circle is positive. Straight: distance to the
-      // chord; curved: to the circle, along the radius.
-      const double mid = 0.5 * (a0 + a1);
-      const double exact_gap
-        = degree == 1 ? R2 * std::cos(h / 2) - r * std::cos(phi - mid) : R2 - r;
-      const double exact_foot
-        = degree == 1
-            ? mid + std::atan(r * std::sin(phi - mid) / (R2 * std::cos(h / 2)))
-            : phi;
-      worst_gap = std::max(worst_gap, std::abs(p.gap - exact_gap));
-      worst_t   = std::max(worst_t, std::abs(foot - exact_foot) / h);
-    }
-    // Interpolation error of a degree-m curve through Gauss-Lobatto
-    // points on the circle: about R (h/2)^(m+1) / (m+1)!.
-    const double tolerance = degree == 1 ? 1e-12 : degree == 2 ? 2e-5 : 5e-7;
-    out << "mapping degree " << degree
-        << ": segments found right: " << (wrong_segment == 0 ? "all" : "NO")
-        << ", gap error below " << std::scientific << std::setprecision(0)
-        << tolerance << std::fixed << std::setprecision(6) << ": "
-        << (worst_gap < tolerance ? "yes" : "NO")
-        << ", foot of the projection right: "
-        << (worst_t < (degree == 1 ? 1e-12 : 1e-3) ? "yes" : "NO") << std::endl;
-    check(wrong_segment == 0, "search finds the right segment");
-    check(worst_gap < tolerance, "gap error " + std::to_string(worst_gap));
-    check(worst_t < (degree == 1 ? 1e-12 : 1e-3),
-          "foot of the projection off by " + std::to_string(worst_t)
-            + " segments");
+      ContactSurface master(dof_handler, Ids::outer_ring_contact, degree);
+      master.update(zero);
+      check(master.segments().size() == 40, "40 master segments");
+      double       worst_gap = 0, worst_t = 0;
+      unsigned int wrong_segment = 0;
+      for (unsigned int k = 0; k < 400; ++k)
+        {
+          // Points between r = 0.45 and 0.6, all around, in the middle
+          // 80 % of a segment's angle.
+          const unsigned int j  = k / 10;
+          const double       a0 = j * h, a1 = (j + 1) * h;
+          const double       phi = a0 + (0.1 + 0.8 * (k % 10) / 9.0) * h;
+          const double       r   = 0.45 + 0.15 * ((k * 7) % 11) / 10.0;
+          const Point<2>     x(r * std::cos(phi), r * std::sin(phi));
+          const Projection   p  = master.project(x);
+          const Point<2>     xm = master.current_point(p.segment, p.t).x;
+          // The foot of the projection lies on the segment between a0, a1.
+          const double foot = std::atan2(xm[1], xm[0]) < -1e-12 ?
+                                std::atan2(xm[1], xm[0]) + 2 * numbers::PI :
+                                std::atan2(xm[1], xm[0]);
+          if (p.at_vertex || p.clamped || foot < a0 - 1e-12 ||
+              foot > a1 + 1e-12)
+            ++wrong_segment;
+          // The master's outward normal points to the centre: the gap of a
+          // point inside the circle is positive. Straight: distance to the
+          // chord; curved: to the circle, along the radius.
+          const double mid = 0.5 * (a0 + a1);
+          const double exact_gap =
+            degree == 1 ? R2 * std::cos(h / 2) - r * std::cos(phi - mid) :
+                          R2 - r;
+          const double exact_foot = degree == 1 ?
+                                      mid + std::atan(r * std::sin(phi - mid) /
+                                                      (R2 * std::cos(h / 2))) :
+                                      phi;
+          worst_gap = std::max(worst_gap, std::abs(p.gap - exact_gap));
+          worst_t   = std::max(worst_t, std::abs(foot - exact_foot) / h);
+        }
+      // Interpolation error of a degree-m curve through Gauss-Lobatto
+      // points on the circle: about R (h/2)^(m+1) / (m+1)!.
+      const double tolerance = degree == 1 ? 1e-12 : degree == 2 ? 2e-5 : 5e-7;
+      out << "mapping degree " << degree
+          << ": segments found right: " << (wrong_segment == 0 ? "all" : "NO")
+          << ", gap error below " << std::scientific << std::setprecision(0)
+          << tolerance << std::fixed << std::setprecision(6) << ": "
+          << (worst_gap < tolerance ? "yes" : "NO")
+          << ", foot of the projection right: "
+          << (worst_t < (degree == 1 ? 1e-12 : 1e-3) ? "yes" : "NO")
+          << std::endl;
+      check(wrong_segment == 0, "search finds the right segment");
+      check(worst_gap < tolerance, "gap error " + std::to_string(worst_gap));
+      check(worst_t < (degree == 1 ? 1e-12 : 1e-3),
+            "foot of the projection off by " + std::to_string(worst_t) +
+              " segments");
 
-    // A point that penetrates the master at a vertex, on its bisector:
-    // paired with the vertex, whose normal is radial (the average of the
-    // two segments' normals), gap -0.01.
-    const Point<2>     near(0.61 * std::cos(3 * h), 0.61 * std::sin(3 * h));
-    const Projection   p = master.project(near);
-    const Tensor<1, 2> n = master.normal(p);
-    out << "  point beyond a vertex on its bisector: gap " << p.gap
-        << ", normal . e_r = " << n * near / near.norm() << std::endl;
-    // On the faceted surface the point is in the corner's normal cone:
-    // only the vertex is closest. On curved surfaces the tangent at the
-    // vertex is continuous up to the interpolation error.
-    const double curved = degree == 1 ? 1e-12 : 1e-6;
-    check(p.at_vertex || degree > 1, "vertex pairing on a faceted surface");
-    check(std::abs(p.gap + 0.01) < curved, "gap at the vertex");
-    check(std::abs(n * near / near.norm() + 1) < curved, "radial normal");
-  }
+      // A point that penetrates the master at a vertex, on its bisector:
+      // paired with the vertex, whose normal is radial (the average of the
+      // two segments' normals), gap -0.01.
+      const Point<2>     near(0.61 * std::cos(3 * h), 0.61 * std::sin(3 * h));
+      const Projection   p = master.project(near);
+      const Tensor<1, 2> n = master.normal(p);
+      out << "  point beyond a vertex on its bisector: gap " << p.gap
+          << ", normal . e_r = " << n * near / near.norm() << std::endl;
+      // On the faceted surface the point is in the corner's normal cone:
+      // only the vertex is closest. On curved surfaces the tangent at the
+      // vertex is continuous up to the interpolation error.
+      const double curved = degree == 1 ? 1e-12 : 1e-6;
+      check(p.at_vertex || degree > 1, "vertex pairing on a faceted surface");
+      check(std::abs(p.gap + 0.01) < curved, "gap at the vertex");
+      check(std::abs(n * near / near.norm() + 1) < curved, "radial normal");
+    }
 }

@@ -19,13 +19,13 @@ namespace
   {
     unsigned int d = 0;
     for (;; ++d)
-    {
-      double sum = 0;
-      for (unsigned int i = 0; i < q.size(); ++i)
-        sum += q.weight(i) * std::pow(q.point(i)[0], d);
-      if (std::abs(sum - 1.0 / (d + 1)) > 1e-13)
-        return d - 1;
-    }
+      {
+        double sum = 0;
+        for (unsigned int i = 0; i < q.size(); ++i)
+          sum += q.weight(i) * std::pow(q.point(i)[0], d);
+        if (std::abs(sum - 1.0 / (d + 1)) > 1e-13)
+          return d - 1;
+      }
   }
 } // namespace
 
@@ -35,8 +35,7 @@ main()
   auto &out = RingContactTests::deallog_file;
   out << std::setprecision(8);
 
-  const auto show = [&](const std::string &text, const unsigned int degree)
-  {
+  const auto show = [&](const std::string &text, const unsigned int degree) {
     const IntegrationScheme scheme = IntegrationScheme::parse(text);
     const Quadrature<1>     q      = contact_quadrature(scheme, degree);
     out << std::left << std::setw(16) << scheme.name() << " on Q" << degree
@@ -62,22 +61,22 @@ main()
         "nodal on Q2 is Simpson's rule");
 
   for (unsigned int n = 1; n <= 10; ++n)
-  {
-    const auto q = show("Gauss " + std::to_string(n), 1);
-    check(q.size() == n && exactness(q) == 2 * n - 1,
-          "Gauss n is exact to degree 2n - 1");
-  }
+    {
+      const auto q = show("Gauss " + std::to_string(n), 1);
+      check(q.size() == n && exactness(q) == 2 * n - 1,
+            "Gauss n is exact to degree 2n - 1");
+    }
   for (unsigned int n = 1; n <= 4; ++n)
-  {
-    const auto q = show("Simpson " + std::to_string(n), 1);
-    check(q.size() == 2 * n + 1 && exactness(q) == 3,
-          "composite Simpson: 2n + 1 points, exact to degree 3");
-  }
+    {
+      const auto q = show("Simpson " + std::to_string(n), 1);
+      check(q.size() == 2 * n + 1 && exactness(q) == 3,
+            "composite Simpson: 2n + 1 points, exact to degree 3");
+    }
   for (const unsigned int n : {1u, 2u, 4u, 6u})
-  {
-    const auto q = show("Newton-Cotes " + std::to_string(n), 1);
-    check(q.size() == n + 1, "closed Newton-Cotes: n + 1 points");
-  }
+    {
+      const auto q = show("Newton-Cotes " + std::to_string(n), 1);
+      check(q.size() == n + 1, "closed Newton-Cotes: n + 1 points");
+    }
 
   // Names that are refused, with the reason.
   for (const std::string bad : {"Gauss",
@@ -86,15 +85,15 @@ main()
                                 "Lobatto 3",
                                 "Newton-Cotes 3",
                                 "Gauss 2 3"})
-  {
-    try
     {
-      IntegrationScheme::parse(bad);
-      check(false, "'" + bad + "' must be refused");
+      try
+        {
+          IntegrationScheme::parse(bad);
+          check(false, "'" + bad + "' must be refused");
+        }
+      catch (const std::exception &e)
+        {
+          out << "refused: " << e.what() << std::endl;
+        }
     }
-    catch (const std::exception &e)
-    {
-      out << "refused: " << e.what() << std::endl;
-    }
-  }
 }

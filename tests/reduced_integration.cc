@@ -51,8 +51,8 @@ namespace
         for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
           K(i, j) += scalar_product(fe_values[u].gradient(i, q),
                                     double_contract<2, 0, 3, 1>(
-                                      A, fe_values[u].gradient(j, q)))
-                     * fe_values.JxW(q);
+                                      A, fe_values[u].gradient(j, q))) *
+                     fe_values.JxW(q);
     Vector<double>     values;
     FullMatrix<double> vectors;
     K.compute_eigenvalues_symmetric(-1e300, 1e300, 0, values, vectors);
@@ -113,6 +113,6 @@ main()
       << "largest relative difference over the 21 steps below 1e-3: "
       << (largest < 1e-3 ? "yes" : "NO") << std::endl;
   check(largest < 1e-3,
-        "reduced integration changes the pressure by "
-          + std::to_string(largest));
+        "reduced integration changes the pressure by " +
+          std::to_string(largest));
 }

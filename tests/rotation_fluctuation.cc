@@ -45,18 +45,18 @@ namespace
     check(problem.run(), scheme + ": the rotation is solved");
     double smallest = 1, largest = -1;
     for (const auto &row : problem.history())
-    {
-      smallest = std::min(smallest, row.relative_error);
-      largest  = std::max(largest, row.relative_error);
-    }
+      {
+        smallest = std::min(smallest, row.relative_error);
+        largest  = std::max(largest, row.relative_error);
+      }
     const double points = 100 * (largest - smallest);
     RingContactTests::deallog_file
       << std::left << std::setw(16) << scheme
       << (smooth ? " smoothed normals" : " faceted normals ") << ", Q" << degree
       << ", mapping degree " << mapping_degree << ": fluctuation below "
-      << (points < 0.02  ? "0.02"
-          : points < 0.1 ? "0.1"
-                         : "1 or more")
+      << (points < 0.02 ? "0.02" :
+          points < 0.1  ? "0.1" :
+                          "1 or more")
       << " percentage points" << std::endl;
     return points;
   }

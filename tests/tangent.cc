@@ -43,16 +43,16 @@ namespace
     const double h     = 1e-6;
     for (unsigned int k = 0; k < 2; ++k)
       for (unsigned int L = 0; L < 2; ++L)
-      {
-        Tensor<2, 2> Hp = H, Hm = H;
-        Hp[k][L] += h;
-        Hm[k][L] -= h;
-        const Tensor<2, 2> fd
-          = (material.stress(Hp) - material.stress(Hm)) / (2 * h);
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int J = 0; J < 2; ++J)
-            worst = std::max(worst, std::abs(fd[i][J] - A[i][J][k][L]));
-      }
+        {
+          Tensor<2, 2> Hp = H, Hm = H;
+          Hp[k][L] += h;
+          Hm[k][L] -= h;
+          const Tensor<2, 2> fd =
+            (material.stress(Hp) - material.stress(Hm)) / (2 * h);
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int J = 0; J < 2; ++J)
+              worst = std::max(worst, std::abs(fd[i][J] - A[i][J][k][L]));
+        }
     const double relative = worst / A.norm();
     RingContactTests::deallog_file
       << name << ": tangent matches finite differences: "
@@ -70,8 +70,7 @@ namespace
         , analytic(analytic)
         , p(p)
         , angle(angle)
-    {
-    }
+    {}
 
     double
     value(const Point<2> &X, const unsigned int component) const override
@@ -81,10 +80,10 @@ namespace
       const double r     = X.norm();
       const double theta = std::atan2(X[1], X[0]);
       // Turn the inner ring rigidly (more near R3, less at R2).
-      const double turn
-        = r < 0.6 - 1e-9 ? angle * (0.6 - r) / 0.4 + 0.3 * angle : 0.0;
-      const double radius = r + analytic.radial_displacement(r, p)
-                            + 1e-4 * std::sin(3 * theta) * r;
+      const double turn =
+        r < 0.6 - 1e-9 ? angle * (0.6 - r) / 0.4 + 0.3 * angle : 0.0;
+      const double radius =
+        r + analytic.radial_displacement(r, p) + 1e-4 * std::sin(3 * theta) * r;
       const Point<2> x(radius * std::cos(theta + turn),
                        radius * std::sin(theta + turn));
       return x[component] - X[component];
@@ -111,8 +110,8 @@ namespace
           << " set Smooth master normals = " << (smooth ? "true" : "false")
           << "\nend\nsubsection Materials\n"
           << " set Kinematics = "
-          << (kinematics == Kinematics::finite_strain ? "finite strain"
-                                                      : "small strain")
+          << (kinematics == Kinematics::finite_strain ? "finite strain" :
+                                                        "small strain")
           << "\nend\nsubsection Output\n set Print timing = false\n"
           << " set VTU interval = 0\nend\nsubsection Mesh\n"
           << " set Elements around = 12\n set Radial elements outer ring = 2\n"
@@ -142,21 +141,21 @@ namespace
       const auto &slave = problem.contact_interface().slave_surface();
       std::set<types::global_dof_index> moved;
       for (unsigned int s = 0; s < slave.segments().size(); ++s)
-      {
-        const auto &segment = slave.segments()[s];
-        for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
         {
-          if (!moved.insert(segment.dofs_x[i]).second)
-            continue;
-          const double   t = i == 0 ? 0.0 : i == 1 ? 1.0 : 0.5;
-          const Point<2> X = slave.reference_point(s, t).x;
-          const Point<2> x(X[0] + u(segment.dofs_x[i]),
-                           X[1] + u(segment.dofs_y[i]));
-          const double   c = std::cos(slide), sn = std::sin(slide);
-          u(segment.dofs_x[i]) += c * x[0] - sn * x[1] - x[0];
-          u(segment.dofs_y[i]) += sn * x[0] + c * x[1] - x[1];
+          const auto &segment = slave.segments()[s];
+          for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
+            {
+              if (!moved.insert(segment.dofs_x[i]).second)
+                continue;
+              const double   t = i == 0 ? 0.0 : i == 1 ? 1.0 : 0.5;
+              const Point<2> X = slave.reference_point(s, t).x;
+              const Point<2> x(X[0] + u(segment.dofs_x[i]),
+                               X[1] + u(segment.dofs_y[i]));
+              const double   c = std::cos(slide), sn = std::sin(slide);
+              u(segment.dofs_x[i]) += c * x[0] - sn * x[1] - x[0];
+              u(segment.dofs_y[i]) += sn * x[0] + c * x[1] - x[1];
+            }
         }
-      }
     }
     problem.assemble_newton_system();
     const auto          &Kref        = problem.tangent_matrix();
@@ -180,62 +179,62 @@ namespace
 
     double worst = 0;
     for (const auto j : columns)
-    {
-      if (constraints.is_constrained(j))
-        continue;
-      const double h  = (std::find(contact.multiplier_dofs().begin(),
-                                  contact.multiplier_dofs().end(),
-                                  j)
-                        != contact.multiplier_dofs().end())
-                          ? 1e-2 * analytic.contact_pressure(1e7) * 1e-6
-                          : 1e-8;
-      const double u0 = u(j);
-      u(j)            = u0 + h;
-      problem.assemble_newton_system();
-      Vector<double> plus = problem.residual_rhs();
-      u(j)                = u0 - h;
-      problem.assemble_newton_system();
-      Vector<double> minus = problem.residual_rhs();
-      u(j)                 = u0;
-      // rhs = -R, so dR/du_j = -(plus - minus) / 2h.
-      double column_norm = 0, difference = 0;
-      for (types::global_dof_index i = 0; i < u.size(); ++i)
       {
-        if (constraints.is_constrained(i))
+        if (constraints.is_constrained(j))
           continue;
-        const double fd = -(plus(i) - minus(i)) / (2 * h);
-        const double k  = Kref.el(i, j);
-        column_norm += k * k;
-        difference += (fd - k) * (fd - k);
+        const double h  = (std::find(contact.multiplier_dofs().begin(),
+                                    contact.multiplier_dofs().end(),
+                                    j) != contact.multiplier_dofs().end()) ?
+                            1e-2 * analytic.contact_pressure(1e7) * 1e-6 :
+                            1e-8;
+        const double u0 = u(j);
+        u(j)            = u0 + h;
+        problem.assemble_newton_system();
+        Vector<double> plus = problem.residual_rhs();
+        u(j)                = u0 - h;
+        problem.assemble_newton_system();
+        Vector<double> minus = problem.residual_rhs();
+        u(j)                 = u0;
+        // rhs = -R, so dR/du_j = -(plus - minus) / 2h.
+        double column_norm = 0, difference = 0;
+        for (types::global_dof_index i = 0; i < u.size(); ++i)
+          {
+            if (constraints.is_constrained(i))
+              continue;
+            const double fd = -(plus(i) - minus(i)) / (2 * h);
+            const double k  = Kref.el(i, j);
+            column_norm += k * k;
+            difference += (fd - k) * (fd - k);
+          }
+        if (column_norm > 0 && std::sqrt(difference / column_norm) > worst)
+          {
+            worst = std::sqrt(difference / column_norm);
+            if (getenv("TANGENT_DEBUG"))
+              for (types::global_dof_index i = 0; i < u.size(); ++i)
+                if (!constraints.is_constrained(i))
+                  {
+                    const double fd = -(plus(i) - minus(i)) / (2 * h);
+                    if (std::abs(fd - Kref.el(i, j)) >
+                        1e-4 * std::sqrt(column_norm))
+                      std::cerr << "col " << j << " row " << i << " K "
+                                << Kref.el(i, j) << " fd " << fd << std::endl;
+                  }
+          }
       }
-      if (column_norm > 0 && std::sqrt(difference / column_norm) > worst)
-      {
-        worst = std::sqrt(difference / column_norm);
-        if (getenv("TANGENT_DEBUG"))
-          for (types::global_dof_index i = 0; i < u.size(); ++i)
-            if (!constraints.is_constrained(i))
-            {
-              const double fd = -(plus(i) - minus(i)) / (2 * h);
-              if (std::abs(fd - Kref.el(i, j)) > 1e-4 * std::sqrt(column_norm))
-                std::cerr << "col " << j << " row " << i << " K "
-                          << Kref.el(i, j) << " fd " << fd << std::endl;
-            }
-      }
-    }
     problem.assemble_newton_system();
-    const std::string name
-      = scheme + (vertex ? ", at master vertices" : "")
-        + (smooth ? ", smoothed normals" : "") + ", mapping degree "
-        + std::to_string(mapping_degree) + ", "
-        + (kinematics == Kinematics::finite_strain ? "finite strain"
-                                                   : "small strain");
+    const std::string name =
+      scheme + (vertex ? ", at master vertices" : "") +
+      (smooth ? ", smoothed normals" : "") + ", mapping degree " +
+      std::to_string(mapping_degree) + ", " +
+      (kinematics == Kinematics::finite_strain ? "finite strain" :
+                                                 "small strain");
     RingContactTests::deallog_file
       << name << ": " << columns.size()
       << " columns of the Newton matrix match finite differences: "
       << (worst < 1e-5 ? "yes" : "NO") << std::endl;
     check(worst < 1e-5,
-          name + ": tangent differs from finite differences by "
-            + std::to_string(worst));
+          name + ": tangent differs from finite differences by " +
+            std::to_string(worst));
   }
 } // namespace
 

@@ -19,11 +19,11 @@ namespace RingContactTests
   check(const bool condition, const std::string &what)
   {
     if (!condition)
-    {
-      deallog_file << "FAILED: " << what << std::endl;
-      std::cerr << "FAILED: " << what << std::endl;
-      std::exit(1);
-    }
+      {
+        deallog_file << "FAILED: " << what << std::endl;
+        std::cerr << "FAILED: " << what << std::endl;
+        std::exit(1);
+      }
   }
 } // namespace RingContactTests
 

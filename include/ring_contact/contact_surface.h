@@ -93,8 +93,8 @@ namespace RingContact
     std::vector<Tensor<1, 2>> nodal_displacements;
     /// The segments that share the vertex at t = 0 and t = 1 (invalid at
     /// the end of an open surface), and the vertex's parameter on them.
-    std::array<unsigned int, 2> neighbours
-      = {{numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
+    std::array<unsigned int, 2> neighbours = {
+      {numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
     std::array<double, 2> neighbour_t = {{0, 0}};
   };
 
