@@ -124,6 +124,29 @@ namespace RingContact
     return n_changed;
   }
 
+  template <typename Projector>
+  void
+  ContactInterface::complete_point(ContactPoint         &point,
+                                   const unsigned int    slave_segment,
+                                   const Vector<double> &solution,
+                                   const Projector      &project) const
+  {
+    // The point on its piece [eta_a, eta_b] ([0, 1] for fixed rules), its
+    // partner, its gap and its length element.
+    point.slave_segment  = slave_segment;
+    const double length  = point.piece[1] - point.piece[0];
+    point.eta            = point.piece[0] + length * point.xi;
+    point.weight         = length * point.w;
+    const CurvePoint x   = slave.current_point(slave_segment, point.eta);
+    point.projection     = project(x.x);
+    point.current_length = x.dx.norm() * point.weight;
+    if (geometrically_linear)
+      point.projection.gap += linear_gap_increment(solution,
+                                                   slave_segment,
+                                                   point.eta,
+                                                   point.projection);
+  }
+
   void
   ContactInterface::pair_points(const Vector<double> &solution)
   {
@@ -139,17 +162,11 @@ namespace RingContact
                                            points[index].projection.segment :
                                            numbers::invalid_unsigned_int;
           ContactPoint       point;
-          point.slave_segment  = s;
-          point.eta            = quadrature.point(q)[0];
-          point.weight         = quadrature.weight(q);
-          point.xi             = point.eta;
-          point.w              = point.weight;
-          const CurvePoint x   = slave.current_point(s, point.eta);
-          point.projection     = master.project(x.x, preferred);
-          point.current_length = x.dx.norm() * point.weight;
-          if (geometrically_linear)
-            point.projection.gap +=
-              linear_gap_increment(solution, s, point.eta, point.projection);
+          point.xi = quadrature.point(q)[0];
+          point.w  = quadrature.weight(q);
+          complete_point(point, s, solution, [&](const Point<2> &x) {
+            return master.project(x, preferred);
+          });
           new_points.push_back(point);
         }
     points = std::move(new_points);
@@ -237,19 +254,13 @@ namespace RingContact
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 ContactPoint point;
-                point.slave_segment  = s;
-                point.piece          = {{eta_a, eta_b}};
-                point.piece_end      = piece_end;
-                point.xi             = quadrature.point(q)[0];
-                point.w              = quadrature.weight(q);
-                point.eta            = eta_a + (eta_b - eta_a) * point.xi;
-                point.weight         = (eta_b - eta_a) * point.w;
-                const CurvePoint x   = slave.current_point(s, point.eta);
-                point.projection     = master.project_onto(x.x, partner);
-                point.current_length = x.dx.norm() * point.weight;
-                if (geometrically_linear)
-                  point.projection.gap += linear_gap_increment(
-                    solution, s, point.eta, point.projection);
+                point.piece     = {{eta_a, eta_b}};
+                point.piece_end = piece_end;
+                point.xi        = quadrature.point(q)[0];
+                point.w         = quadrature.weight(q);
+                complete_point(point, s, solution, [&](const Point<2> &x) {
+                  return master.project_onto(x, partner);
+                });
                 new_points.push_back(point);
               }
           }

@@ -72,6 +72,26 @@ namespace RingContact
 
   namespace
   {
+    // Newton's method for f(t) = 0 on a segment from t0, with f and f'
+    // given by `f_and_slope`; t is kept in [-1, 2] (a projection further
+    // out is of no use), and returned as it is after convergence or 30
+    // iterations.
+    template <typename Function>
+    double
+    solve_on_segment(double t, const Function &f_and_slope)
+    {
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          const auto [f, slope] = f_and_slope(t);
+          const double dt       = -f / slope;
+          t += dt;
+          if (std::abs(dt) < 1e-15 || !std::isfinite(t))
+            break;
+          t = std::max(-1.0, std::min(2.0, t));
+        }
+      return t;
+    }
+
     // Nodes of the mapping's support points on a face: Gauss-Lobatto, as in
     // MappingQ.
     std::vector<double>
@@ -291,29 +311,14 @@ namespace RingContact
     const auto cross      = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
       return a[0] * b[1] - a[1] * b[0];
     };
-    double t = project_onto_segment(x, segment, 1.0).t;
-    for (unsigned int it = 0; it < 30; ++it)
-      {
-        const CurvePoint   p     = current_point(segment, t);
-        const Tensor<1, 2> m     = (1 - t) * n0 + t * n1;
-        const double       f     = cross(x - p.x, m);
-        const double       slope = -cross(p.dx, m) + cross(x - p.x, n1 - n0);
-        const double       dt    = -f / slope;
-        t += dt;
-        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
-          break;
-        t = std::max(-1.0, std::min(2.0, t));
-      }
-    Projection projection;
-    projection.segment = segment;
-    if (!std::isfinite(t) || t < -extension || t > 1 + extension)
-      {
-        projection.clamped = true;
-        t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
-      }
-    projection.t   = t;
-    projection.gap = (x - current_point(segment, t).x) * normal(projection);
-    return projection;
+    const double t = solve_on_segment(
+      project_onto_segment(x, segment, 1.0).t, [&](const double t) {
+        const CurvePoint   p = current_point(segment, t);
+        const Tensor<1, 2> m = (1 - t) * n0 + t * n1;
+        return std::make_pair(cross(x - p.x, m),
+                              -cross(p.dx, m) + cross(x - p.x, n1 - n0));
+      });
+    return finish_projection(x, segment, t, extension);
   }
 
   void
@@ -361,18 +366,21 @@ namespace RingContact
     // Newton on r(t) = (x - x(t)) . x'(t) = 0, from the chord projection.
     const Point<2> a = current_point(segment, 0).x;
     const Point<2> b = current_point(segment, 1).x;
-    double         t = ((x - a) * (b - a)) / (b - a).norm_square();
-    for (unsigned int it = 0; it < 30; ++it)
-      {
-        const CurvePoint p     = current_point(segment, t);
-        const double     r     = (x - p.x) * p.dx;
-        const double     slope = -p.dx * p.dx + (x - p.x) * p.ddx;
-        const double     dt    = -r / slope;
-        t += dt;
-        if (std::abs(dt) < 1e-15 || !std::isfinite(t))
-          break;
-        t = std::max(-1.0, std::min(2.0, t));
-      }
+    const double   t = solve_on_segment(
+      ((x - a) * (b - a)) / (b - a).norm_square(), [&](const double t) {
+        const CurvePoint p = current_point(segment, t);
+        return std::make_pair((x - p.x) * p.dx,
+                              -p.dx * p.dx + (x - p.x) * p.ddx);
+      });
+    return finish_projection(x, segment, t, extension);
+  }
+
+  Projection
+  ContactSurface::finish_projection(const Point<2>    &x,
+                                    const unsigned int segment,
+                                    double             t,
+                                    const double       extension) const
+  {
     Projection projection;
     projection.segment = segment;
     if (!std::isfinite(t) || t < -extension || t > 1 + extension)
@@ -380,9 +388,8 @@ namespace RingContact
         projection.clamped = true;
         t                  = (!std::isfinite(t) || t < 0.5) ? 0.0 : 1.0;
       }
-    projection.t       = t;
-    const CurvePoint p = current_point(segment, t);
-    projection.gap     = (x - p.x) * normal(segment, p);
+    projection.t   = t;
+    projection.gap = (x - current_point(segment, t).x) * normal(projection);
     return projection;
   }
 

@@ -147,6 +147,14 @@ namespace RingContact
     /// one partner each.
     void
     pair_points(const Vector<double> &solution);
+    /// Fill in a contact point from its piece, xi and w: position,
+    /// partner (from `project`), gap and length element.
+    template <typename Projector>
+    void
+    complete_point(ContactPoint         &point,
+                   const unsigned int    slave_segment,
+                   const Vector<double> &solution,
+                   const Projector      &project) const;
     void
     pair_pieces(const Vector<double> &solution);
 

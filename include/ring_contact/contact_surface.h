@@ -230,6 +230,14 @@ namespace RingContact
                                   const unsigned int segment,
                                   const double       extension) const;
 
+    /// The projection at parameter t: clamped to the nearer end if t is
+    /// outside [-extension, 1 + extension], with its gap.
+    Projection
+    finish_projection(const Point<2>    &x,
+                      const unsigned int segment,
+                      double             t,
+                      const double       extension) const;
+
     Projection
     project_onto_segment(const Point<2>    &x,
                          const unsigned int segment,
