@@ -8,7 +8,7 @@
 #include <ring_contact/config.h>
 #include <ring_contact/ring_contact_problem.h>
 
-#include "tests.h"
+#include "run_problem.h"
 
 #include <cmath>
 #include <iomanip>
@@ -21,25 +21,14 @@ namespace
   std::vector<double>
   pressures(const std::string &modelisation, const std::string &scheme)
   {
-    {
-      std::ofstream prm("aster.prm");
-      prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/" << modelisation
-          << ".prm\nsubsection Contact\n set Integration schemes = " << scheme
-          << "\n set Smooth master normals = true\n"
-          << " set Reported pressure = nominal\nend\n"
-          << "subsection Output\n set VTU interval = 0\n"
-          << " set Print timing = false\n set Write history = false\nend\n"
-          << "subsection Newton\n set Verbose = false\nend\n";
-    }
-    Parameters parameters;
-    parameters.read("aster.prm");
-    std::ostringstream log;
-    RingContactProblem problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
-    check(problem.run(), modelisation + " " + scheme + " is solved");
+    std::ostringstream prm;
+    prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/" << modelisation
+        << ".prm\nsubsection Contact\n set Integration schemes = " << scheme
+        << "\n set Smooth master normals = true\n"
+        << " set Reported pressure = nominal\nend\n";
+    const auto history = RingContactTests::run_problem("aster", prm.str());
     std::vector<double> p;
-    for (const auto &row : problem.history())
+    for (const auto &row : history)
       p.push_back(row.pressure_A);
     return p;
   }

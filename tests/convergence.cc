@@ -5,7 +5,7 @@
 // printed.
 #include <ring_contact/ring_contact_problem.h>
 
-#include "tests.h"
+#include "run_problem.h"
 
 #include <cmath>
 #include <iomanip>
@@ -22,27 +22,18 @@ main()
       std::vector<double> errors;
       for (const unsigned int around : {40u, 80u, 160u})
         {
-          {
-            std::ofstream prm("convergence.prm");
-            prm << "subsection Mesh\n set Elements around = " << around
-                << "\n set Radial elements outer ring = " << 3 * around / 40
-                << "\n set Radial elements inner ring = " << 3 * around / 40
-                << "\nend\nsubsection Materials\n"
-                << " set Kinematics = small strain\nend\n"
-                << "subsection Contact\n set Integration schemes = " << scheme
-                << "\nend\nsubsection Load program\n set Ramp steps = 1\n"
-                << "end\nsubsection Output\n set VTU interval = 0\n"
-                << " set Print timing = false\n set Write history = false\n"
-                << "end\nsubsection Newton\n set Verbose = false\nend\n";
-          }
-          Parameters parameters;
-          parameters.read("convergence.prm");
-          std::ostringstream log;
-          RingContactProblem problem(parameters,
-                                     parameters.contact.schemes.front(),
-                                     log);
-          check(problem.run(), "the step converges");
-          errors.push_back(std::abs(problem.history().back().relative_error));
+          std::ostringstream prm;
+          prm << "subsection Mesh\n set Elements around = " << around
+              << "\n set Radial elements outer ring = " << 3 * around / 40
+              << "\n set Radial elements inner ring = " << 3 * around / 40
+              << "\nend\nsubsection Materials\n"
+              << " set Kinematics = small strain\nend\n"
+              << "subsection Contact\n set Integration schemes = " << scheme
+              << "\nend\nsubsection Load program\n set Ramp steps = 1\n"
+              << "end\n";
+          const auto history =
+            RingContactTests::run_problem("convergence", prm.str());
+          errors.push_back(std::abs(history.back().relative_error));
           out << scheme << ", " << std::setw(3) << around
               << " elements around: relative error " << std::scientific
               << std::setprecision(3) << errors.back() << std::defaultfloat;

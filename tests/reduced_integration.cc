@@ -15,7 +15,7 @@
 #include <ring_contact/material.h>
 #include <ring_contact/ring_contact_problem.h>
 
-#include "tests.h"
+#include "run_problem.h"
 
 #include <iomanip>
 
@@ -68,25 +68,15 @@ namespace
   std::vector<double>
   run_h(const bool reduced)
   {
-    {
-      std::ofstream prm("h.prm");
-      prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/ssnp152h.prm\n"
-          << "subsection Finite elements\n set Reduced integration = "
-          << (reduced ? "true" : "false") << "\nend\n"
-          << "subsection Contact\n set Integration schemes = segment-based "
-             "3\nend\nsubsection Output\n set VTU interval = 0\n"
-          << " set Print timing = false\n set Write history = false\nend\n"
-          << "subsection Newton\n set Verbose = false\nend\n";
-    }
-    Parameters parameters;
-    parameters.read("h.prm");
-    std::ostringstream log;
-    RingContactProblem problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
-    check(problem.run(), "modelisation H is solved");
+    std::ostringstream prm;
+    prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/ssnp152h.prm\n"
+        << "subsection Finite elements\n set Reduced integration = "
+        << (reduced ? "true" : "false") << "\nend\n"
+        << "subsection Contact\n set Integration schemes = segment-based "
+           "3\nend\n";
+    const auto          history = RingContactTests::run_problem("h", prm.str());
     std::vector<double> pressures;
-    for (const auto &row : problem.history())
+    for (const auto &row : history)
       pressures.push_back(row.pressure_A);
     return pressures;
   }

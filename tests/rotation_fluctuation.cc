@@ -8,7 +8,7 @@
 #include <ring_contact/config.h>
 #include <ring_contact/ring_contact_problem.h>
 
-#include "tests.h"
+#include "run_problem.h"
 
 #include <iomanip>
 
@@ -23,28 +23,17 @@ namespace
               const unsigned int degree,
               const unsigned int mapping_degree)
   {
-    {
-      std::ofstream prm("rotation.prm");
-      prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/ssnp152c.prm\n"
-          << "subsection Contact\n set Integration schemes = " << scheme
-          << "\n set Smooth master normals = " << (smooth ? "true" : "false")
-          << "\nend\nsubsection Finite elements\n"
-          << " set Displacement degree outer ring = " << degree
-          << "\n set Displacement degree inner ring = " << degree
-          << "\n set Mapping degree = " << mapping_degree << "\nend\n"
-          << "subsection Output\n set VTU interval = 0\n"
-          << " set Print timing = false\n set Write history = false\nend\n"
-          << "subsection Newton\n set Verbose = false\nend\n";
-    }
-    Parameters parameters;
-    parameters.read("rotation.prm");
-    std::ostringstream log;
-    RingContactProblem problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
-    check(problem.run(), scheme + ": the rotation is solved");
-    double smallest = 1, largest = -1;
-    for (const auto &row : problem.history())
+    std::ostringstream prm;
+    prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/ssnp152c.prm\n"
+        << "subsection Contact\n set Integration schemes = " << scheme
+        << "\n set Smooth master normals = " << (smooth ? "true" : "false")
+        << "\nend\nsubsection Finite elements\n"
+        << " set Displacement degree outer ring = " << degree
+        << "\n set Displacement degree inner ring = " << degree
+        << "\n set Mapping degree = " << mapping_degree << "\nend\n";
+    const auto history  = RingContactTests::run_problem("rotation", prm.str());
+    double     smallest = 1, largest = -1;
+    for (const auto &row : history)
       {
         smallest = std::min(smallest, row.relative_error);
         largest  = std::max(largest, row.relative_error);
