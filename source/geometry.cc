@@ -70,12 +70,11 @@ namespace RingContact
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             {
-              const double r     = face->center().norm();
-              const bool   outer = cell->material_id() == Ids::outer_ring;
-              // face->center() of a straight face lies inside the circle.
+              const bool outer = cell->material_id() == Ids::outer_ring;
+              // The mean radius of the end points (the center of a straight
+              // face lies inside the circle).
               const double r_face =
                 0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
-              (void)r;
               if (std::abs(r_face - mesh.outer_radius) < tol)
                 face->set_boundary_id(Ids::outer_boundary);
               else if (std::abs(r_face - mesh.inner_radius) < tol)
