@@ -157,6 +157,7 @@ namespace RingContact
     /// r = R1 and r = R3, zero multiplier off the slave surface.
     AffineConstraints<double> constraints;
     std::vector<bool>         is_dirichlet;
+    std::vector<bool>         is_multiplier;
     SparsityPattern           sparsity_pattern;
     SparseMatrix<double>      system_matrix;
     Vector<double>            system_rhs;
