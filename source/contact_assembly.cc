@@ -88,7 +88,8 @@ namespace RingContact
                 master_segments.push_back(b);
           }
         else if (projection.at_vertex)
-          master_segments.push_back(projection.neighbour);
+          master_segments.push_back(
+            m_seg.neighbours[static_cast<unsigned int>(projection.t)]);
 
         // Local unknowns: slave u_x, u_y, then u_x, u_y of each master
         // segment, then the multipliers.
@@ -283,19 +284,14 @@ namespace RingContact
           }
         else
           {
-            // Outward normal scaled by |x_m'|; at a vertex the sum over the
-            // two segments (length-weighted average).
-            const double o = m_seg.orientation;
-            normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
-            normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
-            if (projection.at_vertex)
+            if (projection.at_vertex) // xi0 is the vertex's end, 0 or 1
+              vertex_normal(static_cast<unsigned int>(xi0), normal);
+            else
               {
-                AD other[2];
-                scaled_normal(projection.neighbour,
-                              projection.neighbour_t,
-                              other);
-                normal[0] += other[0];
-                normal[1] += other[1];
+                // Outward normal scaled by |x_m'| (normalised below).
+                const double o = m_seg.orientation;
+                normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
+                normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
               }
           }
         {

@@ -58,18 +58,6 @@ namespace RingContact
     weighted_gap.assign(multiplier_dof_list.size(), 0.0);
     segment_length = slave.min_segment_length();
     active.assign(multiplier_dof_list.size(), true);
-
-    // Neighbours on the master surface: segments that share a vertex.
-    std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
-    for (unsigned int m = 0; m < master.segments().size(); ++m)
-      for (const unsigned int v : master.segments()[m].vertices)
-        segments_at_vertex[v].push_back(m);
-    master_neighbours.resize(master.segments().size());
-    for (unsigned int m = 0; m < master.segments().size(); ++m)
-      for (const unsigned int v : master.segments()[m].vertices)
-        for (const unsigned int other : segments_at_vertex[v])
-          if (other != m)
-            master_neighbours[m].push_back(other);
   }
 
   unsigned int
@@ -276,16 +264,12 @@ namespace RingContact
         if (pattern_pairs.count(
               {point.slave_segment, point.projection.segment}) == 0)
           return false;
-        if (point.projection.at_vertex &&
-            pattern_pairs.count(
-              {point.slave_segment, point.projection.neighbour}) == 0)
-          return false;
-        if (master.smooths_normals() || segment_based)
-          for (const unsigned int b :
-               master.segments()[point.projection.segment].neighbours)
-            if (b != numbers::invalid_unsigned_int &&
-                pattern_pairs.count({point.slave_segment, b}) == 0)
-              return false;
+        // The neighbours enter through vertex and smoothed normals.
+        for (const unsigned int b :
+             master.segments()[point.projection.segment].neighbours)
+          if (b != numbers::invalid_unsigned_int &&
+              pattern_pairs.count({point.slave_segment, b}) == 0)
+            return false;
       }
     return true;
   }
@@ -300,8 +284,10 @@ namespace RingContact
     for (const auto &point : points)
       {
         pattern_pairs.insert({point.slave_segment, point.projection.segment});
-        for (const unsigned int m : master_neighbours[point.projection.segment])
-          pattern_pairs.insert({point.slave_segment, m});
+        for (const unsigned int m :
+             master.segments()[point.projection.segment].neighbours)
+          if (m != numbers::invalid_unsigned_int)
+            pattern_pairs.insert({point.slave_segment, m});
       }
     std::map<unsigned int, std::vector<types::global_dof_index>> block;
     for (const auto &[s, m] : pattern_pairs)

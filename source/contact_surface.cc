@@ -197,6 +197,7 @@ namespace RingContact
     displacement               = LagrangeBasis1D(displacement_nodes);
     multiplier                 = LagrangeBasis1D(multiplier_nodes);
     multiplier_node_parameters = multiplier_nodes;
+    std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (const unsigned int v : segment_list[s].vertices)
         segments_at_vertex[v].push_back(s);
@@ -292,11 +293,8 @@ namespace RingContact
     if (!projection.at_vertex)
       return normal(projection.segment,
                     current_point(projection.segment, projection.t));
-    // Length-weighted average of the two segments' normals at the vertex.
-    const Tensor<1, 2> n =
-      scaled_normal(projection.segment, projection.t) +
-      scaled_normal(projection.neighbour, projection.neighbour_t);
-    return n / n.norm();
+    return vertex_normal(projection.segment,
+                         static_cast<unsigned int>(projection.t));
   }
 
   Projection
@@ -459,17 +457,14 @@ namespace RingContact
         std::abs(1 - best.t) < at_vertex)
       {
         const unsigned int end = best.t < 0.5 ? 0 : 1;
-        const unsigned int v   = segment_list[best.segment].vertices[end];
-        for (const unsigned int other : segments_at_vertex.at(v))
-          if (other != best.segment)
-            {
-              best.at_vertex   = true;
-              best.t           = end;
-              best.neighbour   = other;
-              best.neighbour_t = segment_list[other].vertices[0] == v ? 0 : 1;
-              best.gap =
-                (x - current_point(best.segment, best.t).x) * normal(best);
-            }
+        if (segment_list[best.segment].neighbours[end] !=
+            numbers::invalid_unsigned_int)
+          {
+            best.at_vertex = true;
+            best.t         = end;
+            best.gap =
+              (x - current_point(best.segment, best.t).x) * normal(best);
+          }
       }
     return best;
   }

@@ -380,9 +380,8 @@ namespace RingContact
               << '\n';
         if (!std::isfinite(final_residual))
           return false;
-        if (n_changed == 0 &&
-            (final_residual < newton.tolerance ||
-             (last_update < 1e-10 && final_residual < 1e-4)))
+        if (n_changed == 0 && (final_residual < newton.tolerance ||
+                               (last_update < 1e-10 && final_residual < 1e-4)))
           return true;
         if (it == newton.max_iterations ||
             (it > 2 && final_residual > 1e6 * first_residual))

@@ -173,8 +173,6 @@ namespace RingContact
     double              segment_length; ///< smallest slave segment
 
     std::vector<ContactPoint> points;
-    /// Master segments next to each master segment (sharing a vertex).
-    std::vector<std::vector<unsigned int>> master_neighbours;
     /// (slave segment, master segment) pairs in the sparsity pattern.
     std::set<std::pair<unsigned int, unsigned int>> pattern_pairs;
   };

@@ -108,11 +108,10 @@ namespace RingContact
     /// projection exists (outside a convex corner): t is then fixed.
     bool clamped = false;
     /// True if the closest point is a vertex shared with a neighbouring
-    /// segment: the normal is then the vertex normal, the length-weighted
-    /// average of the normals of the two segments, and t (0 or 1) is fixed.
-    bool         at_vertex   = false;
-    unsigned int neighbour   = numbers::invalid_unsigned_int;
-    double       neighbour_t = 0; ///< the vertex's parameter on `neighbour`
+    /// segment (SurfaceSegment::neighbours[t]): the normal is then the
+    /// vertex normal, the length-weighted average of the normals of the two
+    /// segments, and t (0 or 1) is fixed.
+    bool at_vertex = false;
   };
 
   class ContactSurface
@@ -251,8 +250,6 @@ namespace RingContact
     std::vector<double>         multiplier_node_parameters;
     /// Vertex normals at both ends of each segment (set by update()).
     std::vector<std::array<Tensor<1, 2>, 2>> vertex_normals;
-    /// The segments that share each vertex (by global vertex index).
-    std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
 
     using Box = std::pair<BoundingBox<2>, unsigned int>;
     RTree<Box> search_tree;
