@@ -12,8 +12,8 @@ namespace RingContact
                                      const IntegrationScheme &scheme,
                                      const unsigned int slave_mapping_degree,
                                      const unsigned int master_mapping_degree,
-                                     const double complementarity_constant,
-                                     const bool   geometrically_linear)
+                                     const double       largest_youngs_modulus,
+                                     const bool         geometrically_linear)
       : slave(dof_handler, parameters.slave_boundary_id, slave_mapping_degree)
       , master(dof_handler,
                parameters.master_boundary_id,
@@ -21,7 +21,11 @@ namespace RingContact
                parameters.smooth_master_normals)
       , quadrature(
           contact_quadrature(scheme, slave.displacement_basis().size() - 1))
-      , complementarity_constant(complementarity_constant)
+      // Automatic complementarity constant: E / h of the slave surface.
+      , complementarity_constant(parameters.complementarity_constant > 0 ?
+                                   parameters.complementarity_constant :
+                                   largest_youngs_modulus /
+                                     slave.min_segment_length())
       , geometrically_linear(geometrically_linear)
       , segment_based(scheme.type == ContactIntegration::segment_based)
   {

@@ -95,15 +95,6 @@ namespace RingContact
       cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 : 1);
     dof_handler.distribute_dofs(fe_collection);
 
-    // Automatic complementarity constant: E / h of the slave surface.
-    double c = parameters.contact.complementarity_constant;
-    if (c == 0)
-      c = std::max(parameters.materials.youngs_modulus_outer,
-                   parameters.materials.youngs_modulus_inner) /
-          ContactSurface(dof_handler,
-                         parameters.contact.slave_boundary_id,
-                         fe.mapping_degree_of(slave_ring))
-            .min_segment_length();
     contact = std::make_unique<ContactInterface>(
       dof_handler,
       parameters.contact,
@@ -111,7 +102,8 @@ namespace RingContact
       fe.mapping_degree_of(slave_ring),
       fe.mapping_degree_of(slave_ring == Ids::outer_ring ? Ids::inner_ring :
                                                            Ids::outer_ring),
-      c,
+      std::max(parameters.materials.youngs_modulus_outer,
+               parameters.materials.youngs_modulus_inner),
       parameters.materials.kinematics == Kinematics::small_strain);
     probe_dof =
       contact->multiplier_dof_nearest_to(parameters.contact.probe_point);

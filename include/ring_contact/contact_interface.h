@@ -52,12 +52,14 @@ namespace RingContact
   class ContactInterface
   {
   public:
+    /// `largest_youngs_modulus` sets the automatic complementarity constant
+    /// E / h (h: the shortest slave segment) when the parameters give none.
     ContactInterface(const DoFHandler<2>     &dof_handler,
                      const ContactParameters &parameters,
                      const IntegrationScheme &scheme,
                      const unsigned int       slave_mapping_degree,
                      const unsigned int       master_mapping_degree,
-                     const double             complementarity_constant,
+                     const double             largest_youngs_modulus,
                      const bool               geometrically_linear);
 
     /// Pair every slave quadrature point with the current master surface,
