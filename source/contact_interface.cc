@@ -13,12 +13,15 @@ namespace RingContact
                                      const unsigned int slave_mapping_degree,
                                      const unsigned int master_mapping_degree,
                                      const double       largest_youngs_modulus,
-                                     const bool         geometrically_linear)
+                                     const bool         geometrically_linear,
+                                     const CyclicSymmetry::Sector &sector)
       : slave(dof_handler, parameters.slave_boundary_id, slave_mapping_degree)
       , master(dof_handler,
                parameters.master_boundary_id,
                master_mapping_degree,
-               parameters.smooth_master_normals)
+               parameters.smooth_master_normals,
+               sector.angle,
+               sector.copies)
       , quadrature(
           contact_quadrature(scheme, slave.displacement_basis().size() - 1))
       // Automatic complementarity constant: E / h of the slave surface.
@@ -30,22 +33,29 @@ namespace RingContact
       , segment_based(scheme.type == ContactIntegration::segment_based)
   {
     // The multiplier nodes, and w_k = int Phi_k dS with a rule that is exact
-    // for the multiplier times the reference length element.
+    // for the multiplier times the reference length element. A twin (cyclic
+    // symmetry) is the node of its image on the start side.
     const QGauss<1> exact(slave.geometry_basis().size() +
                           slave.multiplier_basis().size());
+    const auto      node_of = [&](const types::global_dof_index dof) {
+      const auto twin = sector.multiplier_twins.find(dof);
+      return twin == sector.multiplier_twins.end() ? dof : twin->second;
+    };
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       {
         const auto &segment = slave.segments()[s];
         for (unsigned int k = 0; k < segment.multiplier_dofs.size(); ++k)
           {
-            const auto dof = segment.multiplier_dofs[k];
-            if (multiplier_index.count(dof) == 0)
+            const auto dof  = segment.multiplier_dofs[k];
+            const auto node = node_of(dof);
+            if (multiplier_index.count(node) == 0)
               {
-                multiplier_index[dof] = multiplier_dof_list.size();
-                multiplier_dof_list.push_back(dof);
+                multiplier_index[node] = multiplier_dof_list.size();
+                multiplier_dof_list.push_back(node);
                 reference_weight.push_back(0.0);
               }
-            node_sites[dof].emplace_back(s, slave.multiplier_nodes()[k]);
+            multiplier_index[dof] = multiplier_index[node];
+            node_sites[node].emplace_back(s, slave.multiplier_nodes()[k]);
           }
         for (unsigned int q = 0; q < exact.size(); ++q)
           {
@@ -333,7 +343,7 @@ namespace RingContact
           u[0] += N[i] * solution(seg.dofs_x[i]);
           u[1] += N[i] * solution(seg.dofs_y[i]);
         }
-      return u;
+      return Tensor<1, 2>(seg.rotation * u);
     };
     const Tensor<1, 2> jump =
       displacement_at(slave, slave_segment, t) -
@@ -364,7 +374,17 @@ namespace RingContact
               dof  = slave.segments()[s].multiplier_dofs[k];
             }
         }
-    return dof;
+    // The node's own dof (not a cyclic twin).
+    return multiplier_dof_list[multiplier_index.at(dof)];
+  }
+
+  std::vector<types::global_dof_index>
+  ContactInterface::all_multiplier_dofs() const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &[dof, k] : multiplier_index)
+      dofs.push_back(dof);
+    return dofs;
   }
 
   double

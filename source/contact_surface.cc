@@ -3,6 +3,7 @@
 #include <deal.II/grid/manifold.h>
 
 #include <ring_contact/contact_surface.h>
+#include <ring_contact/cyclic_symmetry.h>
 
 #include <boost/geometry/index/rtree.hpp>
 
@@ -110,7 +111,9 @@ namespace RingContact
   ContactSurface::ContactSurface(const DoFHandler<2>     &dof_handler,
                                  const types::boundary_id boundary_id,
                                  const unsigned int       mapping_degree,
-                                 const bool               smooth_normals)
+                                 const bool               smooth_normals,
+                                 const double             sector_angle,
+                                 const unsigned int       copies)
       : smooth_normals(smooth_normals)
   {
     const std::vector<double> geometry_nodes =
@@ -197,6 +200,10 @@ namespace RingContact
     displacement               = LagrangeBasis1D(displacement_nodes);
     multiplier                 = LagrangeBasis1D(multiplier_nodes);
     multiplier_node_parameters = multiplier_nodes;
+    if (sector_angle > 0 && copies > 0)
+      add_rotated_copies(sector_angle, copies);
+
+    // The neighbours of each segment: the segments that share a vertex.
     std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (const unsigned int v : segment_list[s].vertices)
@@ -212,6 +219,75 @@ namespace RingContact
                 segment_list[s].neighbour_t[end] =
                   segment_list[other].vertices[0] == v ? 0.0 : 1.0;
               }
+        }
+  }
+
+  void
+  ContactSurface::add_rotated_copies(const double       sector_angle,
+                                     const unsigned int copies)
+  {
+    // The two open ends of the sector's surface: the vertices that only one
+    // segment has; `start` at angle 0, `end` at the sector angle.
+    std::map<unsigned int, unsigned int> count;
+    std::map<unsigned int, Point<2>>     position;
+    unsigned int                         n_vertices = 0;
+    for (const auto &segment : segment_list)
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const unsigned int v = segment.vertices[end];
+          ++count[v];
+          position[v] = end == 0 ? segment.reference_nodes.front() :
+                                   segment.reference_nodes.back();
+          n_vertices  = std::max(n_vertices, v + 1);
+        }
+    std::vector<unsigned int> open_ends;
+    for (const auto &[v, n] : count)
+      if (n == 1)
+        open_ends.push_back(v);
+    AssertThrow(open_ends.size() == 2,
+                ExcMessage("cyclic symmetry: the contact surface of the "
+                           "sector must be one open curve"));
+    const Tensor<2, 2> R_sector = CyclicSymmetry::rotation_matrix(sector_angle);
+    unsigned int       start = open_ends[0], end = open_ends[1];
+    if (position[start].distance(Point<2>(R_sector * position[end])) <
+        position[end].distance(Point<2>(R_sector * position[start])))
+      std::swap(start, end);
+    AssertThrow(position[end].distance(Point<2>(R_sector * position[start])) <
+                  1e-10 * position[start].norm(),
+                ExcMessage("cyclic symmetry: the ends of the contact surface "
+                           "are not images of each other"));
+
+    // Copy j (j = -copies ... copies, 0: the sector itself) of vertex v has
+    // the index v + n_vertices (j + copies + 1), v itself for j = 0; the
+    // end vertex of copy j is the start vertex of copy j + 1.
+    const auto raw_index = [&](const unsigned int v, const int j) {
+      return j == 0 ? v : v + n_vertices * (j + copies + 1);
+    };
+    const auto index = [&](const unsigned int v, const int j) {
+      return v == end ? raw_index(start, j + 1) : raw_index(v, j);
+    };
+    const unsigned int n_sector = segment_list.size();
+    for (int j = -static_cast<int>(copies); j <= static_cast<int>(copies); ++j)
+      for (unsigned int s = 0; s < n_sector; ++s)
+        {
+          if (j == 0)
+            {
+              for (auto &v : segment_list[s].vertices)
+                v = index(v, 0);
+              continue;
+            }
+          SurfaceSegment copy = segment_list[s];
+          copy.is_copy        = true;
+          copy.rotation = CyclicSymmetry::rotation_matrix(j * sector_angle);
+          for (auto &node : copy.reference_nodes)
+            node = Point<2>(copy.rotation * node);
+          // The sector's vertices may already be renumbered (j > 0).
+          for (unsigned int e = 0; e < 2; ++e)
+            {
+              const unsigned int v = copy.vertices[e];
+              copy.vertices[e] = index(v == raw_index(start, 1) ? end : v, j);
+            }
+          segment_list.push_back(copy);
         }
   }
 
@@ -329,8 +405,9 @@ namespace RingContact
         auto &segment = segment_list[s];
         segment.nodal_displacements.resize(segment.dofs_x.size());
         for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
-          segment.nodal_displacements[i] = Tensor<1, 2>(
-            {solution(segment.dofs_x[i]), solution(segment.dofs_y[i])});
+          segment.nodal_displacements[i] =
+            segment.rotation * Tensor<1, 2>({solution(segment.dofs_x[i]),
+                                             solution(segment.dofs_y[i])});
         // Box around the current segment: its end points and a few points
         // in between, extended by a margin for the curvature.
         std::vector<Point<2>> points;

@@ -18,7 +18,12 @@ namespace RingContact
     void
     make_rings(Triangulation<2> &triangulation, const MeshParameters &mesh)
     {
-      const unsigned int       n_around = mesh.elements_around;
+      // The whole rings, or (cyclic symmetry) a sector of `sector_elements`
+      // columns from angle 0, whose two radial sides are boundaries.
+      const unsigned int n_around  = mesh.elements_around;
+      const bool         sector    = mesh.sector_elements > 0;
+      const unsigned int n_columns = sector ? mesh.sector_elements : n_around;
+      const unsigned int n_vertices_around = sector ? n_columns + 1 : n_around;
       std::vector<Point<2>>    vertices;
       std::vector<CellData<2>> cells;
 
@@ -32,17 +37,17 @@ namespace RingContact
                                 const unsigned int material_id) {
         const unsigned int offset = vertices.size();
         for (unsigned int j = 0; j <= n_radial; ++j)
-          for (unsigned int i = 0; i < n_around; ++i)
+          for (unsigned int i = 0; i < n_vertices_around; ++i)
             {
               const double r   = r_in + (r_out - r_in) * j / n_radial;
               const double phi = 2 * numbers::PI * i / n_around;
               vertices.emplace_back(r * std::cos(phi), r * std::sin(phi));
             }
         const auto v = [&](const unsigned int i, const unsigned int j) {
-          return offset + j * n_around + (i % n_around);
+          return offset + j * n_vertices_around + (i % n_vertices_around);
         };
         for (unsigned int j = 0; j < n_radial; ++j)
-          for (unsigned int i = 0; i < n_around; ++i)
+          for (unsigned int i = 0; i < n_columns; ++i)
             {
               CellData<2> cell;
               cell.vertices    = {v(i, j),
@@ -64,24 +69,37 @@ namespace RingContact
 
       triangulation.create_triangulation(vertices, cells, SubCellData());
 
-      // Boundary ids from the circle a face lies on and the ring it bounds.
+      // Boundary ids from the circle a face lies on and the ring it bounds;
+      // the radial sides of a sector from their angle.
       const double tol = 1e-8 * mesh.outer_radius;
+      const double sector_angle =
+        2 * numbers::PI * mesh.sector_elements / n_around;
+      const Tensor<1, 2> end_normal(
+        {-std::sin(sector_angle), std::cos(sector_angle)});
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             {
-              const bool outer = cell->material_id() == Ids::outer_ring;
-              // The mean radius of the end points (the center of a straight
-              // face lies inside the circle).
-              const double r_face =
-                0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
-              if (std::abs(r_face - mesh.outer_radius) < tol)
-                face->set_boundary_id(Ids::outer_boundary);
-              else if (std::abs(r_face - mesh.inner_radius) < tol)
-                face->set_boundary_id(Ids::inner_boundary);
+              const bool     outer  = cell->material_id() == Ids::outer_ring;
+              const Point<2> center = face->center();
+              if (sector && std::abs(center[1]) < tol && center[0] > 0)
+                face->set_boundary_id(Ids::sector_start);
+              else if (sector && std::abs(center * end_normal) < tol)
+                face->set_boundary_id(Ids::sector_end);
               else
-                face->set_boundary_id(outer ? Ids::outer_ring_contact :
-                                              Ids::inner_ring_contact);
+                {
+                  // The mean radius of the end points (the center of a
+                  // straight face lies inside the circle).
+                  const double r_face =
+                    0.5 * (face->vertex(0).norm() + face->vertex(1).norm());
+                  if (std::abs(r_face - mesh.outer_radius) < tol)
+                    face->set_boundary_id(Ids::outer_boundary);
+                  else if (std::abs(r_face - mesh.inner_radius) < tol)
+                    face->set_boundary_id(Ids::inner_boundary);
+                  else
+                    face->set_boundary_id(outer ? Ids::outer_ring_contact :
+                                                  Ids::inner_ring_contact);
+                }
             }
     }
 

@@ -176,6 +176,17 @@ namespace RingContact
                         Patterns::Integer(0, 8),
                         "Uniform refinements of the mesh; new vertices are "
                         "placed on the circles.");
+      prm.declare_entry(
+        "Sector elements",
+        "0",
+        Patterns::Integer(0),
+        "Cyclic symmetry (generated mesh): model only a sector of this many "
+        "elements around, from angle 0, with the displacements of its two "
+        "radial sides tied by the rotation through the sector angle and the "
+        "master surface continued by rotated copies. The rings, their "
+        "meshes and the loads repeat every element, so the solution is the "
+        "whole rings' (to round-off) at a fraction of the cost. 0: the "
+        "whole rings.");
       prm.declare_entry("Patch test elements lower block",
                         "5",
                         Patterns::Integer(1),
@@ -234,9 +245,18 @@ namespace RingContact
       radial_elements_outer = prm.get_integer("Radial elements outer ring");
       radial_elements_inner = prm.get_integer("Radial elements inner ring");
       global_refinements    = prm.get_integer("Global refinements");
-      outer_radius          = prm.get_double("Outer radius");
-      interface_radius      = prm.get_double("Interface radius");
-      inner_radius          = prm.get_double("Inner radius");
+      sector_elements       = prm.get_integer("Sector elements");
+      require(sector_elements == 0 || source == MeshSource::generated,
+              "Mesh",
+              "Sector elements",
+              "needs 'Mesh source' = generated (a sector is built in code)");
+      require(sector_elements < elements_around,
+              "Mesh",
+              "Sector elements",
+              "must be smaller than 'Elements around' (0: the whole rings)");
+      outer_radius     = prm.get_double("Outer radius");
+      interface_radius = prm.get_double("Interface radius");
+      inner_radius     = prm.get_double("Inner radius");
       require(inner_radius > 0,
               "Mesh",
               "Inner radius",

@@ -95,6 +95,28 @@ namespace RingContact
       cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 : 1);
     dof_handler.distribute_dofs(fe_collection);
 
+    // Cyclic symmetry: the nodes of the sector's two sides, and the master
+    // surface continued far enough for the rotation of the load program.
+    CyclicSymmetry::Sector sector;
+    if (parameters.mesh.sector_elements > 0)
+      {
+        const auto &mesh = parameters.mesh;
+        sector.angle =
+          2 * numbers::PI * mesh.sector_elements / mesh.elements_around;
+        const double sector_in_elements =
+          mesh.sector_elements * (1u << mesh.global_refinements);
+        const double rotation =
+          parameters.load.program == LoadProgramType::rotation ?
+            std::abs(parameters.load.rotation_elements) :
+            0.0;
+        sector.copies = 1 + std::ceil(rotation / sector_in_elements);
+        cyclic_pairs  = CyclicSymmetry::find_node_pairs(dof_handler,
+                                                       mapping_collection,
+                                                       sector.angle);
+        sector.multiplier_twins =
+          CyclicSymmetry::multiplier_pairs(cyclic_pairs);
+      }
+
     contact = std::make_unique<ContactInterface>(
       dof_handler,
       parameters.contact,
@@ -104,7 +126,8 @@ namespace RingContact
                                                            Ids::outer_ring),
       std::max(parameters.materials.youngs_modulus_outer,
                parameters.materials.youngs_modulus_inner),
-      parameters.materials.kinematics == Kinematics::small_strain);
+      parameters.materials.kinematics == Kinematics::small_strain,
+      sector);
     probe_dof =
       contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
 
@@ -148,11 +171,20 @@ namespace RingContact
     is_multiplier.assign(dof_handler.n_dofs(), false);
     for (const auto i : all_multipliers)
       is_multiplier[i] = true;
-    std::set<types::global_dof_index> slave_multipliers(
-      contact->multiplier_dofs().begin(), contact->multiplier_dofs().end());
+    const auto slave_multiplier_list = contact->all_multiplier_dofs();
+    const std::set<types::global_dof_index> slave_multipliers(
+      slave_multiplier_list.begin(), slave_multiplier_list.end());
     for (const auto i : all_multipliers)
       if (slave_multipliers.count(i) == 0)
         constraints.add_line(i);
+
+    // Cyclic symmetry: the end side of the sector follows the start side.
+    if (!cyclic_pairs.empty())
+      CyclicSymmetry::add_constraints(cyclic_pairs,
+                                      2 * numbers::PI *
+                                        parameters.mesh.sector_elements /
+                                        parameters.mesh.elements_around,
+                                      constraints);
     constraints.close();
   }
 

@@ -98,6 +98,15 @@ main()
   expect_error("no_slave_boundary",
                "subsection Contact\n set Slave boundary = 600\nend\n",
                "no boundary with id 600");
+  expect_error("sector_of_a_read_mesh",
+               "subsection Mesh\n set Mesh source = gmsh file\n"
+               " set Mesh file = " +
+                 source_dir +
+                 "/meshes/ssnp152a.msh\n set Sector elements = 1\nend\n",
+               "Sector elements");
+  expect_error("sector_too_wide",
+               "subsection Mesh\n set Sector elements = 40\nend\n",
+               "smaller than 'Elements around'");
   expect_error("unknown_scheme",
                "subsection Contact\n set Integration schemes = nodal, "
                "Lobatto 3\nend\n",

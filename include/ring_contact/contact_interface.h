@@ -22,6 +22,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <ring_contact/contact_surface.h>
+#include <ring_contact/cyclic_symmetry.h>
 
 #include <array>
 #include <map>
@@ -54,13 +55,18 @@ namespace RingContact
   public:
     /// `largest_youngs_modulus` sets the automatic complementarity constant
     /// E / h (h: the shortest slave segment) when the parameters give none.
-    ContactInterface(const DoFHandler<2>     &dof_handler,
-                     const ContactParameters &parameters,
-                     const IntegrationScheme &scheme,
-                     const unsigned int       slave_mapping_degree,
-                     const unsigned int       master_mapping_degree,
-                     const double             largest_youngs_modulus,
-                     const bool               geometrically_linear);
+    /// With cyclic symmetry (`sector.angle` > 0) the master surface is
+    /// continued by rotated copies, and the two multiplier nodes of a pair
+    /// of `sector.multiplier_twins` are one contact node (the end one is
+    /// tied to the start one by the constraints).
+    ContactInterface(const DoFHandler<2>          &dof_handler,
+                     const ContactParameters      &parameters,
+                     const IntegrationScheme      &scheme,
+                     const unsigned int            slave_mapping_degree,
+                     const unsigned int            master_mapping_degree,
+                     const double                  largest_youngs_modulus,
+                     const bool                    geometrically_linear,
+                     const CyclicSymmetry::Sector &sector = {});
 
     /// Pair every slave quadrature point with the current master surface,
     /// compute the weighted gaps and choose the active set from the current
@@ -84,12 +90,18 @@ namespace RingContact
              SparseMatrix<double>            &matrix,
              Vector<double>                  &rhs) const;
 
-    /// All multiplier dofs of the slave surface.
+    /// The multiplier dofs of the slave surface, one per contact node (with
+    /// cyclic symmetry the end side's twin is left out: see
+    /// all_multiplier_dofs()).
     const std::vector<types::global_dof_index> &
     multiplier_dofs() const
     {
       return multiplier_dof_list;
     }
+
+    /// Every multiplier dof on the slave surface, twins included.
+    std::vector<types::global_dof_index>
+    all_multiplier_dofs() const;
 
     /// Number of active (closed) multiplier nodes.
     unsigned int

@@ -74,6 +74,15 @@ namespace RingContact
     Tensor<1, 2> ddx; ///< d2x/dt2
   };
 
+  /// The identity, as a rotation matrix.
+  inline Tensor<2, 2>
+  unit_rotation()
+  {
+    Tensor<2, 2> R;
+    R[0][0] = R[1][1] = 1;
+    return R;
+  }
+
   /// One boundary face of a contact surface.
   struct SurfaceSegment
   {
@@ -89,7 +98,13 @@ namespace RingContact
     std::vector<types::global_dof_index> multiplier_dofs;
     /// +1 or -1: n = orientation (dx_y, -dx_x) / |dx| is the outward normal.
     double orientation;
-    /// Current nodal displacements (set by ContactSurface::update()).
+    /// Cyclic symmetry: a rotated copy of a segment of the sector carries
+    /// the original's unknowns turned by this rotation (identity for the
+    /// segments of the mesh itself): x = R (X + u).
+    Tensor<2, 2> rotation = unit_rotation();
+    /// True for a rotated copy.
+    bool is_copy = false;
+    /// Current nodal displacements R u (set by ContactSurface::update()).
     std::vector<Tensor<1, 2>> nodal_displacements;
     /// The segments that share the vertex at t = 0 and t = 1 (invalid at
     /// the end of an open surface), and the vertex's parameter on them.
@@ -118,11 +133,17 @@ namespace RingContact
   {
   public:
     /// Collect the faces with `boundary_id`; `mapping_degree` fixes the
-    /// reference geometry of each face (straight for 1).
+    /// reference geometry of each face (straight for 1). Cyclic symmetry
+    /// (`sector_angle` > 0): the surface of the sector is continued on each
+    /// side by `copies` copies of itself turned through multiples of the
+    /// sector angle (see cyclic_symmetry.h); the copies share the
+    /// originals' unknowns.
     ContactSurface(const DoFHandler<2>     &dof_handler,
                    const types::boundary_id boundary_id,
                    const unsigned int       mapping_degree,
-                   const bool               smooth_normals = false);
+                   const bool               smooth_normals = false,
+                   const double             sector_angle   = 0,
+                   const unsigned int       copies         = 0);
 
     const std::vector<SurfaceSegment> &
     segments() const
@@ -223,6 +244,12 @@ namespace RingContact
     min_segment_length() const;
 
   private:
+    /// Add the rotated copies of the sector's segments, and give every
+    /// vertex of the continued surface one index (the end vertex of a copy
+    /// is the start vertex of the next).
+    void
+    add_rotated_copies(const double sector_angle, const unsigned int copies);
+
     /// Along the smoothed normal field: (x - x(t)) x n(t) = 0.
     Projection
     project_along_smoothed_normal(const Point<2>    &x,

@@ -96,7 +96,10 @@ namespace RingContact
     constexpr unsigned int outer_ring_contact = 300; // S1R2, r = R2
     constexpr unsigned int inner_ring_contact = 400; // S2R2, r = R2
     constexpr unsigned int inner_boundary     = 500; // S2R3, r = R3
-  }                                                  // namespace Ids
+    /// Cyclic sector: the radial sides at angle 0 and at the sector angle.
+    constexpr unsigned int sector_start = 600;
+    constexpr unsigned int sector_end   = 601;
+  } // namespace Ids
 
   struct MeshParameters
   {
@@ -106,6 +109,9 @@ namespace RingContact
     unsigned int radial_elements_outer;
     unsigned int radial_elements_inner;
     unsigned int global_refinements;
+    /// Cyclic symmetry: number of elements around in the modelled sector
+    /// (0: the whole rings). See cyclic_symmetry.h.
+    unsigned int sector_elements = 0;
     double       outer_radius;     ///< R1
     double       interface_radius; ///< R2
     double       inner_radius;     ///< R3

@@ -152,6 +152,8 @@ namespace RingContact
     /// The contact patch test (two blocks) instead of the rings.
     const bool                        patch_test;
     std::unique_ptr<ContactInterface> contact;
+    /// Cyclic symmetry: the nodes of the sector's end side and their images.
+    std::vector<CyclicSymmetry::NodePair> cyclic_pairs;
 
     /// Homogeneous constraints of a Newton update: fixed displacements on
     /// r = R1 and r = R3, zero multiplier off the slave surface.

@@ -1,0 +1,83 @@
+// Cyclic symmetry. The rings, their meshes and the imposed displacements
+// repeat every element around (2 pi / Ne): the radial displacement is the
+// same at every angle and the inner boundary turns rigidly. The solution
+// repeats too, so a sector of k elements gives the whole rings' solution:
+//  - the displacements of its two radial sides are tied by the rotation
+//    through the sector angle Phi: u(R(Phi) X) = R(Phi) u(X), and the
+//    contact pressure at the slave vertex on the end side equals the one on
+//    the start side;
+//  - the master surface beyond the sector is the sector's own, turned by
+//    +-Phi, +-2 Phi, ...: its rotated copies (ContactSurface) carry the
+//    unknowns of the originals, rotated, so that slave points near the
+//    sides and slave points that slid past them find their partners.
+// deal.II's DoFTools::make_periodicity_constraints() matches faces by a
+// translation; for a rotation we pair the nodes of the two sides ourselves
+// (by their support points) and write the constraints, two entries per
+// displacement component.
+#ifndef ring_contact_cyclic_symmetry_h
+#define ring_contact_cyclic_symmetry_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  namespace CyclicSymmetry
+  {
+    /// What the contact interface needs to know of a sector (angle 0: the
+    /// whole rings).
+    struct Sector
+    {
+      double       angle  = 0; ///< Phi
+      unsigned int copies = 0; ///< rotated master copies on each side
+      /// Multiplier dofs on the end side and their images on the start
+      /// side: one contact node.
+      std::map<types::global_dof_index, types::global_dof_index>
+        multiplier_twins;
+    };
+
+    /// Rotation matrix through `angle` (counterclockwise).
+    Tensor<2, 2>
+    rotation_matrix(const double angle);
+
+    /// A node on the end side of the sector and its image on the start
+    /// side: the dofs of the displacement (x, y) and of the multiplier
+    /// (invalid where the ring has none) at both.
+    struct NodePair
+    {
+      std::array<types::global_dof_index, 3> end;
+      std::array<types::global_dof_index, 3> start;
+    };
+
+    /// Pair every node of the end side (boundary id 601) with its image on
+    /// the start side (600), turned back through `sector_angle`. Throws if
+    /// a node has no image: the two sides must carry the same nodes.
+    std::vector<NodePair>
+    find_node_pairs(const DoFHandler<2>            &dof_handler,
+                    const hp::MappingCollection<2> &mapping,
+                    const double                    sector_angle);
+
+    /// The multiplier dofs of the pairs: end -> start.
+    std::map<types::global_dof_index, types::global_dof_index>
+    multiplier_pairs(const std::vector<NodePair> &pairs);
+
+    /// Add u_end = R(Phi) u_start and lambda_end = lambda_start for every
+    /// pair whose end dofs are not constrained yet: the corners on r = R1
+    /// and r = R3 keep their imposed values (which satisfy the same
+    /// relation), and the multiplier off the slave surface stays zero.
+    void
+    add_constraints(const std::vector<NodePair> &pairs,
+                    const double                 sector_angle,
+                    AffineConstraints<double>   &constraints);
+  } // namespace CyclicSymmetry
+} // namespace RingContact
+
+#endif
