@@ -65,7 +65,11 @@ main(int argc, char **argv)
           verdicts.insert(verdicts.end(), v.begin(), v.end());
         }
       if (parameters.output.write_history)
-        write_history(parameters.output.directory + "/history.csv", history);
+        {
+          write_history(parameters.output.directory + "/history.csv", history);
+          write_verdicts(parameters.output.directory + "/verdicts.csv",
+                         verdicts);
+        }
       const bool pass = print_verdicts(std::cout, verdicts);
       if (!solved)
         std::cout << "A load step could not be solved (see above).\n";

@@ -651,7 +651,8 @@ namespace RingContact
       prm.declare_entry("Write history",
                         "true",
                         Patterns::Bool(),
-                        "Write history.csv (one row per step and scheme).");
+                        "Write history.csv (one row per step and scheme) and "
+                        "verdicts.csv (one row per check).");
       prm.declare_entry("Print steps",
                         "true",
                         Patterns::Bool(),

@@ -108,6 +108,20 @@ namespace RingContact
   }
 
   void
+  write_verdicts(const std::string          &filename,
+                 const std::vector<Verdict> &verdicts)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
+    out << "scheme,quantity,step,value,reference,error,tolerance,verdict\n";
+    out << std::setprecision(10);
+    for (const auto &v : verdicts)
+      out << v.scheme << ',' << v.quantity << ',' << v.step << ',' << v.value
+          << ',' << v.reference << ',' << v.error << ',' << v.tolerance << ','
+          << (v.pass ? "PASS" : "FAIL") << '\n';
+  }
+
+  void
   write_history(const std::string             &filename,
                 const std::vector<HistoryRow> &history)
   {

@@ -60,6 +60,12 @@ namespace RingContact
   bool
   print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts);
 
+  /// verdicts.csv: one row per check (scheme, quantity, step, value,
+  /// reference, error, tolerance, PASS/FAIL), for reports.
+  void
+  write_verdicts(const std::string          &filename,
+                 const std::vector<Verdict> &verdicts);
+
   /// history.csv with a header row.
   void
   write_history(const std::string             &filename,
