@@ -261,33 +261,33 @@ namespace RingContact
     // the index v + n_vertices (j + copies + 1), v itself for j = 0; the
     // end vertex of copy j is the start vertex of copy j + 1.
     const auto raw_index = [&](const unsigned int v, const int j) {
-      return j == 0 ? v : v + n_vertices * (j + copies + 1);
+      return j == 0 ? v :
+                      v + n_vertices * static_cast<unsigned int>(
+                                         j + static_cast<int>(copies) + 1);
     };
     const auto index = [&](const unsigned int v, const int j) {
       return v == end ? raw_index(start, j + 1) : raw_index(v, j);
     };
-    const unsigned int n_sector = segment_list.size();
-    for (int j = -static_cast<int>(copies); j <= static_cast<int>(copies); ++j)
-      for (unsigned int s = 0; s < n_sector; ++s)
+    // The sector's own segments first (j = 0), then the copies.
+    const std::vector<SurfaceSegment> sector = segment_list;
+    segment_list.clear();
+    std::vector<int> shifts = {0};
+    for (int j = 1; j <= static_cast<int>(copies); ++j)
+      shifts.insert(shifts.end(), {-j, j});
+    for (const int j : shifts)
+      for (SurfaceSegment segment : sector)
         {
-          if (j == 0)
+          for (auto &v : segment.vertices)
+            v = index(v, j);
+          if (j != 0)
             {
-              for (auto &v : segment_list[s].vertices)
-                v = index(v, 0);
-              continue;
+              segment.is_copy = true;
+              segment.rotation =
+                CyclicSymmetry::rotation_matrix(j * sector_angle);
+              for (auto &node : segment.reference_nodes)
+                node = Point<2>(segment.rotation * node);
             }
-          SurfaceSegment copy = segment_list[s];
-          copy.is_copy        = true;
-          copy.rotation = CyclicSymmetry::rotation_matrix(j * sector_angle);
-          for (auto &node : copy.reference_nodes)
-            node = Point<2>(copy.rotation * node);
-          // The sector's vertices may already be renumbered (j > 0).
-          for (unsigned int e = 0; e < 2; ++e)
-            {
-              const unsigned int v = copy.vertices[e];
-              copy.vertices[e] = index(v == raw_index(start, 1) ? end : v, j);
-            }
-          segment_list.push_back(copy);
+          segment_list.push_back(segment);
         }
   }
 
