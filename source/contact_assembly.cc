@@ -65,8 +65,8 @@ namespace RingContact
     const bool   current = !geometrically_linear;
 
     std::vector<types::global_dof_index> local_dofs, unique_dofs;
-    FullMatrix<double>                   local_matrix, element_matrix;
-    Vector<double>                       local_rhs, element_rhs;
+    FullMatrix<double>                   local_matrix;
+    Vector<double>                       local_rhs;
     std::vector<double>                  Nm, dNm, ddNm, Nb, dNb, ddNb;
     std::vector<double> G, dG, ddG, N, dN, ddN, Phi, dPhi, ddPhi;
 
@@ -118,28 +118,33 @@ namespace RingContact
         local_dofs.insert(local_dofs.end(),
                           s_seg.multiplier_dofs.begin(),
                           s_seg.multiplier_dofs.end());
-        // The local unknowns' values; for a rotated copy of a master
-        // segment (cyclic symmetry) the copy's own displacements v = R a,
-        // with a the unknowns of the original.
+        // The local unknowns as AD variables. A rotated copy of a master
+        // segment (cyclic symmetry) moves by v = R a, a the unknowns of the
+        // original: its displacements are written in those (so that the
+        // derivatives are with respect to a), and its rows are turned back,
+        // r_a = R^T r_v, once the residual is known.
         const unsigned int n = local_dofs.size();
         std::vector<AD>    u(n);
         for (unsigned int i = 0; i < n; ++i)
           u[i] = AD(n, i, solution(local_dofs[i]));
-        for (const auto &[m, o] : offset_of)
-          {
-            const auto &seg = master.segments()[m];
-            if (!seg.is_copy)
-              continue;
-            const unsigned int nm = seg.dofs_x.size();
-            for (unsigned int i = 0; i < nm; ++i)
-              {
-                const Tensor<1, 2> v =
-                  seg.rotation * Tensor<1, 2>({u[o + i].val(), //
-                                               u[o + nm + i].val()});
-                u[o + i]      = AD(n, o + i, v[0]);
-                u[o + nm + i] = AD(n, o + nm + i, v[1]);
-              }
-          }
+        const auto turn_copies = [&](std::vector<AD> &v, const bool back) {
+          for (const auto &[m, o] : offset_of)
+            {
+              const auto &seg = master.segments()[m];
+              if (!seg.is_copy)
+                continue;
+              const Tensor<2, 2> R =
+                back ? transpose(seg.rotation) : seg.rotation;
+              const unsigned int nm = seg.dofs_x.size();
+              for (unsigned int i = 0; i < nm; ++i)
+                {
+                  const AD x = v[o + i], y = v[o + nm + i];
+                  v[o + i]      = R[0][0] * x + R[0][1] * y;
+                  v[o + nm + i] = R[1][0] * x + R[1][1] * y;
+                }
+            }
+        };
+        turn_copies(u, false);
         const AD *us_x = &u[0], *us_y = &u[ns];
         const AD *lambda_k = &u[lambda_offset];
 
@@ -339,46 +344,7 @@ namespace RingContact
           if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
             residual[lambda_offset + k] = c * Phi_eta[k] * gap * ds;
 
-        // Residual and tangent in the local unknowns. For a rotated copy the
-        // unknowns were v = R a: its rows are turned back, r_a = R^T r_v,
-        // and its columns carry dv/da = R.
-        element_matrix.reinit(n, n);
-        element_rhs.reinit(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            element_rhs(i) = -residual[i].val();
-            for (unsigned int j = 0; j < n; ++j)
-              element_matrix(i, j) = residual[i].dx(j);
-          }
-        for (const auto &[m, o] : offset_of)
-          {
-            const auto &seg = master.segments()[m];
-            if (!seg.is_copy)
-              continue;
-            const Tensor<2, 2> &R  = seg.rotation;
-            const unsigned int  nm = seg.dofs_x.size();
-            for (unsigned int i = 0; i < nm; ++i)
-              {
-                const unsigned int ix = o + i, iy = o + nm + i;
-                const double       rx = element_rhs(ix), ry = element_rhs(iy);
-                element_rhs(ix) = R[0][0] * rx + R[1][0] * ry;
-                element_rhs(iy) = R[0][1] * rx + R[1][1] * ry;
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    const double kx       = element_matrix(ix, j),
-                                 ky       = element_matrix(iy, j);
-                    element_matrix(ix, j) = R[0][0] * kx + R[1][0] * ky;
-                    element_matrix(iy, j) = R[0][1] * kx + R[1][1] * ky;
-                  }
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    const double kx       = element_matrix(j, ix),
-                                 ky       = element_matrix(j, iy);
-                    element_matrix(j, ix) = kx * R[0][0] + ky * R[1][0];
-                    element_matrix(j, iy) = kx * R[0][1] + ky * R[1][1];
-                  }
-              }
-          }
+        turn_copies(residual, true);
 
         // A vertex shared by the partner and its neighbour appears twice in
         // the local unknowns: sum the two copies (rows and columns) into one
@@ -397,9 +363,9 @@ namespace RingContact
         local_rhs.reinit(unique_dofs.size());
         for (unsigned int i = 0; i < n; ++i)
           {
-            local_rhs(to_unique[i]) += element_rhs(i);
+            local_rhs(to_unique[i]) -= residual[i].val();
             for (unsigned int j = 0; j < n; ++j)
-              local_matrix(to_unique[i], to_unique[j]) += element_matrix(i, j);
+              local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
           }
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, unique_dofs, matrix, rhs);

@@ -1,9 +1,9 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/grid/manifold.h>
+#include <deal.II/physics/transformations.h>
 
 #include <ring_contact/contact_surface.h>
-#include <ring_contact/cyclic_symmetry.h>
 
 #include <boost/geometry/index/rtree.hpp>
 
@@ -247,7 +247,8 @@ namespace RingContact
     AssertThrow(open_ends.size() == 2,
                 ExcMessage("cyclic symmetry: the contact surface of the "
                            "sector must be one open curve"));
-    const Tensor<2, 2> R_sector = CyclicSymmetry::rotation_matrix(sector_angle);
+    using Physics::Transformations::Rotations::rotation_matrix_2d;
+    const Tensor<2, 2> R_sector = rotation_matrix_2d(sector_angle);
     unsigned int       start = open_ends[0], end = open_ends[1];
     if (position[start].distance(Point<2>(R_sector * position[end])) <
         position[end].distance(Point<2>(R_sector * position[start])))
@@ -281,9 +282,8 @@ namespace RingContact
             v = index(v, j);
           if (j != 0)
             {
-              segment.is_copy = true;
-              segment.rotation =
-                CyclicSymmetry::rotation_matrix(j * sector_angle);
+              segment.is_copy  = true;
+              segment.rotation = rotation_matrix_2d(j * sector_angle);
               for (auto &node : segment.reference_nodes)
                 node = Point<2>(segment.rotation * node);
             }

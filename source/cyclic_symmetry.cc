@@ -1,5 +1,6 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/physics/transformations.h>
 
 #include <ring_contact/cyclic_symmetry.h>
 #include <ring_contact/parameters.h>
@@ -11,17 +12,6 @@ namespace RingContact
 {
   namespace CyclicSymmetry
   {
-    Tensor<2, 2>
-    rotation_matrix(const double angle)
-    {
-      Tensor<2, 2> R;
-      R[0][0] = std::cos(angle);
-      R[0][1] = -std::sin(angle);
-      R[1][0] = std::sin(angle);
-      R[1][1] = std::cos(angle);
-      return R;
-    }
-
     std::vector<NodePair>
     find_node_pairs(const DoFHandler<2>            &dof_handler,
                     const hp::MappingCollection<2> &mapping,
@@ -82,7 +72,8 @@ namespace RingContact
           }
 
       // Each end node and the start node it is the image of.
-      const Tensor<2, 2>    R = rotation_matrix(sector_angle);
+      const Tensor<2, 2> R =
+        Physics::Transformations::Rotations::rotation_matrix_2d(sector_angle);
       std::vector<NodePair> pairs;
       for (const Node &end : side_nodes[1])
         {
@@ -118,7 +109,8 @@ namespace RingContact
                     const double                 sector_angle,
                     AffineConstraints<double>   &constraints)
     {
-      const Tensor<2, 2> R = rotation_matrix(sector_angle);
+      const Tensor<2, 2> R =
+        Physics::Transformations::Rotations::rotation_matrix_2d(sector_angle);
       for (const auto &pair : pairs)
         {
           if (!constraints.is_constrained(pair.end[0]) &&

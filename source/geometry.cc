@@ -71,9 +71,8 @@ namespace RingContact
 
       // Boundary ids from the circle a face lies on and the ring it bounds;
       // the radial sides of a sector from their angle.
-      const double tol = 1e-8 * mesh.outer_radius;
-      const double sector_angle =
-        2 * numbers::PI * mesh.sector_elements / n_around;
+      const double       tol          = 1e-8 * mesh.outer_radius;
+      const double       sector_angle = mesh.sector_angle();
       const Tensor<1, 2> end_normal(
         {-std::sin(sector_angle), std::cos(sector_angle)});
       for (const auto &cell : triangulation.active_cell_iterators())

@@ -2,6 +2,7 @@
 #include <ring_contact/utilities.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
 #include <cctype>
@@ -211,6 +212,12 @@ namespace RingContact
                         "R3, inner radius of the inner ring [m].");
     }
     prm.leave_subsection();
+  }
+
+  double
+  MeshParameters::sector_angle() const
+  {
+    return 2 * numbers::PI * sector_elements / elements_around;
   }
 
   void

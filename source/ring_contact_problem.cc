@@ -101,8 +101,7 @@ namespace RingContact
     if (parameters.mesh.sector_elements > 0)
       {
         const auto &mesh = parameters.mesh;
-        sector.angle =
-          2 * numbers::PI * mesh.sector_elements / mesh.elements_around;
+        sector.angle     = mesh.sector_angle();
         const double sector_in_elements =
           mesh.sector_elements * (1u << mesh.global_refinements);
         const double rotation =
@@ -181,9 +180,7 @@ namespace RingContact
     // Cyclic symmetry: the end side of the sector follows the start side.
     if (!cyclic_pairs.empty())
       CyclicSymmetry::add_constraints(cyclic_pairs,
-                                      2 * numbers::PI *
-                                        parameters.mesh.sector_elements /
-                                        parameters.mesh.elements_around,
+                                      parameters.mesh.sector_angle(),
                                       constraints);
     constraints.close();
   }

@@ -13,6 +13,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
@@ -74,15 +75,6 @@ namespace RingContact
     Tensor<1, 2> ddx; ///< d2x/dt2
   };
 
-  /// The identity, as a rotation matrix.
-  inline Tensor<2, 2>
-  unit_rotation()
-  {
-    Tensor<2, 2> R;
-    R[0][0] = R[1][1] = 1;
-    return R;
-  }
-
   /// One boundary face of a contact surface.
   struct SurfaceSegment
   {
@@ -101,7 +93,7 @@ namespace RingContact
     /// Cyclic symmetry: a rotated copy of a segment of the sector carries
     /// the original's unknowns turned by this rotation (identity for the
     /// segments of the mesh itself): x = R (X + u).
-    Tensor<2, 2> rotation = unit_rotation();
+    Tensor<2, 2> rotation = unit_symmetric_tensor<2>();
     /// True for a rotated copy.
     bool is_copy = false;
     /// Current nodal displacements R u (set by ContactSurface::update()).

@@ -44,10 +44,6 @@ namespace RingContact
         multiplier_twins;
     };
 
-    /// Rotation matrix through `angle` (counterclockwise).
-    Tensor<2, 2>
-    rotation_matrix(const double angle);
-
     /// A node on the end side of the sector and its image on the start
     /// side: the dofs of the displacement (x, y) and of the multiplier
     /// (invalid where the ring has none) at both.

@@ -112,9 +112,12 @@ namespace RingContact
     /// Cyclic symmetry: number of elements around in the modelled sector
     /// (0: the whole rings). See cyclic_symmetry.h.
     unsigned int sector_elements = 0;
-    double       outer_radius;     ///< R1
-    double       interface_radius; ///< R2
-    double       inner_radius;     ///< R3
+    /// The angle of the sector, 2 pi k / Ne (0: the whole rings).
+    double
+           sector_angle() const;
+    double outer_radius;     ///< R1
+    double interface_radius; ///< R2
+    double inner_radius;     ///< R3
     /// Patch test: elements along the interface of the lower (master) and
     /// the upper (slave) block.
     unsigned int patch_elements_lower;
