@@ -4,7 +4,10 @@
 // those inputs (smoothed master normals, LISSAGE = OUI; nodal and Gauss
 // integration; finite strain, GROT_GDEP), and reporting the pressure per
 // reference length (the original's multiplier is a nominal pressure), the
-// program reproduces them to the 9 digits they are printed with.
+// program reproduces them to the 9 digits they are printed with: A and B
+// (plane stress and plane strain, ssnp152b.comm of the same version) within
+// 1e-8, C at s = 1 within 1e-7. D, E-H print no value in that version (E-H
+// would differ anyway: 8-node elements and straight interior edges there).
 #include <ring_contact/config.h>
 #include <ring_contact/ring_contact_problem.h>
 
@@ -36,16 +39,19 @@ namespace
   void
   compare(const std::string                                  &what,
           const std::vector<double>                          &ours,
-          const std::vector<std::pair<unsigned int, double>> &aster)
+          const std::vector<std::pair<unsigned int, double>> &aster,
+          const double                                        tolerance)
   {
     double largest = 0;
     for (const auto &[step, value] : aster)
       largest = std::max(largest, std::abs(ours.at(step - 1) - value) / value);
     RingContactTests::deallog_file
       << what << ": " << aster.size()
-      << " values of Code_Aster reproduced within 1e-7: "
-      << (largest < 1e-7 ? "yes" : "NO") << std::endl;
-    check(largest < 1e-7,
+      << " values of Code_Aster reproduced within " << tolerance << ": "
+      << (largest < tolerance ? "yes" : "NO") << std::endl;
+    std::cout << what << ": largest relative difference " << largest
+              << std::endl;
+    check(largest < tolerance,
           what + ": largest relative difference " + std::to_string(largest));
   }
 } // namespace
@@ -74,12 +80,34 @@ main()
       s.emplace_back(k + 1, values[k]);
     return s;
   };
-  compare("A, nodal", pressures("ssnp152a", "nodal"), steps(a_nodal));
-  compare("A, Gauss 3", pressures("ssnp152a", "Gauss 3"), steps(a_gauss));
+  compare("A, nodal", pressures("ssnp152a", "nodal"), steps(a_nodal), 1e-8);
+  compare("A, Gauss 3", pressures("ssnp152a", "Gauss 3"), steps(a_gauss), 1e-8);
+
+  // ssnp152b.comm (plane strain), RESU1 (nodal) and RESU2 (Gauss).
+  const std::vector<double> b_nodal = {
+    9.19352266E+04, 1.15736368E+05, 1.45698344E+05, 1.83415248E+05,
+    2.30893280E+05, 2.90657072E+05, 3.65883332E+05, 4.60568727E+05,
+    5.79740695E+05, 7.29721964E+05, 9.18462162E+05, 1.15595310E+06,
+    1.45474808E+06, 1.83061021E+06, 2.30331975E+06, 2.89767678E+06,
+    3.64474164E+06, 4.58336196E+06, 5.76204070E+06, 7.24120178E+06,
+    9.09590686E+06};
+  const std::vector<double> b_gauss = {
+    9.21244943E+04, 1.15974635E+05, 1.45998294E+05, 1.83792846E+05,
+    2.31368621E+05, 2.91255450E+05, 3.66636578E+05, 4.61516902E+05,
+    5.80934211E+05, 7.31224248E+05, 9.20353005E+05, 1.15833286E+06,
+    1.45774298E+06, 1.83437890E+06, 2.30806161E+06, 2.90364224E+06,
+    3.65224508E+06, 4.59279775E+06, 5.77390304E+06, 7.25610928E+06,
+    9.11463266E+06};
+  compare("B, nodal", pressures("ssnp152b", "nodal"), steps(b_nodal), 1e-8);
+  compare("B, Gauss 3", pressures("ssnp152b", "Gauss 3"), steps(b_gauss), 1e-8);
 
   // ssnp152c.comm: step 100 (s = 1), nodal and 2 Gauss points.
-  compare("C, nodal", pressures("ssnp152c", "nodal"), {{100, 9.08676484E+06}});
+  compare("C, nodal",
+          pressures("ssnp152c", "nodal"),
+          {{100, 9.08676484E+06}},
+          1e-7);
   compare("C, Gauss 2",
           pressures("ssnp152c", "Gauss 2"),
-          {{100, 9.10546887E+06}});
+          {{100, 9.10546887E+06}},
+          1e-7);
 }
