@@ -75,7 +75,8 @@ namespace RingContact
   }
 
   unsigned int
-  ContactInterface::update(const Vector<double> &solution)
+  ContactInterface::update(const Vector<double> &solution,
+                           const bool            keep_partners)
   {
     // Finite strain: pair and measure in the current configuration. Small
     // strain: pair in the reference configuration, and the gap is the
@@ -95,7 +96,7 @@ namespace RingContact
     if (segment_based)
       pair_pieces(solution);
     else
-      pair_points(solution);
+      pair_points(solution, keep_partners);
 
     // Weighted gaps and the active set from the current multipliers.
     std::fill(weighted_gap.begin(), weighted_gap.end(), 0.0);
@@ -150,7 +151,8 @@ namespace RingContact
   }
 
   void
-  ContactInterface::pair_points(const Vector<double> &solution)
+  ContactInterface::pair_points(const Vector<double> &solution,
+                                const bool            keep_partners)
   {
     // Every slave quadrature point with its closest master point; a point
     // keeps its previous partner while its projection stays on it.
@@ -167,7 +169,14 @@ namespace RingContact
           point.xi = quadrature.point(q)[0];
           point.w  = quadrature.weight(q);
           complete_point(point, s, solution, [&](const Point<2> &x) {
-            return master.project(x, preferred);
+            if (!keep_partners || preferred == numbers::invalid_unsigned_int)
+              return master.project(x, preferred);
+            Projection kept = points[index].projection;
+            if (!kept.at_vertex)
+              return master.project_onto(x, preferred);
+            kept.gap = (x - master.current_point(kept.segment, kept.t).x) *
+                       master.normal(kept);
+            return kept;
           });
           new_points.push_back(point);
         }

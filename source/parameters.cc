@@ -595,9 +595,14 @@ namespace RingContact
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Patterns::Double(0),
-                        "Converged when the residual of the free degrees of "
-                        "freedom, relative to the reaction forces, is below "
-                        "this and the active set no longer changes.");
+                        "Converged when the active set no longer changes and "
+                        "(a) the residual of the free displacement rows "
+                        "relative to the reaction forces and (b) the largest "
+                        "gap of an active contact row relative to the largest "
+                        "displacement are each below this or at their "
+                        "round-off floor (10 eps times the magnitude of the "
+                        "terms of the rows, estimated at every iteration): "
+                        "scale-free, the same value fits any E, p and radii.");
       prm.declare_entry("Maximum step cuts",
                         "5",
                         Patterns::Integer(0, 30),

@@ -16,6 +16,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace RingContact
 {
@@ -134,6 +136,7 @@ namespace RingContact
     previous_solution.reinit(dof_handler.n_dofs());
     system_rhs.reinit(dof_handler.n_dofs());
     internal_force.reinit(dof_handler.n_dofs());
+    residual_magnitude.reinit(dof_handler.n_dofs());
 
     make_constraints();
   }
@@ -262,9 +265,37 @@ namespace RingContact
   RingContactProblem::assemble_system()
   {
     TimerOutput::Scope t(timer, "assembly");
-    system_matrix  = 0;
-    system_rhs     = 0;
-    internal_force = 0;
+    system_matrix      = 0;
+    system_rhs         = 0;
+    internal_force     = 0;
+    residual_magnitude = 0;
+    n_inverted         = 0;
+    min_det_F          = std::numeric_limits<double>::max();
+
+    // The contact terms first, on their own, to measure their magnitudes:
+    // a contact row is computed from positions X + u (the gap, the normal),
+    // so its round-off is eps |K_ij| (|X| + |u_j|), not eps |K_ij| |u_j|.
+    // At p = 1e4 on steel this is a thousand times the bulk's.
+    contact->assemble(solution, constraints, system_matrix, system_rhs);
+    {
+      double largest_position = 0;
+      for (const auto &vertex : triangulation.get_vertices())
+        largest_position = std::max(largest_position, vertex.norm());
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        {
+          double magnitude = std::abs(system_rhs(i));
+          for (auto entry = system_matrix.begin(i);
+               entry != system_matrix.end(i);
+               ++entry)
+            {
+              const auto j = entry->column();
+              magnitude += std::abs(entry->value()) *
+                           (std::abs(solution(j)) +
+                            (is_multiplier[j] ? 0 : largest_position));
+            }
+          residual_magnitude(i) = magnitude;
+        }
+    }
 
     hp::FEValues<2>                      hp_fe_values(mapping_collection,
                                  fe_collection,
@@ -306,6 +337,17 @@ namespace RingContact
 
         for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
           {
+            // An inverted state (det F <= 0) has no physical meaning, in
+            // either kinematics: it is counted, the material law is not
+            // evaluated there, and the Newton loop rejects the state.
+            const double det_F =
+              determinant(unit_symmetric_tensor<2>() + grad_u[q]);
+            min_det_F = std::min(min_det_F, det_F);
+            if (!(det_F > 0))
+              {
+                ++n_inverted;
+                continue;
+              }
             Tensor<2, 2> P;
             Tensor<4, 2> A;
             material.stress_and_tangent(grad_u[q], P, A);
@@ -329,24 +371,31 @@ namespace RingContact
                   }
               }
           }
+        // Bulk rows are computed from the displacement alone: their
+        // round-off is eps sum_j |K_ij| |u_j|.
         for (unsigned int i = 0; i < n; ++i)
-          internal_force(dofs[i]) -= cell_rhs(i);
+          {
+            internal_force(dofs[i]) -= cell_rhs(i);
+            double magnitude = std::abs(cell_rhs(i));
+            for (unsigned int j = 0; j < n; ++j)
+              magnitude +=
+                std::abs(cell_matrix(i, j)) * std::abs(solution(dofs[j]));
+            residual_magnitude(dofs[i]) += magnitude;
+          }
         constraints.distribute_local_to_global(
           cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
       }
-
-    contact->assemble(solution, constraints, system_matrix, system_rhs);
   }
 
   // Pair, choose the active set, and assemble the Newton system at the
   // current solution; a new sparsity pattern when the pairs left the old.
   unsigned int
-  RingContactProblem::assemble_newton_system()
+  RingContactProblem::assemble_newton_system(const bool keep_partners)
   {
     unsigned int n_changed;
     {
       TimerOutput::Scope t(timer, "contact search");
-      n_changed = contact->update(solution);
+      n_changed = contact->update(solution, keep_partners);
     }
     if (!contact->sparsity_covers_pairing())
       make_sparsity_pattern();
@@ -364,61 +413,219 @@ namespace RingContact
     constraints.distribute(newton_update);
   }
 
-  // Semi-smooth Newton: pair, choose the active set, assemble, solve.
-  // Converged when the residual of the free unknowns, relative to the
-  // reaction forces on the fixed boundaries, is below the tolerance and the
-  // active set did not change. At very small loads, or with a much stiffer
-  // ring, the residual can stall at round-off above the tolerance: then the
-  // iteration also stops once the last update changed the displacement by
-  // less than 1e-10 of its size (the solution no longer moves) and the
-  // residual is below 1e-4.
+  bool
+  ResidualMeasure::converged(const double tolerance) const
+  {
+    return force <= std::max(tolerance, force_floor) &&
+           gap <= std::max(tolerance, gap_floor);
+  }
+
+  // The convergence measures of the assembled system, each relative to the
+  // problem's own scale, so that one tolerance fits E = 1e6 as well as
+  // E = 1e12, p = 1e2 as well as p = 1e9, and rings of any size:
+  // - free displacement rows (forces): |R| over the reaction forces on the
+  //   fixed boundaries;
+  // - active contact rows c int Phi_k g dS: divided by the sum of their
+  //   row's |K_kj| (about 2 c w_k), a length, over the largest displacement;
+  //   open contact rows w_k lambda_k: lambda_k over the largest |lambda|.
+  // Each has a floor: what double precision resolves at this state,
+  // round_off_factor * eps * sum_j |K_ij| |z_j| (see residual_magnitude).
+  // A fixed tolerance cannot do this: the contact rows are evaluated from
+  // positions of size R, so their noise does not scale with the load, and
+  // at p = 1e4 on steel it is 1e-9 of the reactions.
+  ResidualMeasure
+  RingContactProblem::residual_measure() const
+  {
+    // Several roundings per term, the linear solver's backward error, and
+    // the row sums of the noise: a factor of ten over eps |K| |z|,
+    // measured on the variants of scripts/variants (the stalled residuals
+    // of steel/aluminium at p = 1e2 are 0.05 to 0.3 of eps |K| |z|).
+    constexpr double round_off_factor = 10;
+    const double     eps              = std::numeric_limits<double>::epsilon();
+
+    double reaction = 0, largest_displacement = 0, largest_pressure = 0;
+    for (types::global_dof_index i = 0; i < solution.size(); ++i)
+      {
+        if (is_dirichlet[i] && !is_multiplier[i])
+          reaction += internal_force(i) * internal_force(i);
+        if (is_multiplier[i])
+          largest_pressure = std::max(largest_pressure, std::abs(solution(i)));
+        else
+          largest_displacement =
+            std::max(largest_displacement, std::abs(solution(i)));
+      }
+    reaction             = std::max(std::sqrt(reaction), 1e-300);
+    largest_displacement = std::max(largest_displacement, 1e-300);
+    largest_pressure     = std::max(largest_pressure, 1e-300);
+
+    ResidualMeasure measure;
+    double          force = 0, force_floor = 0, merit = 0;
+    for (types::global_dof_index i = 0; i < solution.size(); ++i)
+      {
+        if (constraints.is_constrained(i))
+          continue;
+        const double r = system_rhs(i);
+        merit += r * r;
+        if (!is_multiplier[i])
+          {
+            force += r * r;
+            force_floor += residual_magnitude(i) * residual_magnitude(i);
+            continue;
+          }
+        // A contact row: active when it depends on displacements.
+        double row_sum = 0, diagonal = 0;
+        for (auto entry = system_matrix.begin(i); entry != system_matrix.end(i);
+             ++entry)
+          {
+            row_sum += std::abs(entry->value());
+            if (entry->column() == i)
+              diagonal = std::abs(entry->value());
+          }
+        if (row_sum == 0)
+          continue;
+        const bool   active = row_sum > diagonal;
+        const double scale  = active ? largest_displacement : largest_pressure;
+        measure.gap = std::max(measure.gap, std::abs(r) / row_sum / scale);
+        measure.gap_floor =
+          std::max(measure.gap_floor,
+                   round_off_factor * eps *
+                     (active ? residual_magnitude(i) / row_sum / scale : 1.0));
+      }
+    measure.force = std::sqrt(force) / reaction;
+    measure.force_floor =
+      round_off_factor * eps * std::sqrt(force_floor) / reaction;
+    measure.merit = std::sqrt(merit);
+    return measure;
+  }
+
+  // Semi-smooth Newton: pair, choose the active set, assemble, solve, and
+  // move along the update as far as the residual decreases (line search).
+  // Converged when the active set did not change, and both the force rows
+  // and the contact rows are below the tolerance relative to their own
+  // scales, or at their round-off floor (see residual_measure()).
+  // A state with an inverted element (det F <= 0) is never accepted.
+  // After how many iterations of a Newton solve the pairing is held.
+  constexpr unsigned int hold_pairing_after = 4;
+
   bool
   RingContactProblem::solve_newton_step(unsigned int &iterations,
                                         double       &final_residual)
   {
     const auto    &newton = parameters.newton;
     Vector<double> newton_update(dof_handler.n_dofs());
-    iterations            = 0;
-    double first_residual = 0;
-    double last_update    = std::numeric_limits<double>::max();
+    iterations = 0;
+    failure_reason.clear();
+    keep_partners          = false;
+    unsigned int n_changed = assemble_newton_system();
     for (unsigned int it = 0;; ++it)
       {
-        const unsigned int n_changed = assemble_newton_system();
-
-        double reaction = 0;
-        for (types::global_dof_index i = 0; i < internal_force.size(); ++i)
-          if (is_dirichlet[i])
-            reaction += internal_force(i) * internal_force(i);
-        reaction       = std::sqrt(reaction);
-        final_residual = system_rhs.l2_norm() / std::max(reaction, 1e-300);
-        if (it == 0)
-          first_residual = final_residual;
+        if (n_inverted > 0)
+          {
+            std::ostringstream reason;
+            reason << "inverted elements: det F = " << min_det_F << " <= 0 at "
+                   << n_inverted << " quadrature points";
+            failure_reason = reason.str();
+            final_residual = std::numeric_limits<double>::infinity();
+            if (newton.verbose)
+              log << "    Newton " << std::setw(2) << it << "  "
+                  << failure_reason << '\n';
+            return false;
+          }
+        const ResidualMeasure measure = residual_measure();
+        final_residual                = std::max(measure.force, measure.gap);
         if (newton.verbose)
           log << "    Newton " << std::setw(2) << it << "  relative residual "
-              << std::scientific << std::setprecision(3) << final_residual
-              << std::defaultfloat << "  active " << contact->n_active() << "/"
+              << std::scientific << std::setprecision(3) << measure.force
+              << " (floor " << measure.force_floor << ")  gap " << measure.gap
+              << " (floor " << measure.gap_floor << ")" << std::defaultfloat
+              << "  active " << contact->n_active() << "/"
               << contact->multiplier_dofs().size() << "  changed " << n_changed
               << '\n';
-        if (!std::isfinite(final_residual))
-          return false;
-        if (n_changed == 0 && (final_residual < newton.tolerance ||
-                               (last_update < 1e-10 && final_residual < 1e-4)))
+        if (!std::isfinite(measure.merit))
+          {
+            failure_reason = "the residual is not finite";
+            return false;
+          }
+        if (n_changed == 0 && measure.converged(newton.tolerance))
           return true;
-        if (it == newton.max_iterations ||
-            (it > 2 && final_residual > 1e6 * first_residual))
-          return false;
+        if (it == newton.max_iterations)
+          {
+            failure_reason = "no convergence in " +
+                             std::to_string(newton.max_iterations) +
+                             " iterations";
+            return false;
+          }
+
+        // A slave point in a groove of a faceted master (a master vertex seen
+        // from the slave side, where the normal turns by the angle between
+        // the segments) has no position with one normal where the residual
+        // vanishes: the pairing flips between the two segments at every
+        // iteration and Newton cycles. After a few iterations every point
+        // keeps its partner (on the segment's extension if need be): the
+        // residual is smooth, and the step converges to the state with that
+        // pairing. The next step pairs afresh.
+        if (it + 1 == hold_pairing_after)
+          keep_partners = true;
 
         solve_linear_system(newton_update);
-        solution += newton_update;
         ++iterations;
-        double update = 0, size = 0;
-        for (types::global_dof_index i = 0; i < solution.size(); ++i)
-          if (!is_multiplier[i])
-            {
-              update = std::max(update, std::abs(newton_update(i)));
-              size   = std::max(size, std::abs(solution(i)));
-            }
-        last_update = update / std::max(size, 1e-300);
+        double step_length = 1;
+        if (!line_search(newton_update, measure, n_changed, step_length))
+          {
+            if (keep_partners)
+              return false;
+            // No decrease along the update: the pairing is the suspect.
+            keep_partners = true;
+            n_changed     = assemble_newton_system(keep_partners);
+            if (newton.verbose)
+              log << "      line search failed: pairing held\n";
+            continue;
+          }
+        if (newton.verbose && step_length < 1)
+          log << "      line search: step length " << step_length << '\n';
+      }
+  }
+
+  // Globalisation of the semi-smooth Newton method: u + a du with a = 1,
+  // 1/2, 1/4, ... until the merit |R|^2 decreases (Armijo) and no element is
+  // inverted; the system at the accepted state is left assembled. With
+  // faceted master surfaces the residual jumps where a contact point
+  // crosses a master vertex (its normal turns by the angle between the
+  // segments), and a full step can jump back and forth between two
+  // pairings forever; the line search stops on the lower side.
+  bool
+  RingContactProblem::line_search(const Vector<double>  &newton_update,
+                                  const ResidualMeasure &before,
+                                  unsigned int          &n_changed,
+                                  double                &step_length)
+  {
+    constexpr unsigned int max_halvings = 6;
+    constexpr double       armijo       = 1e-4;
+    const Vector<double>   start        = solution;
+    for (unsigned int halving = 0;; ++halving)
+      {
+        solution = start;
+        solution.add(step_length, newton_update);
+        n_changed = assemble_newton_system(keep_partners);
+        if (n_inverted == 0)
+          {
+            const ResidualMeasure trial = residual_measure();
+            // At the round-off floor the merit is noise: take the step.
+            if (trial.merit <= (1 - armijo * step_length) * before.merit ||
+                trial.converged(parameters.newton.tolerance) ||
+                before.converged(parameters.newton.tolerance))
+              return true;
+          }
+        if (halving == max_halvings)
+          {
+            if (n_inverted > 0)
+              return true; // rejected by the Newton loop with its message
+            failure_reason = "the line search found no decrease of the "
+                             "residual";
+            solution       = start;
+            return false;
+          }
+        step_length /= 2;
       }
   }
 
@@ -474,7 +681,8 @@ namespace RingContact
         if (cuts == parameters.newton.max_step_cuts)
           {
             log << "Step " << step << ": Newton did not converge after " << cuts
-                << " step cuts (last relative residual " << residual
+                << " step cuts (" << failure_reason
+                << "; last relative residual " << residual
                 << " at t = " << t_next << ", increment " << dt
                 << "); stopping with the last converged state (t = "
                 << current_time << ")\n";
@@ -482,8 +690,9 @@ namespace RingContact
           }
         ++cuts;
         dt /= 2;
-        log << "  step " << step << ": Newton failed (relative residual "
-            << residual << "), cutting the increment to " << dt << '\n';
+        log << "  step " << step << ": Newton failed (" << failure_reason
+            << "; relative residual " << residual
+            << "), cutting the increment to " << dt << '\n';
       }
     postprocess_step(step, total_iterations, cuts, wall.wall_time());
     return true;

@@ -71,8 +71,12 @@ namespace RingContact
     /// Pair every slave quadrature point with the current master surface,
     /// compute the weighted gaps and choose the active set from the current
     /// multipliers. Returns the number of nodes whose status changed.
+    /// `keep_partners` (point-wise schemes): every point keeps its last
+    /// partner segment, projected onto its extension if need be, so that the
+    /// residual is a smooth function of the displacement (the Newton loop
+    /// asks for this when the pairing cycles, see solve_newton_step()).
     unsigned int
-    update(const Vector<double> &solution);
+    update(const Vector<double> &solution, const bool keep_partners = false);
 
     /// True if the current pairs are all inside the last sparsity pattern.
     bool
@@ -160,7 +164,7 @@ namespace RingContact
     /// master point. Segment-based: each slave segment cut into pieces with
     /// one partner each.
     void
-    pair_points(const Vector<double> &solution);
+    pair_points(const Vector<double> &solution, const bool keep_partners);
     /// Fill in a contact point from its piece, xi and w: position,
     /// partner (from `project`), gap and length element.
     template <typename Projector>

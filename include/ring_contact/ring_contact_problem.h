@@ -29,10 +29,34 @@
 #include <map>
 #include <memory>
 #include <ostream>
+#include <string>
 
 namespace RingContact
 {
   using namespace dealii;
+
+  /// The measures of one Newton iterate that decide convergence, each
+  /// relative to the problem's own scales (see solve_newton_step()).
+  struct ResidualMeasure
+  {
+    /// |R| of the free displacement rows over the reaction forces.
+    double force = 0;
+    /// The round-off floor of that ratio: what evaluating the residual in
+    /// double precision can resolve at the current state.
+    double force_floor = 0;
+    /// Largest |gap residual| of an active contact row, in metres, over the
+    /// largest displacement; the largest |lambda| of an open row over the
+    /// largest |lambda|.
+    double gap = 0;
+    /// The round-off floor of that ratio (largest over the rows).
+    double gap_floor = 0;
+    /// Euclidean norm of the free rows: the merit of the line search.
+    double merit = 0;
+
+    /// Both groups below max(tolerance, their floor).
+    bool
+    converged(const double tolerance) const;
+  };
 
   class RingContactProblem
   {
@@ -68,8 +92,9 @@ namespace RingContact
     /// Pair, choose the active set and assemble the tangent and the
     /// right-hand side -R at the current solution; returns the number of
     /// contact nodes whose status changed.
+    /// `keep_partners`: see ContactInterface::update().
     unsigned int
-    assemble_newton_system();
+    assemble_newton_system(const bool keep_partners = false);
     Vector<double> &
     current_solution()
     {
@@ -105,6 +130,16 @@ namespace RingContact
     {
       return *contact;
     }
+    /// The convergence measures of the system last assembled.
+    ResidualMeasure
+    residual_measure() const;
+    /// Quadrature points with det F <= 0 found by the last assembly (the
+    /// material law is not evaluated there), and the smallest det F.
+    unsigned int
+    n_inverted_points() const
+    {
+      return n_inverted;
+    }
     /// Impose the boundary displacements of a load state.
     void
     apply_boundary_motion(const LoadState &load);
@@ -125,6 +160,11 @@ namespace RingContact
     solve_linear_system(Vector<double> &newton_update);
     bool
     solve_newton_step(unsigned int &iterations, double &final_residual);
+    bool
+    line_search(const Vector<double>  &newton_update,
+                const ResidualMeasure &before,
+                unsigned int          &n_changed,
+                double                &step_length);
     bool
     solve_load_step(const unsigned int step);
     void
@@ -164,11 +204,24 @@ namespace RingContact
     SparseMatrix<double>      system_matrix;
     Vector<double>            system_rhs;
     Vector<double>            internal_force;
-    Vector<double>            solution;
-    Vector<double>            previous_solution;
-    double                    previous_time, current_time;
-    LoadState                 current_load;
-    types::global_dof_index   probe_dof;
+    /// Per row, the sum of the magnitudes of the terms that make up the
+    /// residual, sum_j |K_ij| |z_j| + |R_i| with z the displacement (bulk)
+    /// or the position X + u and the multiplier (contact): machine epsilon
+    /// times this is the noise of evaluating R_i.
+    Vector<double> residual_magnitude;
+    /// |X| of the support point of every displacement unknown.
+    Vector<double> position_magnitude;
+    unsigned int   n_inverted = 0;
+    double         min_det_F  = 1;
+    /// Why the last Newton solve stopped without converging.
+    std::string failure_reason;
+    /// The contact points keep their partners (pairing cycles).
+    bool                    keep_partners = false;
+    Vector<double>          solution;
+    Vector<double>          previous_solution;
+    double                  previous_time, current_time;
+    LoadState               current_load;
+    types::global_dof_index probe_dof;
 
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
