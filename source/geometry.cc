@@ -304,9 +304,9 @@ namespace RingContact
                            std::pow(4.0, parameters.mesh.global_refinements);
       const double unknowns = cells * 3 * p * p;
       // Bytes per unknown: the matrix, the vectors, the mesh and the direct
-      // solver's factors. Measured on this program (peak resident memory
-      // over unknowns) between 1e4 and 1e6 unknowns; the fill of the
-      // factors grows slowly with the size, so this is a bound, not a fit.
+      // solver's factors. A deliberately generous round figure, not a
+      // measurement: it only has to stop runs that cannot fit long before
+      // they allocate (the 1e6-around input wanted ~24 GB).
       const double bytes_per_unknown = 4000;
       const double needed            = unknowns * bytes_per_unknown;
       const double available =
