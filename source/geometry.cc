@@ -4,9 +4,15 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <ring_contact/geometry.h>
+#include <ring_contact/gmsh_file.h>
+#include <ring_contact/utilities.h>
 
+#include <unistd.h>
+
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -155,200 +161,202 @@ namespace RingContact
 
     namespace
     {
-      // A reader for gmsh ASCII files (format 1 and 2.2) with linear or
-      // quadratic quadrilaterals and lines (gmsh types 3/10 and 1/8), for
-      // the meshes deal.II's GridIn does not take (9-node quadrilaterals).
+      // Build the triangulation of a checked gmsh file with quadratic
+      // elements (types 8 and 10), which deal.II's GridIn does not take.
       // Only the vertices make the triangulation: the curved geometry comes
       // from the polar manifold, and the mid-side nodes of the circles are
       // checked to lie on it.
       void
-      read_gmsh_by_hand(Triangulation<2>  &triangulation,
-                        std::istream      &in,
-                        const std::string &filename)
+      build_quadratic(Triangulation<2> &triangulation, const GmshMesh &mesh)
       {
-        const auto fail = [&](const std::string &what) {
-          throw std::runtime_error("cannot read mesh file '" + filename +
-                                   "': " + what);
-        };
-        std::string line;
-        bool        format_1 = false;
-        while (std::getline(in, line) && line != "$NOD" && line != "$Nodes")
-          ;
-        format_1 = (line == "$NOD");
-        if (line != "$NOD" && line != "$Nodes")
-          fail("no node section");
-        std::size_t n_nodes = 0;
-        in >> n_nodes;
-        std::map<long, Point<2>> nodes;
-        for (std::size_t i = 0; i < n_nodes; ++i)
-          {
-            long   id;
-            double x, y, z;
-            if (!(in >> id >> x >> y >> z))
-              fail("bad node line");
-            nodes[id] = Point<2>(x, y);
-          }
-        while (std::getline(in, line) && line != "$ELM" && line != "$Elements")
-          ;
-        std::size_t n_elements = 0;
-        in >> n_elements;
-
         std::vector<Point<2>>    vertices;
         std::map<long, unsigned> vertex_of_node;
         const auto               vertex = [&](const long node) {
           const auto it = vertex_of_node.find(node);
           if (it != vertex_of_node.end())
             return it->second;
-          if (nodes.count(node) == 0)
-            fail("element refers to unknown node " + std::to_string(node));
           vertex_of_node[node] = vertices.size();
-          vertices.push_back(nodes[node]);
+          vertices.push_back(mesh.nodes.at(node));
           return static_cast<unsigned>(vertices.size() - 1);
         };
-        std::vector<CellData<2>>                   cells;
-        SubCellData                                lines;
-        std::vector<std::pair<Point<2>, Point<2>>> mid_side; // mid, end
-        for (std::size_t e = 0; e < n_elements; ++e)
-          {
-            long id, type, physical = 0, tag;
-            in >> id >> type;
-            std::size_t n_element_nodes = 0;
-            if (format_1)
-              in >> physical >> tag >> n_element_nodes;
-            else
-              {
-                long n_tags;
-                in >> n_tags;
-                for (long t = 0; t < n_tags; ++t)
-                  {
-                    in >> tag;
-                    if (t == 0)
-                      physical = tag;
-                  }
-                n_element_nodes = type == 1  ? 2 :
-                                  type == 8  ? 3 :
-                                  type == 3  ? 4 :
-                                  type == 10 ? 9 :
-                                  type == 15 ? 1 :
-                                               0;
-              }
-            std::vector<long> element_nodes(n_element_nodes);
-            for (auto &n : element_nodes)
-              in >> n;
-            if (!in)
-              fail("bad element line");
-            if (type == 3 || type == 10)
-              {
-                // gmsh: corners counterclockwise; deal.II: lexicographic.
-                CellData<2> cell;
-                cell.vertices    = {vertex(element_nodes[0]),
-                                    vertex(element_nodes[1]),
-                                    vertex(element_nodes[3]),
-                                    vertex(element_nodes[2])};
-                cell.material_id = physical;
-                cells.push_back(cell);
-              }
-            else if (type == 1 || type == 8)
-              {
-                CellData<1> segment;
-                segment.vertices    = {vertex(element_nodes[0]),
-                                       vertex(element_nodes[1])};
-                segment.boundary_id = physical;
-                lines.boundary_lines.push_back(segment);
-                if (type == 8)
-                  mid_side.emplace_back(nodes[element_nodes[2]],
-                                        nodes[element_nodes[0]]);
-              }
-            else if (type != 15)
-              fail("element type " + std::to_string(type) +
-                   " (only quadrilaterals and lines)");
-          }
-        if (cells.empty())
-          fail("no quadrilaterals");
-        // The mid-side nodes of the boundary lines lie on the circles, as
-        // the polar manifold puts them.
-        for (const auto &[mid, end] : mid_side)
-          if (std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
-            fail("a mid-side node of a boundary line is not on the circle of "
-                 "its end nodes");
+        std::vector<CellData<2>> cells;
+        SubCellData              lines;
+        for (const auto &element : mesh.elements)
+          if (element.type == 3 || element.type == 10)
+            {
+              // gmsh: corners counterclockwise; deal.II: lexicographic.
+              const auto &n = element.nodes;
+              CellData<2> cell;
+              cell.vertices    = {vertex(n[0]),
+                                  vertex(n[1]),
+                                  vertex(n[3]),
+                                  vertex(n[2])};
+              cell.material_id = element.physical;
+              cells.push_back(cell);
+            }
+          else
+            {
+              const auto &n = element.nodes;
+              CellData<1> segment;
+              segment.vertices    = {vertex(n[0]), vertex(n[1])};
+              segment.boundary_id = element.physical;
+              lines.boundary_lines.push_back(segment);
+              if (element.type == 8)
+                {
+                  const Point<2> mid = mesh.nodes.at(n[2]),
+                                 end = mesh.nodes.at(n[0]);
+                  if (std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
+                    throw std::runtime_error(
+                      "mesh file '" + mesh.filename + "', line " +
+                      std::to_string(element.line) +
+                      ": the mid-side node of a boundary line is not on the "
+                      "circle of its end nodes");
+                }
+            }
         GridTools::consistently_order_cells(cells);
         triangulation.create_triangulation(vertices, cells, lines);
       }
-    } // namespace
 
-    void
-    read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
-    {
-      std::ifstream in(filename);
-      if (!in)
-        throw std::runtime_error("cannot open mesh file '" + filename + "'");
-      // Quadratic elements (gmsh types 8 and 10) go to our own reader; the
-      // others to deal.II's, which keeps the duplicated interface nodes:
-      // the two rings stay two bodies.
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      const std::string text      = buffer.str();
-      bool              quadratic = false;
+      // Every boundary face of the triangulation must be one of the file's
+      // lines with the face's boundary id: a face without one is a line
+      // the file dropped (or a crack in the mesh), and its boundary
+      // condition would silently be missing.
+      void
+      check_boundary_tags(const Triangulation<2> &triangulation,
+                          const GmshMesh         &mesh)
       {
-        std::istringstream lines(text);
-        std::string        line;
-        bool               in_elements = false;
-        while (std::getline(lines, line))
+        using Key      = std::array<double, 4>;
+        const auto key = [](Point<2> a, Point<2> b) {
+          if (std::make_pair(b[0], b[1]) < std::make_pair(a[0], a[1]))
+            std::swap(a, b);
+          return Key{{a[0], a[1], b[0], b[1]}};
+        };
+        std::map<Key, std::set<long>> tags;
+        for (const auto &element : mesh.elements)
+          if (element.type == 1 || element.type == 8)
+            tags[key(mesh.nodes.at(element.nodes[0]),
+                     mesh.nodes.at(element.nodes[1]))]
+              .insert(element.physical);
+        unsigned int untagged = 0;
+        Point<2>     example;
+        for (const auto &face : triangulation.active_face_iterators())
+          if (face->at_boundary())
+            {
+              const auto it = tags.find(key(face->vertex(0), face->vertex(1)));
+              if (it == tags.end() ||
+                  it->second.count(face->boundary_id()) == 0)
+                {
+                  if (untagged == 0)
+                    example = face->center();
+                  ++untagged;
+                }
+            }
+        if (untagged > 0)
           {
-            if (line == "$ELM" || line == "$Elements")
-              {
-                in_elements = true;
-                std::getline(lines, line);
-                continue;
-              }
-            if (line == "$ENDELM" || line == "$EndElements")
-              break;
-            if (in_elements)
-              {
-                std::istringstream fields(line);
-                long               id, type;
-                fields >> id >> type;
-                if (type == 8 || type == 10)
-                  {
-                    quadratic = true;
-                    break;
-                  }
-              }
+            std::ostringstream where;
+            where << example;
+            throw std::runtime_error(
+              "mesh file '" + mesh.filename + "': " + std::to_string(untagged) +
+              " boundary face(s) carry no physical tag from the file (the "
+              "first near (" +
+              where.str() +
+              ")): a boundary line is missing or the mesh has a crack");
           }
       }
-      std::istringstream stream(text);
-      if (quadratic)
+    } // namespace
+
+    GmshMesh
+    read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
+    {
+      // Check the whole file first: deal.II's reader trusts counts and
+      // node numbers, and takes triangles.
+      GmshMesh mesh = read_gmsh_file(filename);
+      if (mesh.quadratic)
+        build_quadratic(triangulation, mesh);
+      else
         {
-          read_gmsh_by_hand(triangulation, stream, filename);
-          return;
+          // deal.II's reader keeps the duplicated interface nodes: the two
+          // rings stay two bodies.
+          std::istringstream stream(mesh.text);
+          GridIn<2>          grid_in(triangulation);
+          try
+            {
+              grid_in.read_msh(stream);
+            }
+          catch (const std::exception &e)
+            {
+              throw std::runtime_error(
+                "cannot read mesh file '" + filename +
+                "' as a gmsh mesh (format 1 or 2.2): " + one_line_message(e));
+            }
         }
-      GridIn<2> grid_in(triangulation);
-      try
+      return mesh;
+    }
+
+    void
+    check_size(const std::size_t n_coarse_cells, const Parameters &parameters)
+    {
+      // Unknowns per cell: two displacement components and, on about half
+      // of the cells, the multiplier, each p^2 per cell for degree p.
+      const unsigned int p = std::max(parameters.finite_elements.degree_outer,
+                                      parameters.finite_elements.degree_inner);
+      const double       cells = static_cast<double>(n_coarse_cells) *
+                           std::pow(4.0, parameters.mesh.global_refinements);
+      const double unknowns = cells * 3 * p * p;
+      // Bytes per unknown: the matrix, the vectors, the mesh and the direct
+      // solver's factors. A deliberately generous round figure, not a
+      // measurement: it only has to stop runs that cannot fit long before
+      // they allocate (the 1e6-around input wanted ~24 GB).
+      const double bytes_per_unknown = 4000;
+      const double needed            = unknowns * bytes_per_unknown;
+      const double available =
+        static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+      if (needed > 0.8 * available)
         {
-          grid_in.read_msh(stream);
-        }
-      catch (const std::exception &e)
-        {
-          throw std::runtime_error("cannot read mesh file '" + filename +
-                                   "' as a gmsh mesh (format 1 or 2.2)");
+          std::ostringstream message;
+          message << "the mesh is too large for this machine: about "
+                  << std::setprecision(3) << cells << " cells and " << unknowns
+                  << " unknowns would need about " << needed / 1e9
+                  << " GB, more than 80 % of the " << available / 1e9
+                  << " GB of memory (subsection 'Mesh': fewer elements or "
+                     "refinements, or 'Sector elements' for cyclic symmetry)";
+          throw std::runtime_error(message.str());
         }
     }
 
     void
     create_mesh(Triangulation<2> &triangulation, const Parameters &parameters)
     {
+      const auto &mesh_parameters = parameters.mesh;
       if (parameters.mesh.source == MeshSource::patch_test)
         {
+          check_size(2 * (mesh_parameters.patch_elements_lower +
+                          mesh_parameters.patch_elements_upper),
+                     parameters);
           make_blocks(triangulation, parameters.mesh);
           triangulation.refine_global(parameters.mesh.global_refinements);
           return;
         }
       if (parameters.mesh.source == MeshSource::generated)
-        make_rings(triangulation, parameters.mesh);
+        {
+          const std::size_t columns = mesh_parameters.sector_elements > 0 ?
+                                        mesh_parameters.sector_elements :
+                                        mesh_parameters.elements_around;
+          check_size(std::size_t(columns) *
+                       (mesh_parameters.radial_elements_outer +
+                        mesh_parameters.radial_elements_inner),
+                     parameters);
+          make_rings(triangulation, parameters.mesh);
+          check_rings(triangulation, parameters);
+        }
       else
-        read_gmsh(triangulation, parameters.mesh.mesh_file);
-
-      check_rings(triangulation, parameters);
+        {
+          const GmshMesh mesh =
+            read_gmsh(triangulation, parameters.mesh.mesh_file);
+          check_rings(triangulation, parameters);
+          check_boundary_tags(triangulation, mesh);
+          check_size(triangulation.n_active_cells(), parameters);
+        }
 
       // Every cell, face and edge lives on the polar manifold: refinement
       // puts new vertices on the circles, and a mapping of degree >= 2
@@ -411,10 +419,56 @@ namespace RingContact
             std::to_string(worst_radius_error.at(id)) +
             " m off (check the radii in subsection 'Mesh')");
       };
+      // Each circle is covered once: its faces span the whole turn (the
+      // sector angle for a sector), no gap, no overlap.
+      std::map<types::boundary_id, double> angle_covered;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<2> a = face->vertex(0), b = face->vertex(1);
+              angle_covered[face->boundary_id()] +=
+                std::abs(std::atan2(a[0] * b[1] - a[1] * b[0], a * b));
+            }
+      const double full_turn = parameters.mesh.sector_elements > 0 ?
+                                 parameters.mesh.sector_angle() :
+                                 2 * numbers::PI;
+      for (const auto id : {Ids::outer_boundary,
+                            Ids::inner_boundary,
+                            static_cast<types::boundary_id>(
+                              parameters.contact.slave_boundary_id),
+                            static_cast<types::boundary_id>(
+                              parameters.contact.master_boundary_id)})
+        if (angle_covered.count(id) != 0 &&
+            std::abs(angle_covered[id] - full_turn) > 1e-6 * full_turn)
+          throw std::runtime_error(
+            name + ": boundary " + std::to_string(id) + " covers " +
+            std::to_string(angle_covered[id] * 180 / numbers::PI) +
+            " degrees of its circle instead of " +
+            std::to_string(full_turn * 180 / numbers::PI) +
+            " (a gap or an overlap)");
+
       require_boundary(Ids::outer_boundary, "outer boundary r = R1");
       require_boundary(Ids::inner_boundary, "inner boundary r = R3");
       require_boundary(parameters.contact.slave_boundary_id, "slave surface");
       require_boundary(parameters.contact.master_boundary_id, "master surface");
+      // Every boundary face belongs to one of the known boundaries.
+      std::set<types::boundary_id> known = {
+        Ids::outer_boundary,
+        Ids::inner_boundary,
+        static_cast<types::boundary_id>(parameters.contact.slave_boundary_id),
+        static_cast<types::boundary_id>(parameters.contact.master_boundary_id)};
+      if (parameters.mesh.sector_elements > 0)
+        known.insert({Ids::sector_start, Ids::sector_end});
+      for (const auto &[id, rings] : rings_of)
+        if (known.count(id) == 0)
+          throw std::runtime_error(
+            name + " has boundary faces with id " + std::to_string(id) +
+            ", which is none of the ring boundaries (200, 500) nor the "
+            "slave or master surface (a boundary line missing from a mesh "
+            "file leaves id 0)");
+
+
       if (*rings_of.at(parameters.contact.slave_boundary_id).begin() ==
           *rings_of.at(parameters.contact.master_boundary_id).begin())
         throw std::runtime_error(name +

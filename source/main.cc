@@ -75,9 +75,21 @@ main(int argc, char **argv)
         std::cout << "A load step could not be solved (see above).\n";
       return (pass && solved) ? 0 : 1;
     }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr << "ring_contact: error: out of memory (a smaller mesh, or "
+                   "'Mesh/Sector elements' for cyclic symmetry)"
+                << std::endl;
+      return 1;
+    }
   catch (const std::exception &e)
     {
       std::cerr << "ring_contact: error: " << one_line_message(e) << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "ring_contact: error: an unknown exception" << std::endl;
       return 1;
     }
 }

@@ -1,3 +1,4 @@
+#include <ring_contact/parameter_file.h>
 #include <ring_contact/parameters.h>
 #include <ring_contact/utilities.h>
 
@@ -6,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -13,7 +15,6 @@ namespace RingContact
 {
   namespace
   {
-    // Throw a one-line error that names the entry, when `ok` is false.
     std::string
     to_text(const double value)
     {
@@ -22,6 +23,8 @@ namespace RingContact
       return out.str();
     }
 
+    // Throw a one-line error that names the entry, when `ok` is false
+    // (Parameters::read() adds the file and line that set the value).
     void
     require(const bool         ok,
             const std::string &subsection,
@@ -29,8 +32,76 @@ namespace RingContact
             const std::string &what)
     {
       if (!ok)
-        throw std::runtime_error("parameter '" + entry + "' in subsection '" +
-                                 subsection + "' " + what);
+        throw ParameterError(subsection,
+                             entry,
+                             "parameter '" + entry + "' in subsection '" +
+                               subsection + "' " + what);
+    }
+
+    // The value of an entry as a finite double. The pattern has accepted
+    // the text, but e.g. 1e-320 (a denormal) or 1e999 still cannot be
+    // converted by deal.II: say so, naming the entry and the value.
+    double
+    get_double(ParameterHandler  &prm,
+               const std::string &subsection,
+               const std::string &entry)
+    {
+      const std::string text  = prm.get(entry);
+      double            value = 0;
+      bool              ok    = true;
+      try
+        {
+          value = prm.get_double(entry);
+        }
+      catch (...)
+        {
+          ok = false;
+        }
+      require(ok && std::isfinite(value),
+              subsection,
+              entry,
+              "has the value '" + printable(text) +
+                "', which is not a usable number (a floating-point number "
+                "between 1e-300 and 1e300 in magnitude, or 0)");
+      require(value == 0 ||
+                (std::abs(value) >= 1e-300 && std::abs(value) <= 1e300),
+              subsection,
+              entry,
+              "has the value '" + printable(text) +
+                "', which is not a usable number (a floating-point number "
+                "between 1e-300 and 1e300 in magnitude, or 0)");
+      return value;
+    }
+
+    // The value of an integer entry, in [lowest, highest].
+    unsigned int
+    get_count(ParameterHandler  &prm,
+              const std::string &subsection,
+              const std::string &entry,
+              const long         lowest,
+              const long         highest)
+    {
+      const std::string text  = prm.get(entry);
+      long              value = 0;
+      bool              ok    = true;
+      try
+        {
+          value = prm.get_integer(entry);
+        }
+      catch (...)
+        {
+          ok = false;
+        }
+      require(ok,
+              subsection,
+              entry,
+              "has the value '" + printable(text) + "', not an integer");
+      require(value >= lowest && value <= highest,
+              subsection,
+              entry,
+              "must be between " + std::to_string(lowest) + " and " +
+                std::to_string(highest) + ", got " + std::to_string(value));
+      return static_cast<unsigned int>(value);
     }
   } // namespace
 
@@ -230,9 +301,11 @@ namespace RingContact
       source = source_name == "generated"  ? MeshSource::generated :
                source_name == "patch test" ? MeshSource::patch_test :
                                              MeshSource::gmsh_file;
-      patch_elements_lower = prm.get_integer("Patch test elements lower block");
-      patch_elements_upper = prm.get_integer("Patch test elements upper block");
-      mesh_file            = prm.get("Mesh file");
+      patch_elements_lower =
+        get_count(prm, "Mesh", "Patch test elements lower block", 1, 100000);
+      patch_elements_upper =
+        get_count(prm, "Mesh", "Patch test elements upper block", 1, 100000);
+      mesh_file = prm.get("Mesh file");
       if (source == MeshSource::gmsh_file)
         {
           require(!mesh_file.empty(),
@@ -243,16 +316,24 @@ namespace RingContact
           if (path.is_relative())
             path = std::filesystem::path(prm_folder) / path;
           mesh_file = path.lexically_normal().string();
-          require(std::filesystem::exists(mesh_file),
+          std::error_code error;
+          require(std::filesystem::exists(mesh_file, error),
                   "Mesh",
                   "Mesh file",
-                  "names a file that does not exist: " + mesh_file);
+                  "names a file that does not exist: " + printable(mesh_file));
+          require(std::filesystem::is_regular_file(mesh_file, error),
+                  "Mesh",
+                  "Mesh file",
+                  "names something that is not a regular file: " +
+                    printable(mesh_file));
         }
-      elements_around       = prm.get_integer("Elements around");
-      radial_elements_outer = prm.get_integer("Radial elements outer ring");
-      radial_elements_inner = prm.get_integer("Radial elements inner ring");
-      global_refinements    = prm.get_integer("Global refinements");
-      sector_elements       = prm.get_integer("Sector elements");
+      elements_around = get_count(prm, "Mesh", "Elements around", 3, 10000000);
+      radial_elements_outer =
+        get_count(prm, "Mesh", "Radial elements outer ring", 1, 10000000);
+      radial_elements_inner =
+        get_count(prm, "Mesh", "Radial elements inner ring", 1, 10000000);
+      global_refinements = get_count(prm, "Mesh", "Global refinements", 0, 8);
+      sector_elements = get_count(prm, "Mesh", "Sector elements", 0, 10000000);
       require(sector_elements == 0 || source == MeshSource::generated,
               "Mesh",
               "Sector elements",
@@ -261,13 +342,13 @@ namespace RingContact
               "Mesh",
               "Sector elements",
               "must be smaller than 'Elements around' (0: the whole rings)");
-      outer_radius     = prm.get_double("Outer radius");
-      interface_radius = prm.get_double("Interface radius");
-      inner_radius     = prm.get_double("Inner radius");
+      outer_radius     = get_double(prm, "Mesh", "Outer radius");
+      interface_radius = get_double(prm, "Mesh", "Interface radius");
+      inner_radius     = get_double(prm, "Mesh", "Inner radius");
       require(inner_radius > 0,
               "Mesh",
               "Inner radius",
-              "must be positive (R3 > 0)");
+              "must be positive (R3 > 0), got " + to_text(inner_radius));
       require(inner_radius < interface_radius,
               "Mesh",
               "Inner radius",
@@ -276,6 +357,15 @@ namespace RingContact
               "Mesh",
               "Interface radius",
               "must be smaller than 'Outer radius' (R2 < R1)");
+      // The meshes identify their circles to 1e-8 R1: each ring must be
+      // much thicker than that.
+      require(interface_radius - inner_radius >= 1e-4 * outer_radius &&
+                outer_radius - interface_radius >= 1e-4 * outer_radius,
+              "Mesh",
+              "Interface radius",
+              "leaves a ring thinner than 1e-4 R1 (R1 = " +
+                to_text(outer_radius) + ", R2 = " + to_text(interface_radius) +
+                ", R3 = " + to_text(inner_radius) + ")");
     }
     prm.leave_subsection();
   }
@@ -326,10 +416,14 @@ namespace RingContact
   {
     prm.enter_subsection("Materials");
     {
-      youngs_modulus_outer = prm.get_double("Young's modulus outer ring");
-      poissons_ratio_outer = prm.get_double("Poisson's ratio outer ring");
-      youngs_modulus_inner = prm.get_double("Young's modulus inner ring");
-      poissons_ratio_inner = prm.get_double("Poisson's ratio inner ring");
+      youngs_modulus_outer =
+        get_double(prm, "Materials", "Young's modulus outer ring");
+      poissons_ratio_outer =
+        get_double(prm, "Materials", "Poisson's ratio outer ring");
+      youngs_modulus_inner =
+        get_double(prm, "Materials", "Young's modulus inner ring");
+      poissons_ratio_inner =
+        get_double(prm, "Materials", "Poisson's ratio inner ring");
       for (const auto &[E, name] :
            {std::make_pair(youngs_modulus_outer, "outer"),
             std::make_pair(youngs_modulus_inner, "inner")})
@@ -402,10 +496,14 @@ namespace RingContact
   {
     prm.enter_subsection("Finite elements");
     {
-      degree_outer        = prm.get_integer("Displacement degree outer ring");
-      degree_inner        = prm.get_integer("Displacement degree inner ring");
-      multiplier_degree   = prm.get_integer("Multiplier degree");
-      mapping_degree      = prm.get_integer("Mapping degree");
+      degree_outer = get_count(
+        prm, "Finite elements", "Displacement degree outer ring", 1, 2);
+      degree_inner = get_count(
+        prm, "Finite elements", "Displacement degree inner ring", 1, 2);
+      multiplier_degree =
+        get_count(prm, "Finite elements", "Multiplier degree", 1, 2);
+      mapping_degree =
+        get_count(prm, "Finite elements", "Mapping degree", 0, 4);
       reduced_integration = prm.get_bool("Reduced integration");
     }
     prm.leave_subsection();
@@ -477,8 +575,10 @@ namespace RingContact
   {
     prm.enter_subsection("Contact");
     {
-      slave_boundary_id  = prm.get_integer("Slave boundary");
-      master_boundary_id = prm.get_integer("Master boundary");
+      slave_boundary_id =
+        get_count(prm, "Contact", "Slave boundary", 0, 1000000000);
+      master_boundary_id =
+        get_count(prm, "Contact", "Master boundary", 0, 1000000000);
       require(slave_boundary_id != master_boundary_id,
               "Contact",
               "Slave boundary",
@@ -497,14 +597,31 @@ namespace RingContact
               require(false, "Contact", "Integration schemes", e.what());
             }
         }
-      smooth_master_normals    = prm.get_bool("Smooth master normals");
-      complementarity_constant = prm.get_double("Complementarity constant");
-      reported_pressure        = prm.get("Reported pressure") == "Cauchy" ?
-                                   PressureMeasure::cauchy :
-                                   PressureMeasure::nominal;
-      const auto xy            = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Probe point")));
-      probe_point = Point<2>(xy[0], xy[1]);
+      smooth_master_normals = prm.get_bool("Smooth master normals");
+      complementarity_constant =
+        get_double(prm, "Contact", "Complementarity constant");
+      reported_pressure = prm.get("Reported pressure") == "Cauchy" ?
+                            PressureMeasure::cauchy :
+                            PressureMeasure::nominal;
+      const auto xy     = Utilities::split_string_list(prm.get("Probe point"));
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          double value = 0;
+          try
+            {
+              value = Utilities::string_to_double(xy.at(d));
+            }
+          catch (...)
+            {
+              value = std::nan("");
+            }
+          require(std::isfinite(value) && std::abs(value) < 1e300,
+                  "Contact",
+                  "Probe point",
+                  "must be two finite coordinates 'x, y', got '" +
+                    printable(prm.get("Probe point")) + "'");
+          probe_point[d] = value;
+        }
     }
     prm.leave_subsection();
   }
@@ -560,21 +677,37 @@ namespace RingContact
     {
       program = prm.get("Program") == "ramp" ? LoadProgramType::ramp :
                                                LoadProgramType::rotation;
-      reference_pressure = prm.get_double("Reference pressure");
-      ramp_steps         = prm.get_integer("Ramp steps");
-      time_step          = prm.get_double("Time step");
-      rotation_pressure  = prm.get_double("Rotation pressure");
-      rotation_steps     = prm.get_integer("Rotation steps");
-      rotation_elements  = prm.get_double("Rotation in elements");
+      reference_pressure =
+        get_double(prm, "Load program", "Reference pressure");
+      ramp_steps = get_count(prm, "Load program", "Ramp steps", 1, 100000);
+      time_step  = get_double(prm, "Load program", "Time step");
+      rotation_pressure = get_double(prm, "Load program", "Rotation pressure");
+      rotation_steps =
+        get_count(prm, "Load program", "Rotation steps", 1, 100000);
+      rotation_elements =
+        get_double(prm, "Load program", "Rotation in elements");
       require(reference_pressure > 0,
               "Load program",
               "Reference pressure",
-              "must be positive");
-      require(time_step > 0, "Load program", "Time step", "must be positive");
+              "must be positive, got " + to_text(reference_pressure));
+      require(time_step > 0,
+              "Load program",
+              "Time step",
+              "must be positive, got " + to_text(time_step));
+      // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
+      require(program != LoadProgramType::ramp ||
+                std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
+                  100,
+              "Load program",
+              "Time step",
+              "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
+              "exceed 1e100 Pa (n = " +
+                std::to_string(ramp_steps) + ", dt = " + to_text(time_step) +
+                ")");
       require(rotation_pressure > 0,
               "Load program",
               "Rotation pressure",
-              "must be positive");
+              "must be positive, got " + to_text(rotation_pressure));
     }
     prm.leave_subsection();
   }
@@ -626,9 +759,9 @@ namespace RingContact
   {
     prm.enter_subsection("Newton");
     {
-      max_iterations = prm.get_integer("Maximum iterations");
-      tolerance      = prm.get_double("Tolerance");
-      max_step_cuts  = prm.get_integer("Maximum step cuts");
+      max_iterations = get_count(prm, "Newton", "Maximum iterations", 1, 1000);
+      tolerance      = get_double(prm, "Newton", "Tolerance");
+      max_step_cuts  = get_count(prm, "Newton", "Maximum step cuts", 0, 30);
       extrapolate    = prm.get_bool("Extrapolate");
       verbose        = prm.get_bool("Verbose");
       require(tolerance > 0, "Newton", "Tolerance", "must be positive");
@@ -688,8 +821,8 @@ namespace RingContact
       directory = prm.get("Directory");
       if (directory.empty())
         directory = "results/" + prm_name;
-      vtu_interval     = prm.get_integer("VTU interval");
-      vtu_subdivisions = prm.get_integer("VTU subdivisions");
+      vtu_interval = get_count(prm, "Output", "VTU interval", 0, 1000000000);
+      vtu_subdivisions = get_count(prm, "Output", "VTU subdivisions", 0, 8);
       write_history    = prm.get_bool("Write history");
       print_timing     = prm.get_bool("Print timing");
       print_steps      = prm.get_bool("Print steps");
@@ -738,32 +871,45 @@ namespace RingContact
       quantity  = name == "pressure at A"   ? CheckedQuantity::pressure_at_A :
                   name == "pressure spread" ? CheckedQuantity::pressure_spread :
                                               CheckedQuantity::l2_pressure_error;
-      tolerance = prm.get_double("Tolerance");
+      tolerance = get_double(prm, "Checks", "Tolerance");
       const std::string steps_text = Utilities::trim(prm.get("Steps"));
-      every_step                   = (steps_text == "all");
+      require(!steps_text.empty(),
+              "Checks",
+              "Steps",
+              "is empty: give 'all', 'last', 'none' (no checks) or step "
+              "numbers");
+      every_step = (steps_text == "all");
       steps.clear();
       if (steps_text == "last")
         steps.push_back(numbers::invalid_unsigned_int);
       else if (!every_step && steps_text != "none")
-        for (const auto &s : Utilities::split_string_list(steps_text))
-          {
-            int n = 0;
-            try
-              {
-                n = Utilities::string_to_int(s);
-              }
-            catch (...)
-              {
-                n = 0;
-              }
-            require(n >= 1,
-                    "Checks",
-                    "Steps",
-                    "must be 'all', 'last', 'none' or step numbers >= 1, "
-                    "got '" +
-                      s + "'");
-            steps.push_back(n);
-          }
+        {
+          for (const auto &s : Utilities::split_string_list(steps_text))
+            {
+              long n = 0;
+              try
+                {
+                  n = Utilities::string_to_int(s);
+                }
+              catch (...)
+                {
+                  n = 0;
+                }
+              require(n >= 1 && n <= 100000,
+                      "Checks",
+                      "Steps",
+                      "must be 'all', 'last', 'none' or step numbers from 1 "
+                      "to 100000, got '" +
+                        printable(s) + "'");
+              steps.push_back(n);
+            }
+          // "1,,2" or " , " select nothing where something was meant.
+          require(!steps.empty(),
+                  "Checks",
+                  "Steps",
+                  "selects no step: give 'all', 'last', 'none' (no checks) "
+                  "or step numbers");
+        }
     }
     prm.leave_subsection();
   }
@@ -789,19 +935,9 @@ namespace RingContact
   Parameters::read(const std::string &filename)
   {
     prm_file = filename;
-    if (!std::filesystem::exists(filename))
-      throw std::runtime_error("parameter file '" + filename +
-                               "' does not exist");
     ParameterHandler prm;
     declare_parameters(prm);
-    try
-      {
-        prm.parse_input(filename);
-      }
-    catch (const std::exception &e)
-      {
-        throw std::runtime_error(filename + ": " + one_line_message(e));
-      }
+    const auto origins = read_parameter_file(prm, filename);
 
     const std::filesystem::path path(filename);
     const std::string           folder =
@@ -817,20 +953,116 @@ namespace RingContact
         newton.parse_parameters(prm);
         output.parse_parameters(prm, name);
         checks.parse_parameters(prm);
-
-        const unsigned int slave_degree =
-          (contact.slave_boundary_id == Ids::outer_ring_contact) ?
-            finite_elements.degree_outer :
-            finite_elements.degree_inner;
-        require(finite_elements.multiplier_degree <= slave_degree,
-                "Finite elements",
-                "Multiplier degree",
-                "must not exceed the displacement degree of the slave ring");
+        check_consistency();
       }
-    catch (const std::exception &e)
+    catch (const ParameterError &e)
       {
-        throw std::runtime_error(filename + ": " + e.what());
+        // Name the file and line that set the value, or say that it is
+        // the default.
+        const auto origin = origins.find(entry_key(e.subsection, e.entry));
+        if (origin != origins.end())
+          throw std::runtime_error(origin->second.file + ":" +
+                                   std::to_string(origin->second.line) + ": " +
+                                   e.what());
+        throw std::runtime_error(filename + ": " + e.what() +
+                                 " (its default value)");
       }
+  }
+
+  void
+  Parameters::check_consistency() const
+  {
+    const unsigned int slave_degree =
+      (contact.slave_boundary_id == Ids::outer_ring_contact) ?
+        finite_elements.degree_outer :
+        finite_elements.degree_inner;
+    require(finite_elements.multiplier_degree <= slave_degree,
+            "Finite elements",
+            "Multiplier degree",
+            "must not exceed the displacement degree of the slave ring");
+
+    // Rotations: at most ten turns (the angle is 2 pi s over the elements
+    // around the refined mesh); beyond, the rotated copies of the master
+    // surface a sector needs would grow without bound.
+    const double elements_around_refined =
+      static_cast<double>(mesh.elements_around) *
+      (1u << mesh.global_refinements);
+    require(load.program != LoadProgramType::rotation ||
+              std::abs(load.rotation_elements) <= 10 * elements_around_refined,
+            "Load program",
+            "Rotation in elements",
+            "must be at most ten turns (|s| <= 10 x " +
+              to_text(elements_around_refined) +
+              " elements around the refined mesh), got " +
+              to_text(load.rotation_elements));
+
+    // The probe point (node A) must be on the slave surface, or near it:
+    // the nearest slave node is used, and a point far away names a node
+    // the user did not mean.
+    {
+      const Point<2> &x = contact.probe_point;
+      double          distance;
+      double          scale;
+      if (mesh.source == MeshSource::patch_test)
+        {
+          // The interface of the blocks: 0 <= x <= 1, y = 0.
+          const double nearest_x = std::min(1.0, std::max(0.0, x[0]));
+          distance               = Point<2>(nearest_x, 0).distance(x);
+          scale                  = 1.0;
+        }
+      else
+        {
+          distance = std::abs(x.norm() - mesh.interface_radius);
+          scale    = mesh.interface_radius;
+        }
+      require(distance <= 0.05 * scale,
+              "Contact",
+              "Probe point",
+              "(" + to_text(x[0]) + ", " + to_text(x[1]) +
+                ") is not near the slave surface: it is " + to_text(distance) +
+                " m from it (at most " + to_text(0.05 * scale) +
+                " m accepted)");
+    }
+
+    // Cyclic symmetry: the master surface of a sector of k elements is
+    // continued by c = 1 + ceil(|s| / k) rotated copies on each side (see
+    // RingContactProblem::setup_system). Where the sector and its copies,
+    // (2c + 1) k elements, go further round than the circle, copies lie on
+    // top of the sector; the contact pairing then meets coincident master
+    // segments and Newton fails (k = 21, 23..39 of 40 around; issue 9).
+    // Until the copies are trimmed to close the circle, refuse those.
+    if (mesh.sector_elements > 0)
+      {
+        const double k = static_cast<double>(mesh.sector_elements) *
+                         (1u << mesh.global_refinements);
+        const double rotation = load.program == LoadProgramType::rotation ?
+                                  std::abs(load.rotation_elements) :
+                                  0.0;
+        const double copies   = 1 + std::ceil(rotation / k);
+        require((2 * copies + 1) * k <= elements_around_refined,
+                "Mesh",
+                "Sector elements",
+                "= " + std::to_string(mesh.sector_elements) +
+                  " is too wide: the sector and the rotated copies of its "
+                  "master surface (" +
+                  to_text(2 * copies + 1) + " x " + to_text(k) +
+                  " elements, for a rotation of " + to_text(rotation) +
+                  " elements) would overlap round the circle of " +
+                  to_text(elements_around_refined) +
+                  " elements, which the contact pairing does not handle");
+      }
+
+    // A checked step beyond the last one of the load program is a typo.
+    const unsigned int n_steps = load.program == LoadProgramType::ramp ?
+                                   load.ramp_steps :
+                                   load.rotation_steps;
+    for (const unsigned int step : checks.steps)
+      require(step == numbers::invalid_unsigned_int || step <= n_steps,
+              "Checks",
+              "Steps",
+              "names step " + std::to_string(step) +
+                ", but the load program has " + std::to_string(n_steps) +
+                " steps");
   }
 
   void

@@ -2,10 +2,69 @@
 
 #include <ring_contact/utilities.h>
 
+#include <cstdio>
 #include <sstream>
 
 namespace RingContact
 {
+  namespace
+  {
+    // The length of the UTF-8 sequence that starts at `at`, 0 if it is not
+    // a valid one.
+    std::size_t
+    utf8_length(const std::string &text, const std::size_t at)
+    {
+      const auto byte = [&](const std::size_t i) {
+        return static_cast<unsigned char>(text[i]);
+      };
+      const unsigned char first = byte(at);
+      const std::size_t   n     = (first >= 0xC2 && first <= 0xDF) ? 2 :
+                                  (first >= 0xE0 && first <= 0xEF) ? 3 :
+                                  (first >= 0xF0 && first <= 0xF4) ? 4 :
+                                                                     0;
+      if (n == 0 || at + n > text.size())
+        return 0;
+      for (std::size_t i = 1; i < n; ++i)
+        if ((byte(at + i) & 0xC0) != 0x80)
+          return 0;
+      return n;
+    }
+  } // namespace
+
+  std::string
+  printable(const std::string &text, const std::size_t max_length)
+  {
+    std::string result;
+    std::size_t shown = 0;
+    std::size_t at    = 0;
+    while (at < text.size() && shown < max_length)
+      {
+        const unsigned char c = static_cast<unsigned char>(text[at]);
+        if (c >= 0x20 && c < 0x7F)
+          {
+            result += text[at];
+            ++at;
+          }
+        else if (const std::size_t n = (c >= 0x80) ? utf8_length(text, at) : 0;
+                 n > 0)
+          {
+            result += text.substr(at, n);
+            at += n;
+          }
+        else
+          {
+            char escape[8];
+            std::snprintf(escape, sizeof(escape), "\\x%02X", c);
+            result += escape;
+            ++at;
+          }
+        ++shown;
+      }
+    if (at < text.size())
+      result += "...";
+    return result;
+  }
+
   std::string
   one_line_message(const std::exception &e)
   {
@@ -22,7 +81,8 @@ namespace RingContact
     std::string line;
     bool        space = false;
     for (const char c : text)
-      if (std::isspace(static_cast<unsigned char>(c)))
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+          c == '\f')
         space = !line.empty();
       else
         {
@@ -31,6 +91,8 @@ namespace RingContact
           line += c;
           space = false;
         }
-    return line;
+    // Messages quote values that were escaped where they were read; this
+    // is the last guard against a raw byte reaching the terminal.
+    return printable(line, 1000);
   }
 } // namespace RingContact

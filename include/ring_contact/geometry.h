@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/gmsh_file.h>
 #include <ring_contact/parameters.h>
 
 namespace RingContact
@@ -26,9 +27,18 @@ namespace RingContact
     void
     make_blocks(Triangulation<2> &triangulation, const MeshParameters &mesh);
 
-    /// Read a gmsh mesh (format 1 or 2.2) with the original's physical tags.
-    void
+    /// Read a gmsh mesh (format 1 or 2.2) with the original's physical tags,
+    /// after checking the whole file (see gmsh_file.h); returns what the
+    /// file holds, for the checks of the boundary tags.
+    GmshMesh
     read_gmsh(Triangulation<2> &triangulation, const std::string &filename);
+
+    /// Throw a one-line error, before anything large is allocated, if a mesh
+    /// of `n_coarse_cells` cells refined as the parameters say would need
+    /// more than 80 % of the machine's physical memory (an estimate from
+    /// the number of unknowns, including the direct solver's factors).
+    void
+    check_size(std::size_t n_coarse_cells, const Parameters &parameters);
 
     /// Make the mesh of the parameters: generate or read it, attach the
     /// polar manifold (refinement and curved mappings follow the circles),

@@ -264,6 +264,12 @@ namespace RingContact
     void
     read(const std::string &filename);
 
+    /// Checks across subsections (called by read()): the multiplier degree
+    /// against the slave ring's, the rotation against the mesh, the
+    /// checked steps against the load program.
+    void
+    check_consistency() const;
+
     /// Print every entry with default and documentation.
     static void
     print_reference(std::ostream &out, bool as_prm);

@@ -2,15 +2,23 @@
 #ifndef ring_contact_utilities_h
 #define ring_contact_utilities_h
 
+#include <cstddef>
 #include <exception>
 #include <string>
 
 namespace RingContact
 {
   /// The message of an exception on one line: for deal.II exceptions only the
-  /// "additional information" (no stack trace), whitespace collapsed.
+  /// "additional information" (no stack trace), whitespace collapsed, made
+  /// printable and cut to a sane length (see printable()).
   std::string
   one_line_message(const std::exception &e);
+
+  /// `text` safe to show on a terminal in one line: control characters and
+  /// bytes that are not UTF-8 become \xHH escapes, and a text longer than
+  /// `max_length` characters is cut and ends with "...".
+  std::string
+  printable(const std::string &text, std::size_t max_length = 60);
 } // namespace RingContact
 
 #endif
