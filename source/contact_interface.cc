@@ -23,7 +23,10 @@ namespace RingContact
                sector.angle,
                sector.copies)
       , quadrature(
-          contact_quadrature(scheme, slave.displacement_basis().size() - 1))
+          contact_quadrature(scheme,
+                             std::max(slave.displacement_basis().size(),
+                                      master.displacement_basis().size()) -
+                               1))
       // Automatic complementarity constant: E / h of the slave surface.
       , complementarity_constant(parameters.complementarity_constant > 0 ?
                                    parameters.complementarity_constant :

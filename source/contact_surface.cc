@@ -583,16 +583,39 @@ namespace RingContact
   }
 
   Quadrature<1>
-  contact_quadrature(const IntegrationScheme &scheme,
-                     const unsigned int       slave_degree)
+  contact_quadrature(const IntegrationScheme &scheme, const unsigned int degree)
   {
+    // A quadratic segment's vertex functions vanish at its midpoint and its
+    // mid-side function at its ends: a single point (Gauss 1, or one per
+    // piece, which on facing meshes is the whole segment) or the ends alone
+    // (trapezoid) give some of its nodes no contact force and leave their
+    // displacement out of the weighted gaps, an error of the order of h in
+    // the pressure (see theory.md).
+    const bool one_point = (scheme.type == ContactIntegration::gauss ||
+                            scheme.type == ContactIntegration::segment_based) &&
+                           scheme.n_points == 1;
+    const bool ends_only =
+      scheme.type == ContactIntegration::newton_cotes && scheme.n_points == 1;
+    AssertThrow(degree < 2 || !(one_point || ends_only),
+                ExcMessage("contact integration scheme '" + scheme.name() +
+                           "' is first order on a quadratic contact surface "
+                           "(" +
+                           (one_point ? "its one point per segment misses "
+                                        "the vertex nodes" :
+                                        "its segment ends miss the mid-side "
+                                        "nodes") +
+                           "); use nodal, Gauss 2 or more, Simpson, "
+                           "Newton-Cotes 2 or more, or segment-based 2 or "
+                           "more"));
     switch (scheme.type)
       {
         case ContactIntegration::nodal:
-          // At the slave nodes, with the weights that integrate the
-          // element's polynomials: trapezoid for linear, Simpson for
-          // quadratic segments.
-          return QGaussLobatto<1>(slave_degree + 1);
+          // At the nodes, with the weights that integrate the elements'
+          // polynomials: trapezoid when both surfaces are linear, Simpson
+          // when one is quadratic. A linear slave facing a quadratic master
+          // needs the mid-side points too: with the slave vertices alone the
+          // master's mid-side nodes would get no contact force.
+          return QGaussLobatto<1>(degree + 1);
         case ContactIntegration::gauss:
         case ContactIntegration::segment_based: // the rule on each piece
           return QGauss<1>(scheme.n_points);

@@ -2,6 +2,7 @@
 // and weights of each scheme, and the polynomial degree each integrates
 // exactly.
 #include <ring_contact/contact_surface.h>
+#include <ring_contact/utilities.h>
 
 #include "tests.h"
 
@@ -59,6 +60,27 @@ main()
   const auto nodal2 = show("nodal", 2);
   check(nodal2.size() == 3 && std::abs(nodal2.weight(1) - 2.0 / 3) < 1e-15,
         "nodal on Q2 is Simpson's rule");
+
+  // The degree is the higher of the slave's and the master's: a linear
+  // slave facing a quadratic master is integrated at its vertices and
+  // mid-side points (Simpson), where the master's nodes face it. Rules that
+  // give some node of a quadratic segment no weight are refused there.
+  for (const std::string first_order :
+       {"Gauss 1", "segment-based 1", "Newton-Cotes 1"})
+    {
+      const IntegrationScheme scheme = IntegrationScheme::parse(first_order);
+      check(contact_quadrature(scheme, 1).size() > 0,
+            first_order + " is accepted when both surfaces are linear");
+      try
+        {
+          contact_quadrature(scheme, 2);
+          check(false, first_order + " must be refused on a quadratic surface");
+        }
+      catch (const std::exception &e)
+        {
+          out << "refused on Q2: " << one_line_message(e) << std::endl;
+        }
+    }
 
   for (unsigned int n = 1; n <= 10; ++n)
     {
