@@ -318,7 +318,8 @@ namespace RingContact
     // Fast zlib: best compression costs more than the solve here.
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
-    // The rings.
+    // The rings: curved cells as VTK Lagrange quadrilaterals, which deal.II
+    // 9.4 writes correctly for dim = 2.
     Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
       ring_id(cell->active_cell_index()) = cell->material_id();
@@ -353,8 +354,12 @@ namespace RingContact
                           solution_interpretation());
     GapPostprocessor gap;
     faces.add_data_vector(nodal_gap, gap);
+    // Linear segments, `subdivisions` per face: deal.II 9.4 numbers the
+    // points of a 1d Lagrange curve wrongly (and a Debug build aborts in
+    // write_high_order_cells for dim = 1), so the surface's curved faces
+    // are written as subdivided straight segments.
     DataOutBase::VtkFlags surface_flags    = flags;
-    surface_flags.write_higher_order_cells = subdivisions > 1;
+    surface_flags.write_higher_order_cells = false;
     faces.set_flags(surface_flags);
     // DataOutFaces takes one mapping: that of the slave ring.
     unsigned int slave_fe_index = 0;
