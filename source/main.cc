@@ -60,8 +60,15 @@ namespace
     sigemptyset(&action.sa_mask);
     // Interrupted system calls (file writes) resume.
     action.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    // A signal the caller ignores stays ignored (a shell script's
+    // background jobs ignore SIGINT, so that Ctrl-C stops only the script).
+    for (const int signal : {SIGINT, SIGTERM})
+      {
+        struct sigaction inherited;
+        sigaction(signal, nullptr, &inherited);
+        if (inherited.sa_handler != SIG_IGN)
+          sigaction(signal, &action, nullptr);
+      }
     // A file size limit (ulimit -f) makes write() fail with EFBIG, reported
     // like a full disk, instead of killing the program.
     std::signal(SIGXFSZ, SIG_IGN);

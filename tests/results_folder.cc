@@ -1,8 +1,9 @@
 // One run per results folder, nothing left of an earlier run, nothing lost
 // when a write fails. The real executable (modelisation A):
-// - lock: a second run into the folder of a live run is refused with a
-//   message naming the folder and the first run's pid; the first run is
-//   then stopped (SIGTERM) and its files read back whole;
+// - lock: a second run into the folder of a live run (400 steps: it lives
+//   while the second starts) is refused with a message naming the folder
+//   and the first run's pid; the first run is then stopped (SIGTERM) and
+//   its files read back whole;
 // - rerun: a shorter run with one scheme into the folder of a longer run
 //   with two removes the earlier history, verdicts, VTU and PVD files (and
 //   says so) but no other file;
@@ -70,7 +71,7 @@ namespace
     RingContactTests::RunResult second;
     pid_t                       first_pid = 0;
     const auto                  first     = RingContactTests::run_program(
-      write_prm("lock", 21, "nodal, Gauss 3", 1),
+      write_prm("lock", 400, "nodal, Gauss 3", 1),
       [&](const std::string &line, const pid_t pid) {
         if (line.rfind("Step", 0) == 0 && first_pid == 0)
           {
@@ -88,7 +89,9 @@ namespace
               std::string::npos,
           "lock: the message names the folder and the pid: " + message);
     check(second.count("Step") == 0, "lock: the second run solved nothing");
-    check(first.exit_code == 143, "lock: the first run stopped by SIGTERM");
+    check(first.exit_code == 143,
+          "lock: the first run stopped by SIGTERM, exit code " +
+            std::to_string(first.exit_code));
     const unsigned int rows = count_rows("results_lock/history.csv");
     check(rows == first.count("Step"), "lock: the first run's rows");
     check(RingContactTests::check_results(
