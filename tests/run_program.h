@@ -69,6 +69,10 @@ namespace RingContactTests
         ::dup2(pipe_ends[1], 2);
         ::close(pipe_ends[0]);
         ::close(pipe_ends[1]);
+        // The signals as a user's shell gives them (a test run from a
+        // script's background job would ignore SIGINT).
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
         if (file_size_limit > 0)
           {
             const rlimit limit{file_size_limit, file_size_limit};
