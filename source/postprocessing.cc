@@ -3,11 +3,16 @@
 #include <deal.II/numerics/data_out_faces.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <ring_contact/output_folder.h>
 #include <ring_contact/postprocessing.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace RingContact
 {
@@ -107,37 +112,66 @@ namespace RingContact
     return all_pass;
   }
 
-  void
-  write_verdicts(const std::string          &filename,
-                 const std::vector<Verdict> &verdicts)
+  std::string
+  verdicts_csv(const std::vector<Verdict> &verdicts)
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
+    std::ostringstream out;
     out << "scheme,quantity,step,value,reference,error,tolerance,verdict\n";
     out << std::setprecision(10);
     for (const auto &v : verdicts)
       out << v.scheme << ',' << v.quantity << ',' << v.step << ',' << v.value
           << ',' << v.reference << ',' << v.error << ',' << v.tolerance << ','
           << (v.pass ? "PASS" : "FAIL") << '\n';
+    return out.str();
+  }
+
+  void
+  write_verdicts(const std::string          &filename,
+                 const std::vector<Verdict> &verdicts)
+  {
+    write_file_atomically(filename, verdicts_csv(verdicts));
+  }
+
+  std::string
+  history_csv_header()
+  {
+    return "scheme,step,time,load_factor,rotation,pressure_A,analytic,"
+           "relative_error,l2_relative_error,pressure_min,pressure_max,"
+           "newton_iterations,step_cuts,active_nodes,wall_time\n";
+  }
+
+  std::string
+  history_csv_row(const HistoryRow &r)
+  {
+    std::ostringstream out;
+    out << std::setprecision(10);
+    out << r.scheme << ',' << r.step << ',' << r.time << ',' << r.load_factor
+        << ',' << r.rotation << ',' << r.pressure_A << ',' << r.analytic << ','
+        << r.relative_error << ',' << r.l2_relative_error << ','
+        << r.pressure_min << ',' << r.pressure_max << ',' << r.newton_iterations
+        << ',' << r.step_cuts << ',' << r.active_nodes << ',' << r.wall_time
+        << '\n';
+    return out.str();
   }
 
   void
   write_history(const std::string             &filename,
                 const std::vector<HistoryRow> &history)
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
-    out << "scheme,step,time,load_factor,rotation,pressure_A,analytic,"
-           "relative_error,l2_relative_error,pressure_min,pressure_max,"
-           "newton_iterations,step_cuts,active_nodes,wall_time\n";
-    out << std::setprecision(10);
-    for (const auto &r : history)
-      out << r.scheme << ',' << r.step << ',' << r.time << ',' << r.load_factor
-          << ',' << r.rotation << ',' << r.pressure_A << ',' << r.analytic
-          << ',' << r.relative_error << ',' << r.l2_relative_error << ','
-          << r.pressure_min << ',' << r.pressure_max << ','
-          << r.newton_iterations << ',' << r.step_cuts << ',' << r.active_nodes
-          << ',' << r.wall_time << '\n';
+    std::string contents = history_csv_header();
+    for (const auto &row : history)
+      contents += history_csv_row(row);
+    write_file_atomically(filename, contents);
+  }
+
+  HistoryFile::HistoryFile(const std::string &filename)
+      : file(filename, history_csv_header())
+  {}
+
+  void
+  HistoryFile::append(const HistoryRow &row)
+  {
+    file.append(history_csv_row(row));
   }
 
   namespace
@@ -280,12 +314,12 @@ namespace RingContact
                                             "displacement",
                                             "contact_pressure"};
     DataOutBase::VtkFlags          flags;
-    flags.write_higher_order_cells = subdivisions > 1;
-    flags.time                     = time;
+    flags.time = time;
     // Fast zlib: best compression costs more than the solve here.
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
-    // The rings.
+    // The rings: curved cells as VTK Lagrange quadrilaterals, which deal.II
+    // 9.4 writes correctly for dim = 2.
     Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
       ring_id(cell->active_cell_index()) = cell->material_id();
@@ -298,15 +332,18 @@ namespace RingContact
                              solution_interpretation());
     data_out.add_data_vector(solution, stress);
     data_out.add_data_vector(ring_id, "ring_id");
-    data_out.set_flags(flags);
+    DataOutBase::VtkFlags bulk_flags    = flags;
+    bulk_flags.write_higher_order_cells = subdivisions > 1;
+    data_out.set_flags(bulk_flags);
     data_out.build_patches(mapping,
                            subdivisions,
                            DataOut<2>::curved_inner_cells);
     const std::string bulk_name =
       "solution-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
-    std::ofstream bulk(directory + "/" + bulk_name);
-    data_out.write_vtu(bulk);
-    bulk_records.emplace_back(time, bulk_name);
+    write_vtu_file(data_out, directory + "/" + bulk_name);
+    record(bulk_records, time, bulk_name);
+    write_file_atomically(directory + "/solution-" + tag + ".pvd",
+                          pvd_contents(bulk_records));
 
     // The slave surface, with the nodal gap.
     SlaveFaces faces(slave_boundary_id);
@@ -317,7 +354,13 @@ namespace RingContact
                           solution_interpretation());
     GapPostprocessor gap;
     faces.add_data_vector(nodal_gap, gap);
-    faces.set_flags(flags);
+    // Linear segments, `subdivisions` per face: deal.II 9.4 numbers the
+    // points of a 1d Lagrange curve wrongly (and a Debug build aborts in
+    // write_high_order_cells for dim = 1), so the surface's curved faces
+    // are written as subdivided straight segments.
+    DataOutBase::VtkFlags surface_flags    = flags;
+    surface_flags.write_higher_order_cells = false;
+    faces.set_flags(surface_flags);
     // DataOutFaces takes one mapping: that of the slave ring.
     unsigned int slave_fe_index = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -329,13 +372,73 @@ namespace RingContact
       subdivisions);
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
-    std::ofstream surface(directory + "/" + surface_name);
-    faces.write_vtu(surface);
-    surface_records.emplace_back(time, surface_name);
+    write_vtu_file(faces, directory + "/" + surface_name);
+    record(surface_records, time, surface_name);
+    write_file_atomically(directory + "/slave-" + tag + ".pvd",
+                          pvd_contents(surface_records));
+  }
 
-    std::ofstream pvd(directory + "/solution-" + tag + ".pvd");
-    DataOutBase::write_pvd_record(pvd, bulk_records);
-    std::ofstream pvd_surface(directory + "/slave-" + tag + ".pvd");
-    DataOutBase::write_pvd_record(pvd_surface, surface_records);
+  // Under a temporary name, then renamed: a VTU file is whole or absent.
+  template <int patch_dim>
+  void
+  VtuWriter::write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
+                            const std::string &filename) const
+  {
+    const std::string temporary = temporary_name(filename);
+    // Check the stream after the writing and after the flush: a full disk
+    // shows there (deal.II may also throw ExcIO on its own).
+    bool written = false;
+    errno        = 0;
+    try
+      {
+        std::ofstream out(temporary);
+        if (out)
+          {
+            data.write_vtu(out);
+            out.flush();
+            out.close();
+          }
+        written = !out.fail();
+      }
+    catch (const std::exception &)
+      {
+        written = false;
+      }
+    if (!written)
+      {
+        const int       error = errno;
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error(
+          "cannot write '" + filename + "': " +
+          (error != 0 ? std::strerror(error) :
+                        "disk full, file size limit or no permission"));
+      }
+    commit_file(temporary, filename);
+  }
+
+  // A rewritten step (the state written again after a failed step)
+  // replaces its record instead of listing the file twice.
+  void
+  VtuWriter::record(std::vector<std::pair<double, std::string>> &records,
+                    const double                                 time,
+                    const std::string                           &name)
+  {
+    for (auto &r : records)
+      if (r.second == name)
+        {
+          r.first = time;
+          return;
+        }
+    records.emplace_back(time, name);
+  }
+
+  std::string
+  VtuWriter::pvd_contents(
+    const std::vector<std::pair<double, std::string>> &records)
+  {
+    std::ostringstream out;
+    DataOutBase::write_pvd_record(out, records);
+    return out.str();
   }
 } // namespace RingContact

@@ -797,7 +797,11 @@ namespace RingContact
         << load_program.n_steps() << " steps\n";
     bool ok = true;
     for (unsigned int step = 1; step <= load_program.n_steps() && ok; ++step)
-      ok = solve_load_step(step);
+      {
+        ok = solve_load_step(step);
+        if (ok && step_observer && !step_observer(history_rows.back()))
+          break;
+      }
     if (!ok && parameters.output.vtu_interval > 0)
       output_results(history_rows.empty() ? 0 : history_rows.back().step);
     return ok;

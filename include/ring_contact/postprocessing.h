@@ -4,11 +4,13 @@
 #ifndef ring_contact_postprocessing_h
 #define ring_contact_postprocessing_h
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/material.h>
+#include <ring_contact/output_folder.h>
 #include <ring_contact/parameters.h>
 
 #include <map>
@@ -61,19 +63,37 @@ namespace RingContact
   print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts);
 
   /// verdicts.csv: one row per check (scheme, quantity, step, value,
-  /// reference, error, tolerance, PASS/FAIL), for reports.
+  /// reference, error, tolerance, PASS/FAIL), for reports; replaced
+  /// atomically (the old or the new file, whole).
   void
   write_verdicts(const std::string          &filename,
                  const std::vector<Verdict> &verdicts);
 
-  /// history.csv with a header row.
+  /// history.csv with a header row, replaced atomically.
   void
   write_history(const std::string             &filename,
                 const std::vector<HistoryRow> &history);
 
+  /// history.csv as a run writes it: the header, then one row per converged
+  /// step, each on disk (fsync'ed) before append() returns; a failed write
+  /// throws naming the file and leaves the rows before it whole.
+  class HistoryFile
+  {
+  public:
+    explicit HistoryFile(const std::string &filename);
+
+    void
+    append(const HistoryRow &row);
+
+  private:
+    AppendOnlyFile file;
+  };
+
   /// VTU of the rings (displacement, Cauchy stress, ring id, contact
   /// pressure) and of the slave surface (contact pressure and gap), and the
-  /// PVD records that list them.
+  /// PVD records that list them. Every file is written under a temporary
+  /// name and renamed, the VTU files first, then the PVD file that lists
+  /// them: a PVD on disk lists only whole VTU files.
   class VtuWriter
   {
   public:
@@ -92,6 +112,17 @@ namespace RingContact
           const double                            time);
 
   private:
+    template <int patch_dim>
+    void
+    write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
+                   const std::string                    &filename) const;
+    static void
+    record(std::vector<std::pair<double, std::string>> &records,
+           const double                                 time,
+           const std::string                           &name);
+    static std::string
+    pvd_contents(const std::vector<std::pair<double, std::string>> &records);
+
     const std::string                           directory;
     const std::string                           tag;
     const unsigned int                          subdivisions;

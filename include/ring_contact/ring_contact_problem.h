@@ -26,6 +26,7 @@
 #include <ring_contact/parameters.h>
 #include <ring_contact/postprocessing.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -69,6 +70,15 @@ namespace RingContact
     /// solved (the history then ends at the last converged step).
     bool
     run();
+
+    /// Called after each converged step, once its results are complete
+    /// (history row, VTU files); the run stops after that step when it
+    /// returns false (a run asked to stop ends with whole files).
+    void
+    set_step_observer(std::function<bool(const HistoryRow &)> observer)
+    {
+      step_observer = std::move(observer);
+    }
 
     /// One row per converged step.
     const std::vector<HistoryRow> &
@@ -226,6 +236,9 @@ namespace RingContact
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
     TimerOutput                timer;
+
+    /// See set_step_observer().
+    std::function<bool(const HistoryRow &)> step_observer;
   };
 } // namespace RingContact
 

@@ -1,0 +1,243 @@
+#!/usr/bin/python3
+"""Read a ring_contact output folder back and check that every file is whole.
+
+    /usr/bin/python3 check_results.py FOLDER [options]
+
+(Debian's /usr/bin/python3, which has python3-vtk9.) Checks:
+- history.csv: the header and rows of 15 fields, every number parses;
+- verdicts.csv (if present): rows of 8 fields;
+- every .pvd parses and every file it lists exists; every listed .vtu is read
+  with VTK's own XML reader without error or warning, has cells, every cell's
+  point ids are in range, every point is referenced by a cell, every point and
+  cell data array has one finite value (tuple) per point or cell;
+- no temporary file is left, and (--all-listed) every .vtu is listed in a pvd.
+Options add expectations: --rows N (history rows), --bulk-cells N,
+--surface-cells N, --bulk-area A --surface-length L with --tolerance T
+(relative; area and length from VTK's own triangulation of each cell, so a
+wrongly numbered high-order cell shows up as folded or overlapping area).
+Prints one line per file and exits with 1 on the first failure.
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+HISTORY_FIELDS = 15
+VERDICT_FIELDS = 8
+
+
+def fail(message):
+    print("FAILED: " + message)
+    sys.exit(1)
+
+
+def check_csv(path, n_fields):
+    with open(path, newline="") as f:
+        text = f.read()
+    if not text.endswith("\n"):
+        fail(f"{path}: the last line is not complete")
+    rows = list(csv.reader(text.splitlines()))
+    if not rows or len(rows[0]) != n_fields:
+        fail(f"{path}: header of {len(rows[0]) if rows else 0} fields")
+    for i, row in enumerate(rows[1:], start=2):
+        if len(row) != n_fields:
+            fail(f"{path}: line {i} has {len(row)} fields, not {n_fields}")
+    return rows[1:]
+
+
+def check_history(path):
+    rows = check_csv(path, HISTORY_FIELDS)
+    for i, row in enumerate(rows, start=2):
+        for value in row[1:]:
+            try:
+                float(value)
+            except ValueError:
+                fail(f"{path}: line {i}: '{value}' is not a number")
+    return rows
+
+
+def scheme_tag(name):
+    """The file name tag of a scheme name ("Gauss 3" -> "gauss3")."""
+    kind, _, n = name.partition(" ")
+    return {"nodal": "nodal", "Gauss": "gauss", "Simpson": "simpson",
+            "Newton-Cotes": "newtoncotes",
+            "segment-based": "segments"}[kind] + n
+
+
+def triangulated_measure(cell, points):
+    """Signed area (2d cells) or length (1d cells) of VTK's triangulation of
+    one cell, and the same with absolute values."""
+    import vtk
+
+    ids = vtk.vtkIdList()
+    pts = vtk.vtkPoints()
+    cell.Triangulate(0, ids, pts)
+    signed, absolute = 0.0, 0.0
+    if cell.GetCellDimension() == 2:
+        for t in range(0, pts.GetNumberOfPoints(), 3):
+            a, b, c = (pts.GetPoint(t + k) for k in range(3))
+            area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) -
+                          (c[0] - a[0]) * (b[1] - a[1]))
+            signed += area
+            absolute += abs(area)
+    else:
+        for s in range(0, pts.GetNumberOfPoints(), 2):
+            a, b = pts.GetPoint(s), pts.GetPoint(s + 1)
+            length = math.dist(a, b)
+            signed += length
+            absolute += length
+    return signed, absolute
+
+
+def check_vtu(path):
+    import vtk
+
+    class Errors:
+        messages = []
+
+        def __call__(self, caller, event):
+            self.messages.append(event)
+
+    errors = Errors()
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.AddObserver("ErrorEvent", errors)
+    reader.AddObserver("WarningEvent", errors)
+    reader.SetFileName(path)
+    reader.Update()
+    if errors.messages or reader.GetErrorCode() != 0:
+        fail(f"{path}: VTK reader reports {errors.messages or reader.GetErrorCode()}")
+    grid = reader.GetOutput()
+    n_points, n_cells = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
+    if n_cells == 0 or n_points == 0:
+        fail(f"{path}: {n_cells} cells, {n_points} points")
+    referenced = [False] * n_points
+    signed, absolute = 0.0, 0.0
+    cell_types = set()
+    for c in range(n_cells):
+        cell = grid.GetCell(c)
+        cell_types.add(cell.GetClassName())
+        ids = cell.GetPointIds()
+        for k in range(ids.GetNumberOfIds()):
+            i = ids.GetId(k)
+            if i < 0 or i >= n_points:
+                fail(f"{path}: cell {c} references point {i} of {n_points}")
+            referenced[i] = True
+        s, a = triangulated_measure(cell, grid.GetPoints())
+        signed += s
+        absolute += a
+    unreferenced = referenced.count(False)
+    if unreferenced:
+        fail(f"{path}: {unreferenced} of {n_points} points belong to no cell")
+    for data, n, what in ((grid.GetPointData(), n_points, "point"),
+                          (grid.GetCellData(), n_cells, "cell")):
+        for a in range(data.GetNumberOfArrays()):
+            array = data.GetArray(a)
+            if array.GetNumberOfTuples() != n:
+                fail(f"{path}: {what} array {array.GetName()} has "
+                     f"{array.GetNumberOfTuples()} values for {n} {what}s")
+            for t in range(array.GetNumberOfTuples()):
+                for k in range(array.GetNumberOfComponents()):
+                    if not math.isfinite(array.GetComponent(t, k)):
+                        fail(f"{path}: {what} array {array.GetName()} value "
+                             f"{t} is not finite")
+    return {"cells": n_cells, "points": n_points, "signed": signed,
+            "absolute": absolute, "types": sorted(cell_types),
+            "arrays": grid.GetPointData().GetNumberOfArrays()}
+
+
+def check_pvd(path):
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        fail(f"{path}: not whole XML ({e})")
+    files = [d.get("file") for d in root.iter("DataSet")]
+    if not files:
+        fail(f"{path}: lists no file")
+    folder = os.path.dirname(path)
+    for name in files:
+        if not os.path.isfile(os.path.join(folder, name)):
+            fail(f"{path}: lists {name}, which does not exist")
+    return files
+
+
+def check_measure(path, info, expected, tolerance, what):
+    for key in ("signed", "absolute"):
+        if abs(info[key] - expected) > tolerance * expected:
+            fail(f"{path}: {what} ({key}) {info[key]:.6g}, expected "
+                 f"{expected:.6g} within {tolerance:g}")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("folder")
+    parser.add_argument("--rows", type=int)
+    parser.add_argument("--no-history", action="store_true")
+    parser.add_argument("--all-listed", action="store_true")
+    parser.add_argument("--allow-temporaries", action="store_true")
+    parser.add_argument("--vtu-every-step", action="store_true")
+    parser.add_argument("--bulk-cells", type=int)
+    parser.add_argument("--surface-cells", type=int)
+    parser.add_argument("--bulk-area", type=float)
+    parser.add_argument("--surface-length", type=float)
+    parser.add_argument("--tolerance", type=float, default=1e-3)
+    parser.add_argument("--quiet", action="store_true")
+    args = parser.parse_args()
+
+    def say(text):
+        if not args.quiet:
+            print(text)
+
+    folder = args.folder
+    leftovers = glob.glob(os.path.join(folder, ".*.tmp"))
+    if leftovers and not args.allow_temporaries:
+        fail(f"temporary files left: {sorted(leftovers)}")
+    history = os.path.join(folder, "history.csv")
+    rows = []
+    if not args.no_history:
+        if not os.path.isfile(history):
+            fail(f"{history} does not exist")
+        rows = check_history(history)
+        if args.rows is not None and len(rows) != args.rows:
+            fail(f"{history}: {len(rows)} rows, expected {args.rows}")
+        say(f"history.csv: {len(rows)} rows of {HISTORY_FIELDS} fields")
+    verdicts = os.path.join(folder, "verdicts.csv")
+    if os.path.isfile(verdicts):
+        say(f"verdicts.csv: {len(check_csv(verdicts, VERDICT_FIELDS))} rows")
+    listed = set()
+    for pvd in sorted(glob.glob(os.path.join(folder, "*.pvd"))):
+        files = check_pvd(pvd)
+        listed.update(files)
+        surface = os.path.basename(pvd).startswith("slave-")
+        if args.vtu_every_step:
+            tag = os.path.basename(pvd).split("-", 1)[1][:-len(".pvd")]
+            steps = [r[1] for r in rows if scheme_tag(r[0]) == tag]
+            listed_steps = [str(int(f.rsplit("-", 1)[1][:-4])) for f in files]
+            if listed_steps != steps:
+                fail(f"{pvd}: lists steps {listed_steps}, history.csv has "
+                     f"{steps}")
+        for name in files:
+            path = os.path.join(folder, name)
+            info = check_vtu(path)
+            cells = args.surface_cells if surface else args.bulk_cells
+            if cells is not None and info["cells"] != cells:
+                fail(f"{path}: {info['cells']} cells, expected {cells}")
+            measure = args.surface_length if surface else args.bulk_area
+            if measure is not None:
+                check_measure(path, info, measure, args.tolerance,
+                              "length" if surface else "area")
+        say(f"{os.path.basename(pvd)}: {len(files)} files, last "
+            f"{info['cells']} cells ({', '.join(info['types'])}), "
+            f"{info['points']} points, {info['arrays']} point arrays, "
+            f"{'length' if surface else 'area'} {info['absolute']:.6f}")
+    if args.all_listed:
+        for vtu in glob.glob(os.path.join(folder, "*.vtu")):
+            if os.path.basename(vtu) not in listed:
+                fail(f"{vtu} is listed in no .pvd")
+    say("OK")
+
+
+if __name__ == "__main__":
+    main()

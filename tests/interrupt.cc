@@ -1,0 +1,164 @@
+// SIGINT and SIGTERM end a run after the current step's files are complete:
+// the real executable (modelisation A, two schemes, a VTU file every step)
+// is sent a signal at several points of its run, while it sets up, while it
+// writes a step's VTU files (just after the step's line is printed), in the
+// first and in the second scheme. Each time: the exit code is 128 + the
+// signal, the message says so, history.csv has one whole row per step
+// printed, verdicts.csv holds exactly the schemes that finished, every .pvd
+// and every .vtu it lists read back whole with VTK, and no temporary file
+// is left. A second signal ends the run at once; the files on disk are
+// still whole, and the next run into the folder removes the leftovers.
+#include "run_program.h"
+
+#include <fstream>
+#include <sstream>
+
+using RingContactTests::check;
+
+namespace
+{
+  // Modelisation A with `steps` ramp steps into the folder `name`.
+  std::string
+  write_prm(const std::string &name, const unsigned int steps = 21)
+  {
+    std::ofstream prm(name + ".prm");
+    prm << "include " RING_CONTACT_SOURCE_DIR "/prm/ssnp152a.prm\n"
+        << "subsection Load program\n set Ramp steps = " << steps << "\nend\n"
+        << "subsection Output\n set Directory = " << name
+        << "\n set VTU interval = 1\n set Print timing = false\n"
+           " set Print steps = true\nend\n"
+           "subsection Newton\n set Verbose = false\nend\n";
+    return name + ".prm";
+  }
+
+  // The step number of a "Step   k ..." line, 0 for any other line.
+  unsigned int
+  step_of(const std::string &line)
+  {
+    std::istringstream in(line);
+    std::string        word;
+    unsigned int       step = 0;
+    if (in >> word && word == "Step" && in >> step)
+      return step;
+    return 0;
+  }
+
+  unsigned int
+  count_rows(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    std::string   line;
+    unsigned int  n = 0;
+    while (std::getline(in, line))
+      ++n;
+    return n > 0 ? n - 1 : 0;
+  }
+
+  // Send `signal` (and `second_signal`, if not 0, right after it) when the
+  // run prints step `step` of scheme number `scheme` (1, 2), or, with
+  // step = 0, when it starts that scheme.
+  void
+  interrupt(const std::string &name,
+            const int          signal,
+            const unsigned int scheme,
+            const unsigned int step,
+            const int          second_signal = 0)
+  {
+    auto        &out     = RingContactTests::deallog_file;
+    unsigned int current = 0;
+    bool         sent    = false;
+    const auto   result  = RingContactTests::run_program(
+      write_prm(name), [&](const std::string &line, const pid_t pid) {
+        if (line.rfind("Scheme ", 0) == 0)
+          ++current;
+        if (!sent && current == scheme &&
+            (step == 0 ? line.rfind("Scheme ", 0) == 0 : step_of(line) == step))
+          {
+            ::kill(pid, signal);
+            if (second_signal != 0)
+              ::kill(pid, second_signal);
+            sent = true;
+          }
+      });
+    const std::string what = name + " (" +
+                             (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                             (second_signal != 0 ? ", then SIGTERM" : "") + ")";
+    check(sent, what + ": the signal was sent");
+    const unsigned int steps_printed = result.count("Step ");
+    const unsigned int rows          = count_rows(name + "/history.csv");
+    const bool         verdicts = std::ifstream(name + "/verdicts.csv").good();
+    if (second_signal == 0)
+      {
+        check(result.exit_code == 128 + signal,
+              what + ": exit code " + std::to_string(result.exit_code));
+        check(result.printed(std::string("interrupted by ") +
+                             (signal == SIGINT ? "SIGINT" : "SIGTERM")),
+              what + ": the message");
+        check(rows == steps_printed,
+              what + ": " + std::to_string(rows) + " rows for " +
+                std::to_string(steps_printed) + " steps printed");
+        // verdicts.csv: the finished schemes only (21 checks each).
+        unsigned int finished = 0;
+        for (const auto &line : result.lines)
+          finished += step_of(line) == 21;
+        check(verdicts == (finished > 0) &&
+                (finished == 0 ||
+                 count_rows(name + "/verdicts.csv") == 21 * finished),
+              what + ": verdicts.csv of the finished schemes");
+        check(RingContactTests::check_results(
+                name,
+                "--quiet --all-listed --vtu-every-step --rows " +
+                  std::to_string(rows)),
+              what + ": the files read back whole");
+        out << what << ": exit code " << result.exit_code
+            << ", history rows = steps printed, verdicts.csv "
+            << (verdicts ?
+                  "of " + std::to_string(finished) + " finished scheme(s)" :
+                  std::string("not written"))
+            << ", .pvd and .vtu whole" << std::endl;
+      }
+    else
+      {
+        // Killed by the second signal (whichever of the two the kernel
+        // delivered second): the rows on disk are whole (the step being
+        // written may be missing), a temporary may be left.
+        check((result.signal == signal || result.signal == second_signal) &&
+                result.exit_code == -1,
+              what + ": killed by the second signal; exit code " +
+                std::to_string(result.exit_code) + ", signal " +
+                std::to_string(result.signal));
+        check(rows == steps_printed || rows + 1 == steps_printed,
+              what + ": " + std::to_string(rows) + " rows for " +
+                std::to_string(steps_printed) + " steps printed");
+        check(RingContactTests::check_results(
+                name,
+                "--quiet --allow-temporaries --rows " + std::to_string(rows)),
+              what + ": the files read back whole");
+        out << what << ": killed by the second signal, history rows whole, "
+            << ".pvd and .vtu whole" << std::endl;
+
+        // The next run into the folder starts clean.
+        const auto rerun = RingContactTests::run_program(write_prm(name, 3));
+        check(rerun.exit_code == 0, what + ": the rerun succeeds");
+        check(rerun.printed("files of an earlier run"),
+              what + ": the rerun says it removed the earlier files");
+        check(RingContactTests::check_results(
+                name, "--quiet --all-listed --vtu-every-step --rows 6"),
+              what + ": after the rerun, its files only");
+        out << what << ": the rerun removed the earlier files, its own "
+            << "read back whole" << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  interrupt("int_setup", SIGINT, 1, 0);
+  interrupt("int_step3", SIGINT, 1, 3);
+  interrupt("term_step10", SIGTERM, 1, 10);
+  interrupt("term_scheme2", SIGTERM, 2, 0);
+  interrupt("int_scheme2_step5", SIGINT, 2, 5);
+  interrupt("term_last_step", SIGTERM, 2, 21);
+  interrupt("twice", SIGINT, 1, 4, SIGTERM);
+}

@@ -1,0 +1,192 @@
+// One run per results folder, nothing left of an earlier run, nothing lost
+// when a write fails. The real executable (modelisation A):
+// - lock: a second run into the folder of a live run (400 steps: it lives
+//   while the second starts) is refused with a message naming the folder
+//   and the first run's pid; the first run is then stopped (SIGTERM) and
+//   its files read back whole;
+// - rerun: a shorter run with one scheme into the folder of a longer run
+//   with two removes the earlier history, verdicts, VTU and PVD files (and
+//   says so) but no other file;
+// - a file size limit (RLIMIT_FSIZE, as a full disk: write() fails) hit by
+//   history.csv, then by a VTU file: a one-line error naming the file, exit
+//   code 1, every row before it whole, no temporary file left.
+#include "run_program.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using RingContactTests::check;
+
+namespace
+{
+  std::string
+  write_prm(const std::string &name,
+            const unsigned int steps,
+            const std::string &schemes,
+            const unsigned int vtu_interval)
+  {
+    std::ofstream prm(name + ".prm");
+    prm << "include " RING_CONTACT_SOURCE_DIR "/prm/ssnp152a.prm\n"
+        << "subsection Load program\n set Ramp steps = " << steps << "\nend\n"
+        << "subsection Contact\n set Integration schemes = " << schemes
+        << "\nend\n"
+        << "subsection Output\n set Directory = results_" << name
+        << "\n set VTU interval = " << vtu_interval
+        << "\n set Print timing = false\n set Print steps = true\nend\n"
+           "subsection Newton\n set Verbose = false\nend\n";
+    return name + ".prm";
+  }
+
+  unsigned int
+  count_rows(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    std::string   line;
+    unsigned int  n = 0;
+    while (std::getline(in, line))
+      ++n;
+    return n > 0 ? n - 1 : 0;
+  }
+
+  unsigned int
+  count_files(const std::string &folder, const std::string &extension)
+  {
+    unsigned int n = 0;
+    for (const auto &entry : std::filesystem::directory_iterator(folder))
+      n += entry.path().extension() == extension;
+    return n;
+  }
+
+  std::string
+  last_line(const RingContactTests::RunResult &result)
+  {
+    return result.lines.empty() ? std::string() : result.lines.back();
+  }
+
+  void
+  lock()
+  {
+    auto                       &out = RingContactTests::deallog_file;
+    RingContactTests::RunResult second;
+    pid_t                       first_pid = 0;
+    const auto                  first     = RingContactTests::run_program(
+      write_prm("lock", 400, "nodal, Gauss 3", 1),
+      [&](const std::string &line, const pid_t pid) {
+        if (line.rfind("Step", 0) == 0 && first_pid == 0)
+          {
+            first_pid = pid;
+            second = RingContactTests::run_program("lock.prm");
+            ::kill(pid, SIGTERM);
+          }
+      });
+    const std::string message = last_line(second);
+    check(second.exit_code == 1,
+          "lock: the second run fails, exit code " +
+            std::to_string(second.exit_code));
+    check(message.find("'results_lock'") != std::string::npos &&
+            message.find("pid " + std::to_string(first_pid)) !=
+              std::string::npos,
+          "lock: the message names the folder and the pid: " + message);
+    check(second.count("Step") == 0, "lock: the second run solved nothing");
+    check(first.exit_code == 143,
+          "lock: the first run stopped by SIGTERM, exit code " +
+            std::to_string(first.exit_code));
+    const unsigned int rows = count_rows("results_lock/history.csv");
+    check(rows == first.count("Step"), "lock: the first run's rows");
+    check(RingContactTests::check_results(
+            "results_lock",
+            "--quiet --all-listed --vtu-every-step --rows " +
+              std::to_string(rows)),
+          "lock: the first run's files read back whole");
+    std::string shown = message;
+    shown.replace(shown.find(std::to_string(first_pid)),
+                  std::to_string(first_pid).size(),
+                  "<pid>");
+    out << "lock: second run refused: " << shown << std::endl;
+    out << "lock: first run's files whole after SIGTERM" << std::endl;
+  }
+
+  void
+  rerun()
+  {
+    auto      &out = RingContactTests::deallog_file;
+    const auto first =
+      RingContactTests::run_program(write_prm("rerun", 6, "nodal, Gauss 3", 1));
+    check(first.exit_code == 0, "rerun: the first run");
+    check(count_rows("results_rerun/history.csv") == 12 &&
+            count_files("results_rerun", ".vtu") == 24 &&
+            count_files("results_rerun", ".pvd") == 4,
+          "rerun: the first run's files");
+    // Files this program does not write stay.
+    std::ofstream("results_rerun/notes.txt") << "mine\n";
+    std::ofstream("results_rerun/mesh.vtu") << "mine\n";
+    const auto second =
+      RingContactTests::run_program(write_prm("rerun", 3, "nodal", 1));
+    check(second.exit_code == 0, "rerun: the second run");
+    check(second.printed("the 30 files of an earlier run"),
+          "rerun: the second run says what it removed: " + second.lines[0]);
+    out << "rerun: " << second.lines[0] << std::endl;
+    check(count_rows("results_rerun/history.csv") == 3 &&
+            count_rows("results_rerun/verdicts.csv") == 3 &&
+            count_files("results_rerun", ".vtu") == 2 * 3 + 1 &&
+            count_files("results_rerun", ".pvd") == 2,
+          "rerun: only the second run's files");
+    check(std::filesystem::exists("results_rerun/notes.txt") &&
+            std::filesystem::exists("results_rerun/mesh.vtu"),
+          "rerun: other files stay");
+    std::filesystem::remove("results_rerun/mesh.vtu");
+    check(RingContactTests::check_results(
+            "results_rerun", "--quiet --all-listed --vtu-every-step --rows 3"),
+          "rerun: the second run's files read back whole");
+    out << "rerun: 3 rows, 6 VTU files, 2 PVD files; other files kept"
+        << std::endl;
+  }
+
+  void
+  file_size_limit(const std::string &name,
+                  const unsigned int vtu_interval,
+                  const rlim_t       limit,
+                  const std::string &expected_file)
+  {
+    auto      &out = RingContactTests::deallog_file;
+    const auto result =
+      RingContactTests::run_program(write_prm(name, 21, "nodal", vtu_interval),
+                                    {},
+                                    limit);
+    const std::string message = last_line(result);
+    check(result.exit_code == 1,
+          name + ": exit code " + std::to_string(result.exit_code));
+    check(message.rfind("ring_contact: error: cannot write '", 0) == 0 &&
+            message.find(expected_file) != std::string::npos,
+          name + ": the message names the file: " + message);
+    const std::string  folder        = "results_" + name;
+    const unsigned int steps_printed = result.count("Step");
+    const unsigned int rows          = count_rows(folder + "/history.csv");
+    // The step whose file could not be written is printed, not recorded.
+    check(steps_printed >= 1 && rows + 1 == steps_printed,
+          name + ": " + std::to_string(rows) + " rows for " +
+            std::to_string(steps_printed) + " steps printed");
+    check(RingContactTests::check_results(folder,
+                                          "--quiet --all-listed --rows " +
+                                            std::to_string(rows)),
+          name + ": the files before read back whole");
+    out << name << ": " << message << std::endl;
+    out << name << ": history.csv whole, one row per step before it"
+        << std::endl;
+  }
+} // namespace
+
+int
+main()
+{
+  lock();
+  rerun();
+  // About ten rows of history.csv fit in 2000 bytes.
+  file_size_limit("fsize_history",
+                  0,
+                  2000,
+                  "results_fsize_history/history.csv");
+  // A VTU file does not fit in 8000 bytes.
+  file_size_limit("fsize_vtu", 1, 8000, "solution-nodal-0001.vtu");
+}

@@ -1,0 +1,137 @@
+// Shared by the tests that run the real executable as a user would: start
+// it on a parameter file with its output (stdout and stderr) read line by
+// line as it comes, so that a test can act at a chosen point of the run
+// (send a signal, start a second run), and check the results folder with
+// check_results.py (Debian's /usr/bin/python3 with VTK).
+#ifndef ring_contact_run_program_h
+#define ring_contact_run_program_h
+
+#include <ring_contact/config.h>
+
+#include "tests.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace RingContactTests
+{
+  /// How a run ended and what it printed.
+  struct RunResult
+  {
+    int                      exit_code = -1; ///< -1 if killed by a signal
+    int                      signal    = 0;  ///< the signal that killed it
+    std::vector<std::string> lines;
+
+    /// Number of printed lines that start with `prefix`.
+    unsigned int
+    count(const std::string &prefix) const
+    {
+      unsigned int n = 0;
+      for (const auto &line : lines)
+        n += line.rfind(prefix, 0) == 0;
+      return n;
+    }
+
+    /// Whether a printed line contains `text`.
+    bool
+    printed(const std::string &text) const
+    {
+      for (const auto &line : lines)
+        if (line.find(text) != std::string::npos)
+          return true;
+      return false;
+    }
+  };
+
+  /// Run ring_contact on `prm_file`; `on_line(line, pid)` sees every line
+  /// as it is printed. `file_size_limit` > 0 sets RLIMIT_FSIZE (bytes) for
+  /// the run.
+  inline RunResult
+  run_program(
+    const std::string                                     &prm_file,
+    const std::function<void(const std::string &, pid_t)> &on_line         = {},
+    const rlim_t                                           file_size_limit = 0)
+  {
+    int pipe_ends[2];
+    check(::pipe(pipe_ends) == 0, "pipe");
+    const pid_t pid = ::fork();
+    check(pid >= 0, "fork");
+    if (pid == 0)
+      {
+        ::dup2(pipe_ends[1], 1);
+        ::dup2(pipe_ends[1], 2);
+        ::close(pipe_ends[0]);
+        ::close(pipe_ends[1]);
+        // The signals as a user's shell gives them (a test run from a
+        // script's background job would ignore SIGINT).
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        if (file_size_limit > 0)
+          {
+            const rlimit limit{file_size_limit, file_size_limit};
+            ::setrlimit(RLIMIT_FSIZE, &limit);
+          }
+        ::execl(RING_CONTACT_EXECUTABLE,
+                "ring_contact",
+                prm_file.c_str(),
+                static_cast<char *>(nullptr));
+        ::_exit(127);
+      }
+    ::close(pipe_ends[1]);
+    RunResult   result;
+    FILE       *in = ::fdopen(pipe_ends[0], "r");
+    std::string line;
+    for (int c; (c = std::fgetc(in)) != EOF;)
+      if (c == '\n')
+        {
+          result.lines.push_back(line);
+          if (on_line)
+            on_line(line, pid);
+          line.clear();
+        }
+      else
+        line += static_cast<char>(c);
+    if (!line.empty())
+      result.lines.push_back(line);
+    std::fclose(in);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (WIFEXITED(status))
+      result.exit_code = WEXITSTATUS(status);
+    else if (WIFSIGNALED(status))
+      result.signal = WTERMSIG(status);
+    return result;
+  }
+
+  /// check_results.py on `folder` with `options`; true if every file reads
+  /// back whole. Its report goes to `report` (if given).
+  inline bool
+  check_results(const std::string &folder,
+                const std::string &options,
+                std::string       *report = nullptr)
+  {
+    const std::string command = "/usr/bin/python3 " SOURCE_DIR
+                                "/check_results.py " +
+                                folder + " " + options + " 2>&1";
+    FILE *in = ::popen(command.c_str(), "r");
+    check(in != nullptr, "popen " + command);
+    std::string text;
+    for (int c; (c = std::fgetc(in)) != EOF;)
+      text += static_cast<char>(c);
+    const int status = ::pclose(in);
+    if (report)
+      *report = text;
+    if (status != 0)
+      std::cerr << command << ":\n" << text;
+    return status == 0;
+  }
+} // namespace RingContactTests
+
+#endif
