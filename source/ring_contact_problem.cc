@@ -836,6 +836,15 @@ namespace RingContact
           << 100 * row.relative_error << "%  L2 " << std::setw(6)
           << 100 * row.l2_relative_error << '%' << std::defaultfloat << '\n';
 
+    // A converged state with every contact node open under a load that
+    // closes the contact (analytic pressure > 0) is another solution of the
+    // discrete problem, not the one sought: say so, it is otherwise silent.
+    if (!patch_test && row.analytic > 0 && row.active_nodes == 0)
+      log << "Warning: step " << step
+          << ": Newton converged with the contact open at every node, while "
+             "the analytic solution is closed contact (pressure "
+          << row.analytic << ")\n";
+
     const unsigned int interval = parameters.output.vtu_interval;
     if (interval > 0 &&
         (step % interval == 0 || step == load_program.n_steps()))
