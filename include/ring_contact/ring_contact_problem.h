@@ -150,7 +150,9 @@ namespace RingContact
     {
       return n_inverted;
     }
-    /// Impose the boundary displacements of a load state.
+    /// Set the boundary displacements of a load state as the target of the
+    /// next Newton solve: its first update imposes them (see
+    /// make_lifting_constraints()), the solution is not changed here.
     void
     apply_boundary_motion(const LoadState &load);
     /// @}
@@ -164,6 +166,18 @@ namespace RingContact
     setup_system();
     void
     make_constraints();
+    void
+    add_constraints(
+      AffineConstraints<double>                       &target,
+      const std::map<types::global_dof_index, double> &boundary_increment,
+      std::vector<bool>                               *fixed_dofs = nullptr);
+    bool
+    make_lifting_constraints();
+    const AffineConstraints<double> &
+    update_constraints() const
+    {
+      return lifting ? lifting_constraints : constraints;
+    }
     void
     make_sparsity_pattern();
     void
@@ -214,6 +228,15 @@ namespace RingContact
     SparseMatrix<double>      system_matrix;
     Vector<double>            system_rhs;
     Vector<double>            internal_force;
+
+    /// The constraints of the first update of a load step: the same lines,
+    /// with the remaining boundary increment as inhomogeneity (step-44).
+    AffineConstraints<double> lifting_constraints;
+    /// Assemble and solve with lifting_constraints.
+    bool lifting = false;
+    /// The displacements of r = R1 and r = R3 at the current load state.
+    std::map<types::global_dof_index, double> boundary_target;
+
     /// Per row, the sum of the magnitudes of the terms that make up the
     /// residual, sum_j |K_ij| |z_j| + |R_i| with z the displacement (bulk)
     /// or the position X + u and the multiplier (contact): machine epsilon
