@@ -104,14 +104,17 @@ namespace RingContact
       {
         const auto &mesh = parameters.mesh;
         sector.angle     = mesh.sector_angle();
-        const double sector_in_elements =
-          mesh.sector_elements * (1u << mesh.global_refinements);
         const double rotation =
           parameters.load.program == LoadProgramType::rotation ?
             std::abs(parameters.load.rotation_elements) :
             0.0;
-        sector.copies = 1 + std::ceil(rotation / sector_in_elements);
-        cyclic_pairs  = CyclicSymmetry::find_node_pairs(dof_handler,
+        CyclicSymmetry::set_master_window(sector,
+                                          mesh.sector_elements *
+                                            (1u << mesh.global_refinements),
+                                          mesh.elements_around *
+                                            (1u << mesh.global_refinements),
+                                          rotation);
+        cyclic_pairs = CyclicSymmetry::find_node_pairs(dof_handler,
                                                        mapping_collection,
                                                        sector.angle);
         sector.multiplier_twins =
