@@ -338,10 +338,10 @@ namespace RingContact
               "Mesh",
               "Sector elements",
               "needs 'Mesh source' = generated (a sector is built in code)");
-      require(sector_elements < elements_around,
+      require(sector_elements <= elements_around,
               "Mesh",
               "Sector elements",
-              "must be smaller than 'Elements around' (0: the whole rings)");
+              "must be at most 'Elements around' (0: the whole rings)");
       outer_radius     = get_double(prm, "Mesh", "Outer radius");
       interface_radius = get_double(prm, "Mesh", "Interface radius");
       inner_radius     = get_double(prm, "Mesh", "Inner radius");
@@ -1023,34 +1023,6 @@ namespace RingContact
                 " m from it (at most " + to_text(0.05 * scale) +
                 " m accepted)");
     }
-
-    // Cyclic symmetry: the master surface of a sector of k elements is
-    // continued by c = 1 + ceil(|s| / k) rotated copies on each side (see
-    // RingContactProblem::setup_system). Where the sector and its copies,
-    // (2c + 1) k elements, go further round than the circle, copies lie on
-    // top of the sector; the contact pairing then meets coincident master
-    // segments and Newton fails (k = 21, 23..39 of 40 around; issue 9).
-    // Until the copies are trimmed to close the circle, refuse those.
-    if (mesh.sector_elements > 0)
-      {
-        const double k = static_cast<double>(mesh.sector_elements) *
-                         (1u << mesh.global_refinements);
-        const double rotation = load.program == LoadProgramType::rotation ?
-                                  std::abs(load.rotation_elements) :
-                                  0.0;
-        const double copies   = 1 + std::ceil(rotation / k);
-        require((2 * copies + 1) * k <= elements_around_refined,
-                "Mesh",
-                "Sector elements",
-                "= " + std::to_string(mesh.sector_elements) +
-                  " is too wide: the sector and the rotated copies of its "
-                  "master surface (" +
-                  to_text(2 * copies + 1) + " x " + to_text(k) +
-                  " elements, for a rotation of " + to_text(rotation) +
-                  " elements) would overlap round the circle of " +
-                  to_text(elements_around_refined) +
-                  " elements, which the contact pairing does not handle");
-      }
 
     // A checked step beyond the last one of the load program is a typo.
     const unsigned int n_steps = load.program == LoadProgramType::ramp ?
