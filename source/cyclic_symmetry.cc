@@ -29,8 +29,17 @@ namespace RingContact
       unsigned int before = sector.copies * k, after = sector.copies * k;
       if (k + before + after >= n)
         {
-          before = (n - k) / 2;
-          after  = n - k - before;
+          // Exactly the circle, with the side the slave slides towards
+          // long enough for its nodes never to leave the window (beyond
+          // it they would meet the master surface only across the seam).
+          const unsigned int lead =
+            std::max((n - k + 1) / 2,
+                     std::min(n - k,
+                              static_cast<unsigned int>(
+                                std::ceil(std::abs(rotation_elements))) +
+                                1));
+          after  = rotation_elements >= 0 ? lead : n - k - lead;
+          before = n - k - after;
         }
       const double element_angle = 2 * numbers::PI / n;
       sector.window_before       = before * element_angle;

@@ -1024,6 +1024,31 @@ namespace RingContact
                 " m accepted)");
     }
 
+    // Cyclic symmetry: the master surface seen by a sector of k < Ne
+    // elements covers the circle at most once (CyclicSymmetry::
+    // set_master_window()). A rotation that slides the slave sector all
+    // the way round to its own start side, k + |s| >= Ne, makes it meet
+    // the master surface across the seam of that window, where the pairing
+    // relies on a symmetry the sector does not impose: Newton fails or
+    // finds another solution (k = 9..11 of 12 with s = 3). Refuse those.
+    if (mesh.sector_elements > 0 &&
+        mesh.sector_elements < mesh.elements_around &&
+        load.program == LoadProgramType::rotation)
+      {
+        const double k = static_cast<double>(mesh.sector_elements) *
+                         (1u << mesh.global_refinements);
+        require(k + std::abs(load.rotation_elements) < elements_around_refined,
+                "Mesh",
+                "Sector elements",
+                "= " + std::to_string(mesh.sector_elements) +
+                  " is too wide for a rotation of " +
+                  to_text(load.rotation_elements) +
+                  " elements: the sector would slide round to its own start "
+                  "side (k + |s| must stay below " +
+                  to_text(elements_around_refined) +
+                  " elements around; the whole circle, k = Ne, is accepted)");
+      }
+
     // A checked step beyond the last one of the load program is a typo.
     const unsigned int n_steps = load.program == LoadProgramType::ramp ?
                                    load.ramp_steps :

@@ -104,9 +104,12 @@ namespace RingContact
       {
         const auto &mesh = parameters.mesh;
         sector.angle     = mesh.sector_angle();
+        // The slave's motion along the master (elements): the inner ring
+        // turns.
         const double rotation =
           parameters.load.program == LoadProgramType::rotation ?
-            std::abs(parameters.load.rotation_elements) :
+            (slave_ring == Ids::inner_ring ? 1.0 : -1.0) *
+              parameters.load.rotation_elements :
             0.0;
         CyclicSymmetry::set_master_window(sector,
                                           mesh.sector_elements *

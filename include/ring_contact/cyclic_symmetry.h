@@ -60,10 +60,12 @@ namespace RingContact
     /// k) copies on each side, trimmed to the window [-w, k + w) with w =
     /// c k, or, where the sector and its copies would go further round than
     /// the circle ((2c + 1) k >= Ne), to a window of exactly the circle,
-    /// floor((Ne - k) / 2) elements before the sector and the rest after
-    /// it. Either way no master position appears twice modulo the circle,
-    /// and a slave point of the sector finds every master segment it can
-    /// reach (|s| + 1 elements beyond each side).
+    /// whose side towards which the slave slides (`rotation_elements`:
+    /// the slave's motion along the master, signed) gets max(ceil((Ne -
+    /// k) / 2), min(Ne - k, ceil(|s|) + 1)) elements and the other side
+    /// the rest. Either way no master position appears twice modulo the
+    /// circle; the slave nodes stay inside the window as long as k + |s| <
+    /// Ne (Parameters refuses the rest, except k = Ne).
     void
     set_master_window(Sector            &sector,
                       const unsigned int sector_elements,
