@@ -21,7 +21,9 @@ namespace RingContact
                master_mapping_degree,
                parameters.smooth_master_normals,
                sector.angle,
-               sector.copies)
+               sector.copies,
+               sector.window_before,
+               sector.window_after)
       , quadrature(
           contact_quadrature(scheme,
                              std::max(slave.displacement_basis().size(),

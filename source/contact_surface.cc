@@ -113,7 +113,9 @@ namespace RingContact
                                  const unsigned int       mapping_degree,
                                  const bool               smooth_normals,
                                  const double             sector_angle,
-                                 const unsigned int       copies)
+                                 const unsigned int       copies,
+                                 const double             window_before,
+                                 const double             window_after)
       : smooth_normals(smooth_normals)
   {
     const std::vector<double> geometry_nodes =
@@ -200,8 +202,8 @@ namespace RingContact
     displacement               = LagrangeBasis1D(displacement_nodes);
     multiplier                 = LagrangeBasis1D(multiplier_nodes);
     multiplier_node_parameters = multiplier_nodes;
-    if (sector_angle > 0 && copies > 0)
-      add_rotated_copies(sector_angle, copies);
+    if (sector_angle > 0)
+      add_rotated_copies(sector_angle, copies, window_before, window_after);
 
     // The neighbours of each segment: the segments that share a vertex.
     std::map<unsigned int, std::vector<unsigned int>> segments_at_vertex;
@@ -224,13 +226,14 @@ namespace RingContact
 
   void
   ContactSurface::add_rotated_copies(const double       sector_angle,
-                                     const unsigned int copies)
+                                     const unsigned int copies,
+                                     const double       window_before,
+                                     const double       window_after)
   {
     // The two open ends of the sector's surface: the vertices that only one
     // segment has; `start` at angle 0, `end` at the sector angle.
     std::map<unsigned int, unsigned int> count;
     std::map<unsigned int, Point<2>>     position;
-    unsigned int                         n_vertices = 0;
     for (const auto &segment : segment_list)
       for (unsigned int end = 0; end < 2; ++end)
         {
@@ -238,7 +241,6 @@ namespace RingContact
           ++count[v];
           position[v] = end == 0 ? segment.reference_nodes.front() :
                                    segment.reference_nodes.back();
-          n_vertices  = std::max(n_vertices, v + 1);
         }
     std::vector<unsigned int> open_ends;
     for (const auto &[v, n] : count)
@@ -253,33 +255,41 @@ namespace RingContact
     if (position[start].distance(Point<2>(R_sector * position[end])) <
         position[end].distance(Point<2>(R_sector * position[start])))
       std::swap(start, end);
+    const double tolerance = 1e-10 * position[start].norm();
     AssertThrow(position[end].distance(Point<2>(R_sector * position[start])) <
-                  1e-10 * position[start].norm(),
+                  tolerance,
                 ExcMessage("cyclic symmetry: the ends of the contact surface "
                            "are not images of each other"));
 
-    // Copy j (j = -copies ... copies, 0: the sector itself) of vertex v has
-    // the index v + n_vertices (j + copies + 1), v itself for j = 0; the
-    // end vertex of copy j is the start vertex of copy j + 1.
-    const auto raw_index = [&](const unsigned int v, const int j) {
-      return j == 0 ? v :
-                      v + n_vertices * static_cast<unsigned int>(
-                                         j + static_cast<int>(copies) + 1);
+    // Angles from the start side, in [0, 2 pi): the sector's segments lie
+    // in (0, sector_angle).
+    const Point<2> origin         = position[start];
+    const auto     angle_of_point = [&](const Point<2> &x) {
+      const double angle =
+        std::atan2(origin[0] * x[1] - origin[1] * x[0], origin * x);
+      return angle < 0 ? angle + 2 * numbers::PI : angle;
     };
-    const auto index = [&](const unsigned int v, const int j) {
-      return v == end ? raw_index(start, j + 1) : raw_index(v, j);
-    };
-    // The sector's own segments first (j = 0), then the copies.
     const std::vector<SurfaceSegment> sector = segment_list;
+    std::vector<double>               sector_angles;
+    for (unsigned int s = 0; s < sector.size(); ++s)
+      sector_angles.push_back(angle_of_point(reference_point(s, 0.5).x));
+
+    // Copy j (j = -copies ... copies, 0: the sector itself) of a segment
+    // sits at its angle + j sector_angle; keep the segments in the window,
+    // which covers the circle at most once, so that no master position is
+    // there twice.
     segment_list.clear();
     std::vector<int> shifts = {0};
     for (int j = 1; j <= static_cast<int>(copies); ++j)
       shifts.insert(shifts.end(), {-j, j});
     for (const int j : shifts)
-      for (SurfaceSegment segment : sector)
+      for (unsigned int s = 0; s < sector.size(); ++s)
         {
-          for (auto &v : segment.vertices)
-            v = index(v, j);
+          const double angle = sector_angles[s] + j * sector_angle;
+          if (j != 0 &&
+              (angle < -window_before || angle >= sector_angle + window_after))
+            continue;
+          SurfaceSegment segment = sector[s];
           if (j != 0)
             {
               segment.is_copy  = true;
@@ -289,6 +299,31 @@ namespace RingContact
             }
           segment_list.push_back(segment);
         }
+
+    // One index per vertex of the continued surface, by its angle on the
+    // circle: the end vertex of a copy is the start vertex of the next, and
+    // where the surface closes the circle its two ends meet.
+    std::vector<std::pair<double, unsigned int>> ends; // angle, 2 s + end
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          const Point<2> x     = side == 0 ?
+                                   segment_list[s].reference_nodes.front() :
+                                   segment_list[s].reference_nodes.back();
+          double         angle = angle_of_point(x);
+          if (angle > 2 * numbers::PI - 1e-10)
+            angle = 0;
+          ends.emplace_back(angle, 2 * s + side);
+        }
+    std::sort(ends.begin(), ends.end());
+    unsigned int n_vertices = 0;
+    for (unsigned int i = 0; i < ends.size(); ++i)
+      {
+        if (i > 0 && ends[i].first - ends[i - 1].first > 1e-10)
+          ++n_vertices;
+        segment_list[ends[i].second / 2].vertices[ends[i].second % 2] =
+          n_vertices;
+      }
   }
 
   CurvePoint

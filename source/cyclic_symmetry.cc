@@ -5,6 +5,7 @@
 #include <ring_contact/cyclic_symmetry.h>
 #include <ring_contact/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,6 +13,41 @@ namespace RingContact
 {
   namespace CyclicSymmetry
   {
+    void
+    set_master_window(Sector            &sector,
+                      const unsigned int sector_elements,
+                      const unsigned int elements_around,
+                      const double       rotation_elements)
+    {
+      const unsigned int k = sector_elements, n = elements_around;
+      AssertThrow(k >= 1 && k <= n,
+                  ExcMessage("cyclic symmetry: the sector must have between "
+                             "one element and all the elements around"));
+      sector.copies = 1 + static_cast<unsigned int>(
+                            std::ceil(std::abs(rotation_elements) / k));
+      // Whole elements before and after the sector.
+      unsigned int before = sector.copies * k, after = sector.copies * k;
+      if (k + before + after >= n)
+        {
+          // Exactly the circle, with the side the slave slides towards
+          // long enough for its nodes never to leave the window (beyond
+          // it they would meet the master surface only across the seam).
+          const unsigned int lead =
+            std::max((n - k + 1) / 2,
+                     std::min(n - k,
+                              static_cast<unsigned int>(
+                                std::ceil(std::abs(rotation_elements))) +
+                                1));
+          after  = rotation_elements >= 0 ? lead : n - k - lead;
+          before = n - k - after;
+        }
+      const double element_angle = 2 * numbers::PI / n;
+      sector.window_before       = before * element_angle;
+      sector.window_after        = after * element_angle;
+      // Copies that keep no segment at all are not made.
+      sector.copies = (std::max(before, after) + k - 1) / k;
+    }
+
     std::vector<NodePair>
     find_node_pairs(const DoFHandler<2>            &dof_handler,
                     const hp::MappingCollection<2> &mapping,

@@ -76,7 +76,8 @@ namespace RingContact
       triangulation.create_triangulation(vertices, cells, SubCellData());
 
       // Boundary ids from the circle a face lies on and the ring it bounds;
-      // the radial sides of a sector from their angle.
+      // the radial sides of a sector from their angle and the side of the
+      // cell (with k = Ne both sides lie on the ray at angle 0).
       const double       tol          = 1e-8 * mesh.outer_radius;
       const double       sector_angle = mesh.sector_angle();
       const Tensor<1, 2> end_normal(
@@ -87,9 +88,11 @@ namespace RingContact
             {
               const bool     outer  = cell->material_id() == Ids::outer_ring;
               const Point<2> center = face->center();
-              if (sector && std::abs(center[1]) < tol && center[0] > 0)
+              if (sector && std::abs(center[1]) < tol && center[0] > 0 &&
+                  cell->center()[1] > 0)
                 face->set_boundary_id(Ids::sector_start);
-              else if (sector && std::abs(center * end_normal) < tol)
+              else if (sector && std::abs(center * end_normal) < tol &&
+                       cell->center() * end_normal < 0)
                 face->set_boundary_id(Ids::sector_end);
               else
                 {

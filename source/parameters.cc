@@ -338,10 +338,10 @@ namespace RingContact
               "Mesh",
               "Sector elements",
               "needs 'Mesh source' = generated (a sector is built in code)");
-      require(sector_elements < elements_around,
+      require(sector_elements <= elements_around,
               "Mesh",
               "Sector elements",
-              "must be smaller than 'Elements around' (0: the whole rings)");
+              "must be at most 'Elements around' (0: the whole rings)");
       outer_radius     = get_double(prm, "Mesh", "Outer radius");
       interface_radius = get_double(prm, "Mesh", "Interface radius");
       inner_radius     = get_double(prm, "Mesh", "Inner radius");
@@ -1024,32 +1024,29 @@ namespace RingContact
                 " m accepted)");
     }
 
-    // Cyclic symmetry: the master surface of a sector of k elements is
-    // continued by c = 1 + ceil(|s| / k) rotated copies on each side (see
-    // RingContactProblem::setup_system). Where the sector and its copies,
-    // (2c + 1) k elements, go further round than the circle, copies lie on
-    // top of the sector; the contact pairing then meets coincident master
-    // segments and Newton fails (k = 21, 23..39 of 40 around; issue 9).
-    // Until the copies are trimmed to close the circle, refuse those.
-    if (mesh.sector_elements > 0)
+    // Cyclic symmetry: the master surface seen by a sector of k < Ne
+    // elements covers the circle at most once (CyclicSymmetry::
+    // set_master_window()). A rotation that slides the slave sector all
+    // the way round to its own start side, k + |s| >= Ne, makes it meet
+    // the master surface across the seam of that window, where the pairing
+    // relies on a symmetry the sector does not impose: Newton fails or
+    // finds another solution (k = 9..11 of 12 with s = 3). Refuse those.
+    if (mesh.sector_elements > 0 &&
+        mesh.sector_elements < mesh.elements_around &&
+        load.program == LoadProgramType::rotation)
       {
         const double k = static_cast<double>(mesh.sector_elements) *
                          (1u << mesh.global_refinements);
-        const double rotation = load.program == LoadProgramType::rotation ?
-                                  std::abs(load.rotation_elements) :
-                                  0.0;
-        const double copies   = 1 + std::ceil(rotation / k);
-        require((2 * copies + 1) * k <= elements_around_refined,
+        require(k + std::abs(load.rotation_elements) < elements_around_refined,
                 "Mesh",
                 "Sector elements",
                 "= " + std::to_string(mesh.sector_elements) +
-                  " is too wide: the sector and the rotated copies of its "
-                  "master surface (" +
-                  to_text(2 * copies + 1) + " x " + to_text(k) +
-                  " elements, for a rotation of " + to_text(rotation) +
-                  " elements) would overlap round the circle of " +
+                  " is too wide for a rotation of " +
+                  to_text(load.rotation_elements) +
+                  " elements: the sector would slide round to its own start "
+                  "side (k + |s| must stay below " +
                   to_text(elements_around_refined) +
-                  " elements, which the contact pairing does not handle");
+                  " elements around; the whole circle, k = Ne, is accepted)");
       }
 
     // A checked step beyond the last one of the load program is a typo.

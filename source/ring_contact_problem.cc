@@ -104,14 +104,20 @@ namespace RingContact
       {
         const auto &mesh = parameters.mesh;
         sector.angle     = mesh.sector_angle();
-        const double sector_in_elements =
-          mesh.sector_elements * (1u << mesh.global_refinements);
+        // The slave's motion along the master (elements): the inner ring
+        // turns.
         const double rotation =
           parameters.load.program == LoadProgramType::rotation ?
-            std::abs(parameters.load.rotation_elements) :
+            (slave_ring == Ids::inner_ring ? 1.0 : -1.0) *
+              parameters.load.rotation_elements :
             0.0;
-        sector.copies = 1 + std::ceil(rotation / sector_in_elements);
-        cyclic_pairs  = CyclicSymmetry::find_node_pairs(dof_handler,
+        CyclicSymmetry::set_master_window(sector,
+                                          mesh.sector_elements *
+                                            (1u << mesh.global_refinements),
+                                          mesh.elements_around *
+                                            (1u << mesh.global_refinements),
+                                          rotation);
+        cyclic_pairs = CyclicSymmetry::find_node_pairs(dof_handler,
                                                        mapping_collection,
                                                        sector.angle);
         sector.multiplier_twins =

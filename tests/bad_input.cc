@@ -118,8 +118,8 @@ main()
                  "/meshes/ssnp152a.msh\n set Sector elements = 1\nend\n",
                "Sector elements");
   expect_error("sector_too_wide",
-               "subsection Mesh\n set Sector elements = 40\nend\n",
-               "smaller than 'Elements around'");
+               "subsection Mesh\n set Sector elements = 41\nend\n",
+               "at most 'Elements around'");
   expect_error("unknown_scheme",
                "subsection Contact\n set Integration schemes = nodal, "
                "Lobatto 3\nend\n",

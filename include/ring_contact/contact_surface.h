@@ -128,14 +128,19 @@ namespace RingContact
     /// reference geometry of each face (straight for 1). Cyclic symmetry
     /// (`sector_angle` > 0): the surface of the sector is continued on each
     /// side by `copies` copies of itself turned through multiples of the
-    /// sector angle (see cyclic_symmetry.h); the copies share the
-    /// originals' unknowns.
+    /// sector angle (see cyclic_symmetry.h), trimmed to the segments whose
+    /// midpoint lies at an angle in [-window_before, sector_angle +
+    /// window_after) from the sector's start side; the copies share the
+    /// originals' unknowns. A surface that closes the circle is one closed
+    /// curve.
     ContactSurface(const DoFHandler<2>     &dof_handler,
                    const types::boundary_id boundary_id,
                    const unsigned int       mapping_degree,
                    const bool               smooth_normals = false,
                    const double             sector_angle   = 0,
-                   const unsigned int       copies         = 0);
+                   const unsigned int       copies         = 0,
+                   const double             window_before  = 0,
+                   const double             window_after   = 0);
 
     const std::vector<SurfaceSegment> &
     segments() const
@@ -236,11 +241,15 @@ namespace RingContact
     min_segment_length() const;
 
   private:
-    /// Add the rotated copies of the sector's segments, and give every
-    /// vertex of the continued surface one index (the end vertex of a copy
-    /// is the start vertex of the next).
+    /// Add the rotated copies of the sector's segments that lie in the
+    /// window, and give every vertex of the continued surface one index
+    /// (the end vertex of a copy is the start vertex of the next; where the
+    /// surface closes the circle, its two ends are one vertex).
     void
-    add_rotated_copies(const double sector_angle, const unsigned int copies);
+    add_rotated_copies(const double       sector_angle,
+                       const unsigned int copies,
+                       const double       window_before,
+                       const double       window_after);
 
     /// Along the smoothed normal field: (x - x(t)) x n(t) = 0.
     Projection

@@ -9,7 +9,12 @@
 //  - the master surface beyond the sector is the sector's own, turned by
 //    +-Phi, +-2 Phi, ...: its rotated copies (ContactSurface) carry the
 //    unknowns of the originals, rotated, so that slave points near the
-//    sides and slave points that slid past them find their partners.
+//    sides and slave points that slid past them find their partners. The
+//    copies are trimmed so that the master surface covers the circle at
+//    most once: where the sector and c whole copies on each side would go
+//    further round than the circle, copies would lie on top of the sector
+//    and the pairing would meet coincident master segments (Newton failed
+//    for k = 21, 23..39 of 40 around). See master_window().
 // deal.II's DoFTools::make_periodicity_constraints() matches faces by a
 // translation; for a rotation we pair the nodes of the two sides ourselves
 // (by their support points) and write the constraints, two entries per
@@ -38,11 +43,34 @@ namespace RingContact
     {
       double       angle  = 0; ///< Phi
       unsigned int copies = 0; ///< rotated master copies on each side
+      /// The master segments kept, sector-relative: those whose midpoint
+      /// lies at an angle in [-window_before, angle + window_after) from
+      /// the sector's start side (radians; the copies are trimmed to it).
+      double window_before = 0;
+      double window_after  = 0;
       /// Multiplier dofs on the end side and their images on the start
       /// side: one contact node.
       std::map<types::global_dof_index, types::global_dof_index>
         multiplier_twins;
     };
+
+    /// The rotated master copies a sector of `sector_elements` elements
+    /// (of `elements_around` around, both of the refined mesh) needs for a
+    /// rotation of up to `rotation_elements` elements: c = 1 + ceil(|s| /
+    /// k) copies on each side, trimmed to the window [-w, k + w) with w =
+    /// c k, or, where the sector and its copies would go further round than
+    /// the circle ((2c + 1) k >= Ne), to a window of exactly the circle,
+    /// whose side towards which the slave slides (`rotation_elements`:
+    /// the slave's motion along the master, signed) gets max(ceil((Ne -
+    /// k) / 2), min(Ne - k, ceil(|s|) + 1)) elements and the other side
+    /// the rest. Either way no master position appears twice modulo the
+    /// circle; the slave nodes stay inside the window as long as k + |s| <
+    /// Ne (Parameters refuses the rest, except k = Ne).
+    void
+    set_master_window(Sector            &sector,
+                      const unsigned int sector_elements,
+                      const unsigned int elements_around,
+                      const double       rotation_elements);
 
     /// A node on the end side of the sector and its image on the start
     /// side: the dofs of the displacement (x, y) and of the multiplier
