@@ -1031,8 +1031,11 @@ namespace RingContact
     // the master surface across the seam of that window, where the pairing
     // relies on a symmetry the sector does not impose: Newton fails or
     // finds another solution (k = 9..11 of 12 with s = 3). Refuse those.
+    // When k divides Ne the sector tiles the circle, and the master across
+    // the seam is the same copy of the same segments (turned by a multiple
+    // of 2 pi): any rotation is consistent (k = 1 through a whole turn).
     if (mesh.sector_elements > 0 &&
-        mesh.sector_elements < mesh.elements_around &&
+        mesh.elements_around % mesh.sector_elements != 0 &&
         load.program == LoadProgramType::rotation)
       {
         const double k = static_cast<double>(mesh.sector_elements) *
@@ -1046,7 +1049,7 @@ namespace RingContact
                   " elements: the sector would slide round to its own start "
                   "side (k + |s| must stay below " +
                   to_text(elements_around_refined) +
-                  " elements around; the whole circle, k = Ne, is accepted)");
+                  " elements around, unless k divides the elements around)");
       }
 
     // A checked step beyond the last one of the load program is a typo.
