@@ -14,6 +14,7 @@
 #include <sstream>
 
 using RingContactTests::check;
+using RingContactTests::count_rows;
 
 namespace
 {
@@ -41,17 +42,6 @@ namespace
     if (in >> word && word == "Step" && in >> step)
       return step;
     return 0;
-  }
-
-  unsigned int
-  count_rows(const std::string &filename)
-  {
-    std::ifstream in(filename);
-    std::string   line;
-    unsigned int  n = 0;
-    while (std::getline(in, line))
-      ++n;
-    return n > 0 ? n - 1 : 0;
   }
 
   // Send `signal` (and `second_signal`, if not 0, right after it) when the

@@ -16,12 +16,25 @@
 
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace RingContactTests
 {
+  /// The data rows of a CSV file with a header row.
+  inline unsigned int
+  count_rows(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    std::string   line;
+    unsigned int  n = 0;
+    while (std::getline(in, line))
+      ++n;
+    return n > 0 ? n - 1 : 0;
+  }
+
   /// How a run ended and what it printed.
   struct RunResult
   {
