@@ -565,7 +565,8 @@ namespace RingContact
                         Patterns::List(Patterns::Double(), 2, 2),
                         "Reference position [m] of node A, the slave node "
                         "whose pressure is checked (the nearest slave node is "
-                        "used).");
+                        "used). Not set: (R2, 0), node A of SSNP152 for any "
+                        "interface radius.");
     }
     prm.leave_subsection();
   }
@@ -953,6 +954,11 @@ namespace RingContact
         newton.parse_parameters(prm);
         output.parse_parameters(prm, name);
         checks.parse_parameters(prm);
+        // Node A of SSNP152 is the slave node at (R2, 0): a file that
+        // changes the radii and not the probe point still checks node A.
+        if (origins.count(entry_key("Contact", "Probe point")) == 0 &&
+            mesh.source != MeshSource::patch_test)
+          contact.probe_point = Point<2>(mesh.interface_radius, 0);
         check_consistency();
       }
     catch (const ParameterError &e)
