@@ -16,6 +16,7 @@
 
 using namespace RingContact;
 using RingContactTests::check;
+using RingContactTests::modelisation;
 
 namespace
 {
@@ -69,14 +70,6 @@ namespace
                 ": the extreme pressures and the L2 error are the whole "
                 "rings'");
       }
-  }
-
-  std::string
-  modelisation(const char letter, const std::string &extra)
-  {
-    return std::string("include ") + RING_CONTACT_SOURCE_DIR + "/prm/ssnp152" +
-           letter + ".prm\n" + extra +
-           "\nsubsection Checks\n set Steps = none\nend\n";
   }
 } // namespace
 

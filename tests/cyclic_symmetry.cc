@@ -15,6 +15,7 @@
 
 using namespace RingContact;
 using RingContactTests::check;
+using RingContactTests::modelisation;
 
 namespace
 {
@@ -53,14 +54,6 @@ namespace
         check(difference < 1e-8,
               name + ": the sector gives the whole rings' solution");
       }
-  }
-
-  std::string
-  modelisation(const char letter, const std::string &extra)
-  {
-    return std::string("include ") + RING_CONTACT_SOURCE_DIR + "/prm/ssnp152" +
-           letter + ".prm\n" + extra +
-           "\nsubsection Checks\n set Steps = none\nend\n";
   }
 } // namespace
 

@@ -4,12 +4,23 @@
 #ifndef ring_contact_run_problem_h
 #define ring_contact_run_problem_h
 
+#include <ring_contact/config.h>
 #include <ring_contact/ring_contact_problem.h>
 
 #include "tests.h"
 
 namespace RingContactTests
 {
+  /// A parameter file that includes modelisation `letter`'s shipped file,
+  /// adds `extra` and switches its checks off.
+  inline std::string
+  modelisation(const char letter, const std::string &extra)
+  {
+    return std::string("include ") + RING_CONTACT_SOURCE_DIR + "/prm/ssnp152" +
+           letter + ".prm\n" + extra +
+           "\nsubsection Checks\n set Steps = none\nend\n";
+  }
+
   /// Run the first scheme of the parameters in `prm_text` (written to
   /// `name`.prm), quietly.
   inline std::vector<RingContact::HistoryRow>
