@@ -571,14 +571,25 @@ namespace RingContact
         const unsigned int end = best.t < 0.5 ? 0 : 1;
         if (segment_list[best.segment].neighbours[end] !=
             numbers::invalid_unsigned_int)
-          {
-            best.at_vertex = true;
-            best.t         = end;
-            best.gap =
-              (x - current_point(best.segment, best.t).x) * normal(best);
-          }
+          return project_onto_vertex(x, best.segment, end);
       }
     return best;
+  }
+
+  Projection
+  ContactSurface::project_onto_vertex(const Point<2>    &x,
+                                      const unsigned int segment,
+                                      const unsigned int end) const
+  {
+    Projection p;
+    p.segment = segment;
+    p.t       = end;
+    if (segment_list[segment].neighbours[end] != numbers::invalid_unsigned_int)
+      p.at_vertex = true;
+    else
+      p.clamped = true;
+    p.gap = (x - current_point(segment, p.t).x) * normal(p);
+    return p;
   }
 
   Projection

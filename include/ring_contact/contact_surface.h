@@ -232,6 +232,14 @@ namespace RingContact
     Projection
     project_onto(const Point<2> &x, const unsigned int segment) const;
 
+    /// x paired with the end `end` (0 or 1) of `segment`: with the vertex
+    /// normal where a neighbouring segment meets it (at_vertex), clamped to
+    /// the end of an open surface otherwise.
+    Projection
+    project_onto_vertex(const Point<2>    &x,
+                        const unsigned int segment,
+                        const unsigned int end) const;
+
     /// Indices of the segments whose current bounding box meets `box`.
     std::vector<unsigned int>
     segments_near(const BoundingBox<2> &box) const;
