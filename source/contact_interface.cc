@@ -81,7 +81,7 @@ namespace RingContact
 
   unsigned int
   ContactInterface::update(const Vector<double> &solution,
-                           const bool            keep_partners)
+                           const Pairing         pairing)
   {
     // Finite strain: pair and measure in the current configuration. Small
     // strain: pair in the reference configuration, and the gap is the
@@ -101,7 +101,7 @@ namespace RingContact
     if (segment_based)
       pair_pieces(solution);
     else
-      pair_points(solution, keep_partners);
+      pair_points(solution, pairing);
 
     // Weighted gaps and the active set from the current multipliers.
     std::fill(weighted_gap.begin(), weighted_gap.end(), 0.0);
@@ -157,7 +157,7 @@ namespace RingContact
 
   void
   ContactInterface::pair_points(const Vector<double> &solution,
-                                const bool            keep_partners)
+                                const Pairing         pairing)
   {
     // Every slave quadrature point with its closest master point; a point
     // keeps its previous partner while its projection stays on it.
@@ -174,22 +174,28 @@ namespace RingContact
           point.xi = quadrature.point(q)[0];
           point.w  = quadrature.weight(q);
           complete_point(point, s, solution, [&](const Point<2> &x) {
-            if (!keep_partners || preferred == numbers::invalid_unsigned_int)
+            if (pairing == Pairing::search ||
+                preferred == numbers::invalid_unsigned_int)
               return master.project(x, preferred);
             Projection kept = points[index].projection;
             if (!kept.at_vertex)
               {
-                // A held partner is followed along its segment, but not past
-                // its end onto the extension: with facet normals, past a
-                // vertex seen from a groove (a concave corner) the extension
-                // runs inside the neighbouring segment's body, and a point
-                // pushed along it by the segment's tilted normal converges
-                // to a state that penetrates the neighbour (measured: the
-                // nodal scheme turned one element per step ended 6.8 % below
-                // the same turn in smaller steps). It is held at the vertex
-                // instead, with the vertex normal, as project() pairs it.
+                // At an accepted iterate a held partner is followed along its
+                // segment, but not past its end onto the extension: with
+                // facet normals, past a vertex seen from a groove (a concave
+                // corner) the extension runs inside the neighbouring
+                // segment's body, and a point pushed along it by the
+                // segment's tilted normal converges to a state that
+                // penetrates the neighbour (measured: the nodal scheme
+                // turned one element per step ended 6.8 % below the same
+                // turn in smaller steps). It is held at the vertex instead,
+                // with the vertex normal, as project() pairs it. Not within
+                // the line search: the switch is a jump of the residual,
+                // which would stop the search (measured: nodal, 80 around,
+                // failed at step 5 of C's rotation).
                 const Projection p = master.project_onto(x, preferred);
-                if (master.smooths_normals() || (p.t >= 0 && p.t <= 1))
+                if (pairing == Pairing::hold || master.smooths_normals() ||
+                    (p.t >= 0 && p.t <= 1))
                   return p;
                 return master.project_onto_vertex(x, preferred, p.t < 0 ? 0 : 1);
               }

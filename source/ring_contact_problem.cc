@@ -456,12 +456,13 @@ namespace RingContact
   // Pair, choose the active set, and assemble the Newton system at the
   // current solution; a new sparsity pattern when the pairs left the old.
   unsigned int
-  RingContactProblem::assemble_newton_system(const bool keep_partners)
+  RingContactProblem::assemble_newton_system(
+    const ContactInterface::Pairing pairing)
   {
     unsigned int n_changed;
     {
       TimerOutput::Scope t(timer, "contact search");
-      n_changed = contact->update(solution, keep_partners);
+      n_changed = contact->update(solution, pairing);
     }
     if (!contact->sparsity_covers_pairing())
       make_sparsity_pattern();
@@ -573,6 +574,13 @@ namespace RingContact
   // After how many iterations of a Newton solve the pairing is held.
   constexpr unsigned int hold_pairing_after = 4;
 
+  ContactInterface::Pairing
+  RingContactProblem::accepted_pairing() const
+  {
+    return keep_partners ? ContactInterface::Pairing::hold_within_segments :
+                           ContactInterface::Pairing::search;
+  }
+
   bool
   RingContactProblem::solve_newton_step(unsigned int &iterations,
                                         double       &final_residual)
@@ -655,7 +663,7 @@ namespace RingContact
             for (const auto &[dof, value] : boundary_target)
               solution(dof) = value; // exactly, not up to round-off
             lifting   = false;
-            n_changed = assemble_newton_system(keep_partners);
+            n_changed = assemble_newton_system(accepted_pairing());
             continue;
           }
         double step_length = 1;
@@ -665,13 +673,16 @@ namespace RingContact
               return false;
             // No decrease along the update: the pairing is the suspect.
             keep_partners = true;
-            n_changed     = assemble_newton_system(keep_partners);
+            n_changed     = assemble_newton_system(accepted_pairing());
             if (newton.verbose)
               log << "      line search failed: pairing held\n";
             continue;
           }
         if (newton.verbose && step_length < 1)
           log << "      line search: step length " << step_length << '\n';
+        // The trials followed held partners onto their extensions.
+        if (keep_partners)
+          n_changed = assemble_newton_system(accepted_pairing());
       }
   }
 
@@ -695,7 +706,9 @@ namespace RingContact
       {
         solution = start;
         solution.add(step_length, newton_update);
-        n_changed = assemble_newton_system(keep_partners);
+        n_changed = assemble_newton_system(
+          keep_partners ? ContactInterface::Pairing::hold :
+                          ContactInterface::Pairing::search);
         if (n_inverted == 0)
           {
             const ResidualMeasure trial = residual_measure();

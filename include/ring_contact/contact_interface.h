@@ -68,15 +68,30 @@ namespace RingContact
                      const bool                    geometrically_linear,
                      const CyclicSymmetry::Sector &sector = {});
 
+    /// How update() pairs the slave points of a point-wise scheme.
+    enum class Pairing
+    {
+      /// Closest-point search (a point with two candidates keeps its last
+      /// partner).
+      search,
+      /// Every point keeps its last partner segment and follows it, onto
+      /// its extension if need be: the residual is a smooth function of the
+      /// displacement (the line-search trials while the Newton loop holds
+      /// the pairing because it cycles, see solve_newton_step()).
+      hold,
+      /// As `hold`, but a point past its partner's end is held at that
+      /// vertex, with the vertex normal, from then on: past a groove's
+      /// vertex the extension runs inside the neighbouring segment (the
+      /// accepted Newton iterates while the pairing is held).
+      hold_within_segments
+    };
+
     /// Pair every slave quadrature point with the current master surface,
     /// compute the weighted gaps and choose the active set from the current
     /// multipliers. Returns the number of nodes whose status changed.
-    /// `keep_partners` (point-wise schemes): every point keeps its last
-    /// partner segment, projected onto its extension if need be, so that the
-    /// residual is a smooth function of the displacement (the Newton loop
-    /// asks for this when the pairing cycles, see solve_newton_step()).
     unsigned int
-    update(const Vector<double> &solution, const bool keep_partners = false);
+    update(const Vector<double> &solution,
+           const Pairing         pairing = Pairing::search);
 
     /// True if the current pairs are all inside the last sparsity pattern.
     bool
@@ -164,7 +179,7 @@ namespace RingContact
     /// master point. Segment-based: each slave segment cut into pieces with
     /// one partner each.
     void
-    pair_points(const Vector<double> &solution, const bool keep_partners);
+    pair_points(const Vector<double> &solution, const Pairing pairing);
     /// Fill in a contact point from its piece, xi and w: position,
     /// partner (from `project`), gap and length element.
     template <typename Projector>

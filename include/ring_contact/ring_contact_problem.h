@@ -102,9 +102,10 @@ namespace RingContact
     /// Pair, choose the active set and assemble the tangent and the
     /// right-hand side -R at the current solution; returns the number of
     /// contact nodes whose status changed.
-    /// `keep_partners`: see ContactInterface::update().
+    /// `pairing`: see ContactInterface::update().
     unsigned int
-    assemble_newton_system(const bool keep_partners = false);
+    assemble_newton_system(const ContactInterface::Pairing pairing =
+                             ContactInterface::Pairing::search);
     Vector<double> &
     current_solution()
     {
@@ -182,6 +183,10 @@ namespace RingContact
     make_sparsity_pattern();
     void
     solve_linear_system(Vector<double> &newton_update);
+    /// The pairing at an accepted Newton iterate: the search, or, once the
+    /// pairing is held, the held partners stopped at their segments' ends.
+    ContactInterface::Pairing
+    accepted_pairing() const;
     bool
     solve_newton_step(unsigned int &iterations, double &final_residual);
     bool
