@@ -18,7 +18,9 @@ namespace RingContact
 {
   std::vector<Verdict>
   evaluate_checks(const CheckParameters         &checks,
-                  const std::vector<HistoryRow> &history)
+                  const std::string             &scheme,
+                  const std::vector<HistoryRow> &history,
+                  const unsigned int             n_steps)
   {
     std::vector<Verdict> verdicts;
     const auto           check_row = [&](const HistoryRow &row) {
@@ -50,16 +52,28 @@ namespace RingContact
       v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
       verdicts.push_back(v);
     };
+    const auto not_reached = [&](const unsigned int step) {
+      verdicts.push_back(Verdict{scheme,
+                                 "step not reached",
+                                 step,
+                                 std::nan(""),
+                                 0,
+                                 std::nan(""),
+                                 checks.tolerance,
+                                 false});
+    };
     if (checks.every_step)
-      for (const auto &row : history)
-        check_row(row);
+      {
+        for (const auto &row : history)
+          check_row(row);
+        if (history.empty() || history.back().step < n_steps)
+          not_reached(history.empty() ? 1 : history.back().step + 1);
+      }
     else
       for (const unsigned int step : checks.steps)
         {
-          if (history.empty())
-            break;
           const unsigned int wanted =
-            step == numbers::invalid_unsigned_int ? history.back().step : step;
+            step == numbers::invalid_unsigned_int ? n_steps : step;
           bool found = false;
           for (const auto &row : history)
             if (row.step == wanted)
@@ -67,19 +81,8 @@ namespace RingContact
                 check_row(row);
                 found = true;
               }
-          if (!found)
-            {
-              // A checked step that was never reached fails.
-              Verdict v{history.front().scheme,
-                        "step not reached",
-                        wanted,
-                        std::nan(""),
-                        0,
-                        std::nan(""),
-                        checks.tolerance,
-                        false};
-              verdicts.push_back(v);
-            }
+          if (!found) // a checked step that was never reached fails
+            not_reached(wanted);
         }
     return verdicts;
   }

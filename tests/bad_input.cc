@@ -277,4 +277,21 @@ main()
                        "end\nsubsection Load program\n set Ramp steps = 2\n"
                        "end\n",
                "could not be solved");
+  // Its checks of the last step fail as not reached: before, 'last' meant
+  // the last converged step, and a run stopped early checked (and passed)
+  // that one; a run stopped at step 1 had no verdict at all.
+  {
+    std::ifstream     log("newton_fails.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    const bool failed = text.str().find("step not reached") !=
+                          std::string::npos &&
+                        text.str().find("0 of 1 checks pass") !=
+                          std::string::npos;
+    check(failed, "newton_fails: the checks of the last step fail");
+    RingContactTests::deallog_file
+      << "newton_fails: the checks of the last step: step not reached, "
+         "0 of 1 checks pass"
+      << std::endl;
+  }
 }

@@ -53,10 +53,15 @@ namespace RingContact
     bool         pass;
   };
 
-  /// Turn the history of one scheme into the verdicts asked for.
+  /// Turn the history of scheme `scheme` into the verdicts asked for. The
+  /// last step is the load program's `n_steps`: a run that stopped before
+  /// it fails its checks of the last step ("step not reached"), it does not
+  /// check the last step it converged instead.
   std::vector<Verdict>
   evaluate_checks(const CheckParameters         &checks,
-                  const std::vector<HistoryRow> &history);
+                  const std::string             &scheme,
+                  const std::vector<HistoryRow> &history,
+                  const unsigned int             n_steps);
 
   /// The verdict table; returns true if every check passes.
   bool
