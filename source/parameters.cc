@@ -642,6 +642,18 @@ namespace RingContact
                         "ramp: p(t) = p0 10^(t - 1.1) at t = k dt, imposed "
                         "radially (A, B, H); rotation: pressure fixed, the "
                         "inner boundary turned through s elements (C-G).");
+      prm.declare_entry(
+        "Loading",
+        "imposed displacements",
+        Patterns::Selection("imposed displacements|pressure"),
+        "imposed displacements: the analytic displacements of pressure p on "
+        "r = R1 and r = R3 (the original's loading, the only one the "
+        "rotation program takes); pressure: the pressure p on r = R1 as "
+        "the problem states it, on the current configuration (a follower "
+        "load; a dead load in small strain), r = R3 free, and each ring's "
+        "rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at "
+        "(0, r) of r = R1 and r = R3 (the symmetric solution satisfies "
+        "them; the mesh needs nodes there).");
       prm.declare_entry("Reference pressure",
                         "1e6",
                         Patterns::Double(),
@@ -678,6 +690,9 @@ namespace RingContact
     {
       program = prm.get("Program") == "ramp" ? LoadProgramType::ramp :
                                                LoadProgramType::rotation;
+      loading = prm.get("Loading") == "pressure" ?
+                  Loading::pressure :
+                  Loading::imposed_displacements;
       reference_pressure =
         get_double(prm, "Load program", "Reference pressure");
       ramp_steps = get_count(prm, "Load program", "Ramp steps", 1, 100000);
@@ -1001,6 +1016,24 @@ namespace RingContact
               to_text(elements_around_refined) +
               " elements around the refined mesh), got " +
               to_text(load.rotation_elements));
+
+    // The pressure load: the ramp on the whole rings.
+    require(load.loading != Loading::pressure ||
+              load.program == LoadProgramType::ramp,
+            "Load program",
+            "Loading",
+            "= pressure takes the ramp program only: the rotation turns an "
+            "imposed displacement of r = R3");
+    require(load.loading != Loading::pressure || mesh.sector_elements == 0,
+            "Load program",
+            "Loading",
+            "= pressure needs the whole rings: a sector leaves its rigid "
+            "rotation free (set Mesh/Sector elements = 0)");
+    require(load.loading != Loading::pressure ||
+              mesh.source != MeshSource::patch_test,
+            "Load program",
+            "Loading",
+            "= pressure is for the rings, not the patch test");
 
     // The probe point (node A) must be on the slave surface, or near it:
     // the nearest slave node is used, and a point far away names a node

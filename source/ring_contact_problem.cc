@@ -13,6 +13,7 @@
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -32,6 +33,7 @@ namespace RingContact
       , analytic(parameters.mesh, parameters.materials)
       , load_program(parameters.load)
       , patch_test(parameters.mesh.source == MeshSource::patch_test)
+      , pressure_loading(parameters.load.loading == Loading::pressure)
       , previous_time(0)
       , current_time(0)
       , current_load{0, 0}
@@ -142,6 +144,7 @@ namespace RingContact
     previous_solution.reinit(dof_handler.n_dofs());
     system_rhs.reinit(dof_handler.n_dofs());
     internal_force.reinit(dof_handler.n_dofs());
+    external_force.reinit(dof_handler.n_dofs());
     residual_magnitude.reinit(dof_handler.n_dofs());
 
     make_constraints();
@@ -172,14 +175,19 @@ namespace RingContact
     // Rings: both displacement components on r = R1 and r = R3. Patch
     // test: the vertical one on the bottom and the top, and the horizontal
     // one at the left corner of each block (no rigid sliding).
+    // Pressure loading: no displacement imposed, the rigid-body modes
+    // removed instead.
     const ComponentMask displacement_mask({!patch_test, true, false});
-    for (const unsigned int id : {Ids::outer_boundary, Ids::inner_boundary})
-      VectorTools::interpolate_boundary_values(mapping_collection,
-                                               dof_handler,
-                                               id,
-                                               Functions::ZeroFunction<2>(3),
-                                               target,
-                                               displacement_mask);
+    if (pressure_loading)
+      add_rigid_body_constraints(target);
+    else
+      for (const unsigned int id : {Ids::outer_boundary, Ids::inner_boundary})
+        VectorTools::interpolate_boundary_values(mapping_collection,
+                                                 dof_handler,
+                                                 id,
+                                                 Functions::ZeroFunction<2>(3),
+                                                 target,
+                                                 displacement_mask);
     if (patch_test)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
@@ -216,6 +224,50 @@ namespace RingContact
                                       parameters.mesh.sector_angle(),
                                       target);
     target.close();
+  }
+
+  // Under the pressure load nothing holds the rings in place: each can
+  // translate and turn (frictionless contact transmits no torque). Three
+  // displacement components per ring fix them without constraining the
+  // solution sought, which is radial: u_y = 0 at (r, 0) and (-r, 0), u_x = 0
+  // at (0, r), on r = R1 for the outer ring and r = R3 for the inner one.
+  void
+  RingContactProblem::add_rigid_body_constraints(
+    AffineConstraints<double> &target) const
+  {
+    const auto &mesh = parameters.mesh;
+    for (const auto &[boundary, r] :
+         {std::make_pair(Ids::outer_boundary, mesh.outer_radius),
+          std::make_pair(Ids::inner_boundary, mesh.inner_radius)})
+      {
+        // point, component
+        const std::array<std::pair<Point<2>, unsigned int>, 3> fixed = {
+          {{Point<2>(r, 0), 1}, {Point<2>(-r, 0), 1}, {Point<2>(0, r), 0}}};
+        std::array<bool, 3> found = {{false, false, false}};
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == boundary)
+              for (const unsigned int v : face->vertex_indices())
+                for (unsigned int k = 0; k < 3; ++k)
+                  if (face->vertex(v).distance(fixed[k].first) < 1e-8 * r)
+                    {
+                      const auto dof = face->vertex_dof_index(
+                        v, fixed[k].second, cell->active_fe_index());
+                      if (!target.is_constrained(dof))
+                        target.add_line(dof);
+                      found[k] = true;
+                    }
+        for (unsigned int k = 0; k < 3; ++k)
+          AssertThrow(found[k],
+                      ExcMessage(
+                        "Loading = pressure: no mesh node at (" +
+                        Utilities::to_string(fixed[k].first[0]) + ", " +
+                        Utilities::to_string(fixed[k].first[1]) +
+                        ") on boundary " + std::to_string(boundary) +
+                        ", where a rigid-body mode of its ring is fixed "
+                        "(the number of elements around must be a multiple "
+                        "of 4, with a node at angle 0)"));
+      }
   }
 
   // The first update of a load step carries the boundary increment, the
@@ -304,6 +356,12 @@ namespace RingContact
         current_load    = load;
         return;
       }
+    if (pressure_loading)
+      {
+        boundary_target.clear(); // the load is the pressure on r = R1
+        current_load = load;
+        return;
+      }
     const double angle = 2 * numbers::PI * load.rotation_elements /
                          (parameters.mesh.elements_around *
                           (1u << parameters.mesh.global_refinements));
@@ -331,6 +389,7 @@ namespace RingContact
     system_matrix      = 0;
     system_rhs         = 0;
     internal_force     = 0;
+    external_force     = 0;
     residual_magnitude = 0;
     n_inverted         = 0;
     min_det_F          = std::numeric_limits<double>::max();
@@ -451,6 +510,98 @@ namespace RingContact
         update_constraints().distribute_local_to_global(
           cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
       }
+    if (pressure_loading)
+      assemble_pressure_load();
+  }
+
+  // The pressure p on r = R1, on the current configuration: the load
+  // -p n da, with n da = cof(F) N dA (Nanson; in two dimensions the
+  // cofactor det(F) F^-T is linear in F), adds int p phi_i . cof(F) N dA to
+  // the residual and, F = I + Grad u, the tangent int p phi_i . cof(Grad
+  // phi_j) N dA (not symmetric). Small strain: the dead load, cof(F) = I.
+  void
+  RingContactProblem::assemble_pressure_load()
+  {
+    const double p = current_load.pressure;
+    const bool   follower =
+      parameters.materials.kinematics == Kinematics::finite_strain;
+    const auto cofactor = [](const Tensor<2, 2> &G) {
+      Tensor<2, 2> C;
+      C[0][0] = G[1][1];
+      C[0][1] = -G[1][0];
+      C[1][0] = -G[0][1];
+      C[1][1] = G[0][0];
+      return C;
+    };
+    hp::QCollection<1> face_q;
+    for (unsigned int i = 0; i < q_collection.size(); ++i)
+      face_q.push_back(QGauss<1>(fe_collection[i].degree + 1));
+    hp::FEFaceValues<2> hp_face_values(mapping_collection,
+                                       fe_collection,
+                                       face_q,
+                                       update_values | update_gradients |
+                                         update_normal_vectors |
+                                         update_JxW_values);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<Tensor<2, 2>>            grad_u;
+    FullMatrix<double>                   face_matrix;
+    Vector<double>                       face_rhs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == Ids::outer_boundary)
+          {
+            hp_face_values.reinit(cell, f);
+            const FEFaceValues<2> &fv = hp_face_values.get_present_fe_values();
+            const FiniteElement<2> &fe = cell->get_fe();
+            const unsigned int      n  = fe.n_dofs_per_cell();
+            dofs.resize(n);
+            cell->get_dof_indices(dofs);
+            face_matrix.reinit(n, n);
+            face_rhs.reinit(n);
+            grad_u.resize(fv.n_quadrature_points);
+            fv[displacement].get_function_gradients(solution, grad_u);
+            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+              {
+                const Tensor<1, 2> N  = fv.normal_vector(q);
+                const double       dA = fv.JxW(q);
+                const Tensor<1, 2> nda =
+                  (follower ? cofactor(unit_symmetric_tensor<2>() + grad_u[q]) :
+                              Tensor<2, 2>(unit_symmetric_tensor<2>())) *
+                  N * dA;
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int c = fe.system_to_component_index(i).first;
+                    if (c >= 2)
+                      continue;
+                    face_rhs(i) -= p * fv.shape_value(i, q) * nda[c];
+                    if (!follower)
+                      continue;
+                    for (unsigned int j = 0; j < n; ++j)
+                      {
+                        const unsigned int d =
+                          fe.system_to_component_index(j).first;
+                        if (d >= 2)
+                          continue;
+                        Tensor<2, 2> G;
+                        G[d] = fv.shape_grad(j, q);
+                        face_matrix(i, j) += p * fv.shape_value(i, q) *
+                                             (cofactor(G) * N)[c] * dA;
+                      }
+                  }
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                external_force(dofs[i]) -= face_rhs(i);
+                double magnitude = std::abs(face_rhs(i));
+                for (unsigned int j = 0; j < n; ++j)
+                  magnitude +=
+                    std::abs(face_matrix(i, j)) * std::abs(solution(dofs[j]));
+                residual_magnitude(dofs[i]) += magnitude;
+              }
+            update_constraints().distribute_local_to_global(
+              face_matrix, face_rhs, dofs, system_matrix, system_rhs);
+          }
   }
 
   // Pair, choose the active set, and assemble the Newton system at the
@@ -521,7 +672,9 @@ namespace RingContact
           largest_displacement =
             std::max(largest_displacement, std::abs(solution(i)));
       }
-    reaction             = std::max(std::sqrt(reaction), 1e-300);
+    // Under the pressure load the reactions vanish: the scale of the forces
+    // is then the load itself.
+    reaction = std::max(std::sqrt(reaction + external_force.norm_sqr()), 1e-300);
     largest_displacement = std::max(largest_displacement, 1e-300);
     largest_pressure     = std::max(largest_pressure, 1e-300);
 

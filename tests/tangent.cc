@@ -6,6 +6,7 @@
 // element, or with the slave nodes on the master vertices; nodal and Gauss
 // integration, faceted and curved).
 #include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/analytic_solution.h>
@@ -98,8 +99,9 @@ namespace
   check_system(const std::string &scheme,
                const unsigned int mapping_degree,
                const Kinematics   kinematics,
-               const bool         vertex = false,
-               const bool         smooth = false)
+               const bool         vertex          = false,
+               const bool         smooth          = false,
+               const bool         pressure_loaded = false)
   {
     Parameters parameters;
     {
@@ -116,6 +118,8 @@ namespace
           << " set VTU interval = 0\nend\nsubsection Mesh\n"
           << " set Elements around = 12\n set Radial elements outer ring = 2\n"
           << " set Radial elements inner ring = 2\nend\n";
+      if (pressure_loaded)
+        prm << "subsection Load program\n set Loading = pressure\nend\n";
     }
     parameters.read("tangent.prm");
     std::ostringstream log;
@@ -123,6 +127,7 @@ namespace
                                parameters.contact.schemes.front(),
                                log);
     problem.setup();
+    problem.set_load_state({1e7, 0});
 
     // A third of an element of sliding: slave points project inside master
     // segments, away from vertices (where the pairing is not smooth).
@@ -174,6 +179,13 @@ namespace
           columns.insert(columns.end(), list->begin(), list->end());
     for (types::global_dof_index i = 0; i < u.size(); i += 37)
       columns.push_back(i);
+    // Those of r = R1, where the pressure acts.
+    if (pressure_loaded)
+      for (const auto i :
+           DoFTools::extract_boundary_dofs(problem.get_dof_handler(),
+                                           ComponentMask({true, true, false}),
+                                           {static_cast<types::boundary_id>(Ids::outer_boundary)}))
+        columns.push_back(i);
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
 
@@ -223,7 +235,8 @@ namespace
       }
     problem.assemble_newton_system();
     const std::string name =
-      scheme + (vertex ? ", at master vertices" : "") +
+      scheme + (pressure_loaded ? ", pressure on r = R1" : "") +
+      (vertex ? ", at master vertices" : "") +
       (smooth ? ", smoothed normals" : "") + ", mapping degree " +
       std::to_string(mapping_degree) + ", " +
       (kinematics == Kinematics::finite_strain ? "finite strain" :
@@ -261,4 +274,9 @@ main()
   check_system("segment-based 2", 1, Kinematics::finite_strain);
   check_system("segment-based 3", 2, Kinematics::finite_strain);
   check_system("segment-based 2", 1, Kinematics::finite_strain, false, true);
+  // The follower pressure on r = R1 (Loading = pressure): its tangent is
+  // not symmetric; with small strain it is a dead load.
+  check_system("Gauss 3", 1, Kinematics::finite_strain, false, false, true);
+  check_system("Gauss 3", 2, Kinematics::finite_strain, false, true, true);
+  check_system("nodal", 1, Kinematics::small_strain, false, false, true);
 }

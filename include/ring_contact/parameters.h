@@ -73,6 +73,19 @@ namespace RingContact
   };
 
   /// The load programs of SSNP152.
+  /// How the load reaches the rings.
+  enum class Loading
+  {
+    /// The analytic displacements imposed on r = R1 and r = R3 (the
+    /// original's loading; the rotation turns r = R3).
+    imposed_displacements,
+    /// The pressure p on r = R1, on the current configuration (a follower
+    /// load; a dead load in small strain), r = R3 free; each ring's
+    /// rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at (0, r)
+    /// of its outer boundary, which the symmetric solution satisfies.
+    pressure
+  };
+
   enum class LoadProgramType
   {
     ramp,    ///< p(t) = p0 10^(t - 1.1), no rotation (modelisations A, B, H)
@@ -187,6 +200,7 @@ namespace RingContact
   struct LoadParameters
   {
     LoadProgramType program;
+    Loading         loading;
     double          reference_pressure; ///< p0 of the ramp
     unsigned int    ramp_steps;
     double          time_step;

@@ -71,6 +71,15 @@ namespace RingContact
     bool
     run();
 
+    /// Set the load state `load` (its boundary displacements become the
+    /// target of the next Newton solve, its pressure the load) without
+    /// solving: for tests that assemble at a given state.
+    void
+    set_load_state(const LoadState &load)
+    {
+      apply_boundary_motion(load);
+    }
+
     /// Called after each converged step, once its results are complete
     /// (history row, VTU files); the run stops after that step when it
     /// returns false (a run asked to stop ends with whole files).
@@ -189,6 +198,10 @@ namespace RingContact
     accepted_pairing() const;
     bool
     solve_newton_step(unsigned int &iterations, double &final_residual);
+    void
+    add_rigid_body_constraints(AffineConstraints<double> &target) const;
+    void
+    assemble_pressure_load();
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,
@@ -233,6 +246,11 @@ namespace RingContact
     SparseMatrix<double>      system_matrix;
     Vector<double>            system_rhs;
     Vector<double>            internal_force;
+    /// The pressure load's nodal forces (Loading = pressure), for the scale
+    /// of the residual.
+    Vector<double> external_force;
+    /// Loading = pressure: p on r = R1, r = R3 free.
+    const bool pressure_loading;
 
     /// The constraints of the first update of a load step: the same lines,
     /// with the remaining boundary increment as inhomogeneity (step-44).
