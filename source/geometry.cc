@@ -1,4 +1,3 @@
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
@@ -164,36 +163,38 @@ namespace RingContact
 
     namespace
     {
-      // Build the triangulation of a checked gmsh file with quadratic
-      // elements (types 8 and 10), which deal.II's GridIn does not take.
-      // Only the vertices make the triangulation: the curved geometry comes
-      // from the polar manifold, and the mid-side nodes of the circles are
-      // checked to lie on it.
+      // Build the triangulation of a checked gmsh mesh. Only the vertices
+      // make the cells: the curved geometry comes from the polar manifold,
+      // and the mid-side nodes of the circles are checked to lie on it.
+      // Vertices are numbered by node tag and cells taken by element tag,
+      // the order of the file whatever its format.
       void
-      build_quadratic(Triangulation<2> &triangulation, const GmshMesh &mesh)
+      build_triangulation(Triangulation<2> &triangulation, const GmshMesh &mesh)
       {
-        std::vector<Point<2>>    vertices;
-        std::map<long, unsigned> vertex_of_node;
-        const auto               vertex = [&](const long node) {
-          const auto it = vertex_of_node.find(node);
-          if (it != vertex_of_node.end())
-            return it->second;
-          vertex_of_node[node] = vertices.size();
-          vertices.push_back(mesh.nodes.at(node));
-          return static_cast<unsigned>(vertices.size() - 1);
-        };
+        std::map<std::size_t, unsigned int> vertex_of_node;
+        for (const auto &element : mesh.elements)
+          for (unsigned int i = 0;
+               i < (element.type == 1 || element.type == 8 ? 2u : 4u);
+               ++i)
+            vertex_of_node[element.nodes[i]] = 0;
+        std::vector<Point<2>> vertices;
+        for (auto &[node, vertex] : vertex_of_node)
+          {
+            vertex = vertices.size();
+            vertices.push_back(mesh.nodes.at(node));
+          }
         std::vector<CellData<2>> cells;
         SubCellData              lines;
         for (const auto &element : mesh.elements)
-          if (element.type == 3 || element.type == 10)
+          if (element.type == 3 || element.type == 10 || element.type == 16)
             {
               // gmsh: corners counterclockwise; deal.II: lexicographic.
               const auto &n = element.nodes;
               CellData<2> cell;
-              cell.vertices    = {vertex(n[0]),
-                                  vertex(n[1]),
-                                  vertex(n[3]),
-                                  vertex(n[2])};
+              cell.vertices    = {vertex_of_node.at(n[0]),
+                                  vertex_of_node.at(n[1]),
+                                  vertex_of_node.at(n[3]),
+                                  vertex_of_node.at(n[2])};
               cell.material_id = element.physical;
               cells.push_back(cell);
             }
@@ -201,7 +202,8 @@ namespace RingContact
             {
               const auto &n = element.nodes;
               CellData<1> segment;
-              segment.vertices    = {vertex(n[0]), vertex(n[1])};
+              segment.vertices    = {vertex_of_node.at(n[0]),
+                                     vertex_of_node.at(n[1])};
               segment.boundary_id = element.physical;
               lines.boundary_lines.push_back(segment);
               if (element.type == 8)
@@ -210,14 +212,23 @@ namespace RingContact
                                  end = mesh.nodes.at(n[0]);
                   if (std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
                     throw std::runtime_error(
-                      "mesh file '" + mesh.filename + "', line " +
-                      std::to_string(element.line) +
+                      "mesh file '" + mesh.filename + "', element " +
+                      std::to_string(element.tag) +
                       ": the mid-side node of a boundary line is not on the "
                       "circle of its end nodes");
                 }
             }
         GridTools::consistently_order_cells(cells);
-        triangulation.create_triangulation(vertices, cells, lines);
+        try
+          {
+            triangulation.create_triangulation(vertices, cells, lines);
+          }
+        catch (const std::exception &e)
+          {
+            throw std::runtime_error(
+              "mesh file '" + mesh.filename +
+              "': deal.II cannot build a mesh of it: " + one_line_message(e));
+          }
       }
 
       // Every boundary face of the triangulation must be one of the file's
@@ -269,30 +280,14 @@ namespace RingContact
     } // namespace
 
     GmshMesh
-    read_gmsh(Triangulation<2> &triangulation, const std::string &filename)
+    read_gmsh(Triangulation<2>  &triangulation,
+              const std::string &filename,
+              const GeoNumbers  &geo_numbers,
+              const unsigned int element_order)
     {
-      // Check the whole file first: deal.II's reader trusts counts and
-      // node numbers, and takes triangles.
-      GmshMesh mesh = read_gmsh_file(filename);
-      if (mesh.quadratic)
-        build_quadratic(triangulation, mesh);
-      else
-        {
-          // deal.II's reader keeps the duplicated interface nodes: the two
-          // rings stay two bodies.
-          std::istringstream stream(mesh.text);
-          GridIn<2>          grid_in(triangulation);
-          try
-            {
-              grid_in.read_msh(stream);
-            }
-          catch (const std::exception &e)
-            {
-              throw std::runtime_error(
-                "cannot read mesh file '" + filename +
-                "' as a gmsh mesh (format 1 or 2.2): " + one_line_message(e));
-            }
-        }
+      const GmshMesh mesh =
+        read_gmsh_file(filename, geo_numbers, element_order);
+      build_triangulation(triangulation, mesh);
       return mesh;
     }
 
@@ -354,8 +349,16 @@ namespace RingContact
         }
       else
         {
-          const GmshMesh mesh =
-            read_gmsh(triangulation, parameters.mesh.mesh_file);
+          // A script is meshed with the elements the rings use: linear if
+          // both rings are, quadratic otherwise (the cells take only the
+          // vertices; quadratic nodes on the circles are checked).
+          const auto    &fe = parameters.finite_elements;
+          const unsigned order =
+            fe.degree_outer == 1 && fe.degree_inner == 1 ? 1 : 2;
+          const GmshMesh mesh = read_gmsh(triangulation,
+                                          parameters.mesh.mesh_file,
+                                          parameters.mesh.geo_numbers,
+                                          order);
           check_rings(triangulation, parameters);
           check_boundary_tags(triangulation, mesh);
           check_size(triangulation.n_active_cells(), parameters);

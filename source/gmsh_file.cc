@@ -1,8 +1,12 @@
 #include <ring_contact/gmsh_file.h>
+#include <ring_contact/gmsh_process.h>
 #include <ring_contact/parameter_file.h>
 #include <ring_contact/utilities.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -17,7 +21,34 @@ namespace RingContact
       // file much larger than that is not one of ours.
       constexpr std::size_t max_mesh_file_bytes = std::size_t(512) << 20;
 
-      // The nodes of each accepted element type, and its name for messages.
+      [[noreturn]] void
+      fail(const std::string &filename, const std::string &what)
+      {
+        throw std::runtime_error("cannot read mesh file '" +
+                                 printable(filename, 200) + "': " + what);
+      }
+
+      std::string
+      in_quotes(const std::string &text)
+      {
+        return "'" + printable(text) + "'";
+      }
+
+      // Whether `filename` ends in `extension`, in any case.
+      bool
+      has_extension(const std::string &filename, const std::string &extension)
+      {
+        if (filename.size() <= extension.size())
+          return false;
+        for (std::size_t i = 0; i < extension.size(); ++i)
+          if (std::tolower(static_cast<unsigned char>(
+                filename[filename.size() - extension.size() + i])) !=
+              extension[i])
+            return false;
+        return true;
+      }
+
+      // The nodes of each accepted element type (0: not accepted).
       unsigned int
       nodes_of_type(const int type)
       {
@@ -33,6 +64,8 @@ namespace RingContact
               return 9; // 9-node quadrilateral
             case 15:
               return 1; // point
+            case 16:
+              return 8; // 8-node quadrilateral
             default:
               return 0;
           }
@@ -46,380 +79,558 @@ namespace RingContact
             case 2:
               return "3-node triangle";
             case 4:
-              return "tetrahedron";
+              return "4-node tetrahedron";
             case 5:
-              return "hexahedron";
+              return "8-node hexahedron";
             case 6:
-              return "prism";
+              return "6-node prism";
             case 7:
-              return "pyramid";
+              return "5-node pyramid";
             case 9:
               return "6-node triangle";
-            case 16:
-              return "8-node quadrilateral";
+            case 11:
+              return "10-node tetrahedron";
+            case 12:
+              return "27-node hexahedron";
+            case 20:
+            case 21:
+              return "higher-order triangle";
+            case 36:
+            case 37:
+              return "higher-order quadrilateral";
             default:
-              return "type " + std::to_string(type);
+              return "element";
           }
       }
 
-      class Parser
+      // --------------------------------------------------------------
+      // 1. The light check of the file, before gmsh sees it.
+      // --------------------------------------------------------------
+
+      enum class Format
       {
-      public:
-        Parser(GmshMesh &mesh)
-            : mesh(mesh)
-            , in(mesh.text)
-        {}
-
-        void
-        parse()
-        {
-          bool        have_nodes = false, have_elements = false;
-          std::string line;
-          while (next_line(line))
-            {
-              if (line.empty())
-                continue;
-              if (line == "$NOD" || line == "$Nodes")
-                {
-                  if (have_nodes)
-                    fail("a second node section");
-                  const bool format_1 = line == "$NOD";
-                  if (!format_1 && !have_format)
-                    fail("'$Nodes' without a '$MeshFormat' section");
-                  read_nodes(format_1 ? "$ENDNOD" : "$EndNodes");
-                  have_nodes    = true;
-                  format_1_file = format_1;
-                }
-              else if (line == "$ELM" || line == "$Elements")
-                {
-                  if (!have_nodes)
-                    fail("the element section comes before the nodes");
-                  if (have_elements)
-                    fail("a second element section");
-                  if ((line == "$ELM") != format_1_file)
-                    fail("format 1 and format 2 sections mixed");
-                  read_elements(line == "$ELM" ? "$ENDELM" : "$EndElements",
-                                line == "$ELM");
-                  have_elements = true;
-                }
-              else if (line == "$MeshFormat")
-                read_format();
-              else if (line[0] == '$' && line.compare(0, 4, "$End") != 0 &&
-                       line.compare(0, 4, "$END") != 0)
-                skip_section(line);
-              else
-                fail("unexpected text " + in_quotes(line) +
-                     " outside of a section (not a gmsh file?)");
-            }
-          if (!have_nodes)
-            fail("no node section ($NOD or $Nodes)");
-          if (!have_elements)
-            fail("no element section ($ELM or $Elements)");
-          check_cells();
-        }
-
-      private:
-        GmshMesh          &mesh;
-        std::istringstream in;
-        unsigned int       line_number   = 0;
-        bool               have_format   = false;
-        bool               format_1_file = false;
-
-        static std::string
-        in_quotes(const std::string &text)
-        {
-          return "'" + printable(text) + "'";
-        }
-
-        [[noreturn]] void
-        fail(const std::string &what, unsigned int at = 0) const
-        {
-          throw std::runtime_error("cannot read mesh file '" +
-                                   printable(mesh.filename, 200) + "', line " +
-                                   std::to_string(at == 0 ? line_number : at) +
-                                   ": " + what);
-        }
-
-        bool
-        next_line(std::string &line)
-        {
-          if (!std::getline(in, line))
-            return false;
-          ++line_number;
-          while (!line.empty() && (line.back() == '\r' || line.back() == ' ' ||
-                                   line.back() == '\t'))
-            line.pop_back();
-          for (const char c : line)
-            if (static_cast<unsigned char>(c) < 0x20 && c != '\t')
-              fail("a control character: not an ASCII gmsh file?");
-          return true;
-        }
-
-        void
-        read_format()
-        {
-          std::string line;
-          if (!next_line(line))
-            fail("the file ends in '$MeshFormat'");
-          std::istringstream fields(line);
-          std::string        version;
-          int                file_type = -1, data_size = -1;
-          fields >> version >> file_type >> data_size;
-          if (version != "2.2" && version != "2.1" && version != "2")
-            fail("gmsh format " + in_quotes(version) +
-                 " (this program reads formats 1 and 2.2; gmsh writes 2.2 "
-                 "with '-format msh22')");
-          if (file_type != 0)
-            fail("a binary gmsh file (this program reads ASCII files)");
-          if (!next_line(line) || line != "$EndMeshFormat")
-            fail("'$MeshFormat' is not closed by '$EndMeshFormat'");
-          have_format = true;
-        }
-
-        void
-        skip_section(const std::string &name)
-        {
-          const std::string  end   = "$End" + name.substr(1);
-          const std::string  END   = "$END" + name.substr(1);
-          const unsigned int start = line_number;
-          std::string        line;
-          while (next_line(line))
-            if (line == end || line == END)
-              return;
-          fail("section " + in_quotes(name) + " is not closed", start);
-        }
-
-        // The count line of a section.
-        std::size_t
-        read_count(const std::string &section)
-        {
-          std::string line;
-          if (!next_line(line))
-            fail("the file ends after " + in_quotes(section));
-          std::istringstream fields(line);
-          long               n = -1;
-          std::string        rest;
-          if (!(fields >> n) || n < 0 || (fields >> rest))
-            fail("the count of section " + in_quotes(section) + " is " +
-                 in_quotes(line) + ", not a number");
-          return static_cast<std::size_t>(n);
-        }
-
-        void
-        read_nodes(const std::string &end_marker)
-        {
-          const std::size_t declared = read_count(end_marker);
-          std::string       line;
-          std::size_t       n       = 0;
-          double            largest = 0;
-          std::vector<std::pair<double, unsigned int>> z_values;
-          while (true)
-            {
-              if (!next_line(line))
-                fail("the node section is not closed by " +
-                     in_quotes(end_marker));
-              if (line == end_marker)
-                break;
-              std::istringstream fields(line);
-              long               id = 0;
-              double             x, y, z;
-              std::string        rest;
-              if (!(fields >> id >> x >> y >> z) || (fields >> rest))
-                fail("the node line " + in_quotes(line) + " is not 'id x y z'");
-              if (id <= 0)
-                fail("node id " + std::to_string(id) + " (must be positive)");
-              if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) ||
-                  std::abs(x) > 1e100 || std::abs(y) > 1e100 ||
-                  std::abs(z) > 1e100)
-                fail("node " + std::to_string(id) +
-                     " has a coordinate that is not a finite number");
-              if (!mesh.nodes.emplace(id, Point<2>(x, y)).second)
-                fail("node " + std::to_string(id) + " is defined twice");
-              largest = std::max({largest, std::abs(x), std::abs(y)});
-              z_values.emplace_back(z, line_number);
-              ++n;
-            }
-          if (n != declared)
-            fail("the node section declares " + std::to_string(declared) +
-                 " nodes but lists " + std::to_string(n));
-          for (const auto &[z, at] : z_values)
-            if (std::abs(z) > 1e-10 * largest)
-              fail("a node with z = " + std::to_string(z) +
-                     ": the rings are a plane mesh",
-                   at);
-        }
-
-        void
-        read_elements(const std::string &end_marker, const bool format_1)
-        {
-          const std::size_t declared = read_count(end_marker);
-          std::string       line;
-          std::set<long>    ids;
-          while (true)
-            {
-              if (!next_line(line))
-                fail("the element section is not closed by " +
-                     in_quotes(end_marker));
-              if (line == end_marker)
-                break;
-              std::istringstream fields(line);
-              std::vector<long>  numbers;
-              std::string        word;
-              while (fields >> word)
-                {
-                  std::size_t used  = 0;
-                  long        value = 0;
-                  try
-                    {
-                      value = std::stol(word, &used);
-                    }
-                  catch (...)
-                    {
-                      used = 0;
-                    }
-                  if (used != word.size())
-                    fail("the element line " + in_quotes(line) +
-                         " holds something that is not an integer: " +
-                         in_quotes(word));
-                  numbers.push_back(value);
-                }
-              // format 1: id type physical elementary n-nodes nodes...
-              // format 2: id type n-tags tags... nodes...
-              if (numbers.size() < 3)
-                fail("the element line " + in_quotes(line) + " is too short");
-              GmshElement element;
-              const long  id              = numbers[0];
-              element.type                = static_cast<int>(numbers[1]);
-              element.line                = line_number;
-              const unsigned int expected = nodes_of_type(element.type);
-              if (expected == 0)
-                fail("element " + std::to_string(id) + " is a " +
-                     name_of_type(element.type) +
-                     ": the rings must be meshed with quadrilaterals (gmsh "
-                     "types 3 and 10) and lines (1 and 8)");
-              std::size_t first_node = 0;
-              if (format_1)
-                {
-                  if (numbers.size() < 5)
-                    fail("the element line " + in_quotes(line) +
-                         " is too short");
-                  element.physical = numbers[2];
-                  if (numbers[4] != static_cast<long>(expected))
-                    fail("element " + std::to_string(id) + " (" +
-                         (expected == 4 ? "4-node quadrilateral" :
-                          expected == 9 ? "9-node quadrilateral" :
-                          expected == 1 ? "point" :
-                                          std::to_string(expected) +
-                                            "-node line") +
-                         ") declares " + std::to_string(numbers[4]) + " nodes");
-                  first_node = 5;
-                }
-              else
-                {
-                  const long n_tags = numbers[2];
-                  if (n_tags < 0 || n_tags > 100 ||
-                      numbers.size() < 3 + static_cast<std::size_t>(n_tags))
-                    fail("element " + std::to_string(id) +
-                         " has a wrong number of tags");
-                  element.physical = n_tags > 0 ? numbers[3] : 0;
-                  first_node       = 3 + n_tags;
-                }
-              if (numbers.size() - first_node != expected)
-                fail("element " + std::to_string(id) + " has " +
-                     std::to_string(numbers.size() - first_node) +
-                     " nodes; its type (" + std::to_string(element.type) +
-                     ") has " + std::to_string(expected));
-              if (!ids.insert(id).second)
-                fail("element " + std::to_string(id) + " is defined twice");
-              if (element.physical < 0 || element.physical > 1000000000)
-                fail("element " + std::to_string(id) + " has physical tag " +
-                     std::to_string(element.physical));
-              element.nodes.assign(numbers.begin() + first_node, numbers.end());
-              for (const long node : element.nodes)
-                if (mesh.nodes.count(node) == 0)
-                  fail("element " + std::to_string(id) + " refers to node " +
-                       std::to_string(node) +
-                       ", which the node section does not define");
-              if (element.type == 8 || element.type == 10)
-                mesh.quadratic = true;
-              if (element.type != 15)
-                mesh.elements.push_back(element);
-            }
-          if (ids.size() != declared)
-            fail("the element section declares " + std::to_string(declared) +
-                 " elements but lists " + std::to_string(ids.size()));
-        }
-
-        // No cell repeats a corner, is folded or flat; no edge is shared
-        // by more than two cells; every line joins two corners of a cell.
-        void
-        check_cells() const
-        {
-          std::map<std::pair<long, long>, unsigned int> edge_use;
-          bool any_cell = false, linear = false;
-          for (const auto &e : mesh.elements)
-            if (e.type == 3 || e.type == 10)
-              {
-                any_cell = true;
-                linear   = linear || e.type == 3;
-                const std::set<long> corners(e.nodes.begin(),
-                                             e.nodes.begin() + 4);
-                if (corners.size() != 4)
-                  fail("a quadrilateral repeats a corner node", e.line);
-                // gmsh numbers the corners around the cell: the turns at
-                // the four corners must all have one sign.
-                int sign = 0;
-                for (unsigned int i = 0; i < 4; ++i)
-                  {
-                    const Point<2> a     = mesh.nodes.at(e.nodes[i]);
-                    const Point<2> b     = mesh.nodes.at(e.nodes[(i + 1) % 4]);
-                    const Point<2> c     = mesh.nodes.at(e.nodes[(i + 2) % 4]);
-                    const double   cross = (b[0] - a[0]) * (c[1] - b[1]) -
-                                         (b[1] - a[1]) * (c[0] - b[0]);
-                    const double scale = (b - a).norm() * (c - b).norm();
-                    const int    s     = cross > 1e-12 * scale  ? 1 :
-                                         cross < -1e-12 * scale ? -1 :
-                                                                  0;
-                    if (s == 0 || (sign != 0 && s != sign))
-                      fail("a quadrilateral that is flat, folded or not "
-                           "convex",
-                           e.line);
-                    sign = s;
-                  }
-                for (unsigned int i = 0; i < 4; ++i)
-                  {
-                    const long a = e.nodes[i], b = e.nodes[(i + 1) % 4];
-                    if (++edge_use[{std::min(a, b), std::max(a, b)}] > 2)
-                      fail("an edge shared by more than two quadrilaterals",
-                           e.line);
-                  }
-              }
-          if (!any_cell)
-            fail("no quadrilaterals (the rings are meshed with gmsh types 3 "
-                 "or 10)");
-          if (linear && mesh.quadratic)
-            fail("linear and quadratic elements mixed");
-          for (const auto &e : mesh.elements)
-            if (e.type == 1 || e.type == 8)
-              {
-                const long a = e.nodes[0], b = e.nodes[1];
-                if (edge_use.count({std::min(a, b), std::max(a, b)}) == 0)
-                  fail("a line (physical tag " + std::to_string(e.physical) +
-                         ") that is not an edge of a quadrilateral",
-                       e.line);
-              }
-        }
+        geo,
+        msh1,
+        msh2_ascii,
+        msh2_binary,
+        msh41_ascii,
+        msh41_binary
       };
+
+      // What the file says it holds: gmsh must read exactly that.
+      struct Declared
+      {
+        Format      format   = Format::geo;
+        std::size_t nodes    = 0;
+        std::size_t elements = 0;
+      };
+
+      // A whole line that is one non-negative integer (or, with
+      // `leading`, starts with `leading` of them).
+      bool
+      read_integers(const std::string        &line,
+                    std::vector<std::size_t> &values,
+                    const unsigned int        leading,
+                    const bool                exact)
+      {
+        std::istringstream in(line);
+        values.clear();
+        std::string word;
+        while (in >> word)
+          {
+            if (word.empty() || word.size() > 19 ||
+                word.find_first_not_of("0123456789") != std::string::npos)
+              return false;
+            values.push_back(std::stoull(word));
+          }
+        return exact ? values.size() == leading : values.size() >= leading;
+      }
+
+      // ASCII: every section closed, one node and one element section, and
+      // their lines as many as their counts say (gmsh reads the count and
+      // skips what follows: a count lower than the lines would silently
+      // drop elements). Control characters are refused: not a text file.
+      Declared
+      check_ascii(const std::string &filename,
+                  const std::string &text,
+                  const Format       format)
+      {
+        std::vector<std::string> lines;
+        {
+          std::size_t start = 0;
+          while (start < text.size())
+            {
+              std::size_t end = text.find('\n', start);
+              if (end == std::string::npos)
+                end = text.size();
+              std::string line = text.substr(start, end - start);
+              while (!line.empty() &&
+                     (line.back() == '\r' || line.back() == ' ' ||
+                      line.back() == '\t'))
+                line.pop_back();
+              for (const char c : line)
+                if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') ||
+                    c == 0x7F)
+                  fail(filename,
+                       "line " + std::to_string(lines.size() + 1) +
+                         ": a control character (not an ASCII gmsh file?)");
+              lines.push_back(line);
+              start = end + 1;
+            }
+        }
+        const bool        format_1      = format == Format::msh1;
+        const bool        format_4      = format == Format::msh41_ascii;
+        const std::string nodes_name    = format_1 ? "$NOD" : "$Nodes";
+        const std::string elements_name = format_1 ? "$ELM" : "$Elements";
+        Declared          declared;
+        declared.format          = format;
+        bool       have_nodes    = false;
+        bool       have_elements = false;
+        const auto at_line = [&](const std::size_t i, const std::string &what) {
+          fail(filename, "line " + std::to_string(i + 1) + ": " + what);
+        };
+        for (std::size_t i = 0; i < lines.size(); ++i)
+          {
+            const std::string &line = lines[i];
+            if (line.empty())
+              continue;
+            if (line[0] != '$')
+              at_line(i,
+                      "unexpected text " + in_quotes(line) +
+                        " outside of a section");
+            if (line.compare(0, 4, "$End") == 0 ||
+                line.compare(0, 4, "$END") == 0)
+              at_line(i, in_quotes(line) + " closes no section");
+            const std::string end_marker =
+              format_1 && (line == "$NOD" || line == "$ELM") ?
+                "$END" + line.substr(1) :
+                "$End" + line.substr(1);
+            std::size_t end = i + 1;
+            while (end < lines.size() && lines[end] != end_marker)
+              ++end;
+            if (end == lines.size())
+              at_line(i,
+                      "section " + in_quotes(line) + " is not closed by " +
+                        in_quotes(end_marker));
+            if (line == "$NOD" || line == "$Nodes" || line == "$ELM" ||
+                line == "$Elements")
+              {
+                const bool nodes = line == "$NOD" || line == "$Nodes";
+                if (line != (nodes ? nodes_name : elements_name))
+                  at_line(i,
+                          "section " + in_quotes(line) + " in a file of " +
+                            (format_1 ? "format 1" : "format 2 or 4"));
+                if (nodes ? have_nodes : have_elements)
+                  at_line(i, "a second " + in_quotes(line) + " section");
+                if (!nodes && !have_nodes)
+                  at_line(i, "the element section comes before the nodes");
+                std::vector<std::string> body;
+                for (std::size_t j = i + 1; j < end; ++j)
+                  if (!lines[j].empty())
+                    {
+                      if (lines[j][0] == '$')
+                        at_line(j,
+                                in_quotes(lines[j]) + " inside section " +
+                                  in_quotes(line));
+                      body.push_back(lines[j]);
+                    }
+                const std::string        what = nodes ? "node" : "element";
+                std::vector<std::size_t> numbers;
+                if (body.empty() || !read_integers(body[0],
+                                                   numbers,
+                                                   format_4 ? 2 : 1,
+                                                   !format_4))
+                  at_line(i + 1,
+                          "the count of section " + in_quotes(line) + " is " +
+                            in_quotes(body.empty() ? "" : body[0]) + ", not " +
+                            (format_4 ? "'blocks " + what + "s ...'" :
+                                        "a number"));
+                const std::size_t count  = format_4 ? numbers[1] : numbers[0];
+                const std::size_t blocks = format_4 ? numbers[0] : 0;
+                // Format 4.1: a line per block, then per node a tag line and
+                // a coordinate line, per element one line.
+                const std::size_t listed = body.size() - 1;
+                if (count > text.size() || blocks > text.size())
+                  at_line(i + 1,
+                          "the " + what + " section declares " +
+                            std::to_string(count) + " " + what +
+                            "s: more than the file can hold");
+                const std::size_t expected =
+                  blocks + (format_4 && nodes ? 2 * count : count);
+                if (listed != expected)
+                  at_line(i,
+                          format_4 ?
+                            "the " + what + " section declares " +
+                              std::to_string(count) + " " + what + "s in " +
+                              std::to_string(blocks) + " blocks (" +
+                              std::to_string(expected) + " lines) but has " +
+                              std::to_string(listed) + " lines" :
+                            "the " + what + " section declares " +
+                              std::to_string(count) + " " + what +
+                              "s but lists " + std::to_string(listed));
+                (nodes ? declared.nodes : declared.elements) = count;
+                (nodes ? have_nodes : have_elements)         = true;
+              }
+            else if (line == "$MeshFormat" && i != 0)
+              at_line(i, "a second '$MeshFormat' section");
+            i = end;
+          }
+        if (!have_nodes)
+          fail(filename, "no node section (" + nodes_name + ")");
+        if (!have_elements)
+          fail(filename, "no element section (" + elements_name + ")");
+        return declared;
+      }
+
+      // Binary (formats 2.2 and 4.1): the counts at the head of the node
+      // and element sections, for the comparison with what gmsh reads.
+      Declared
+      check_binary(const std::string &filename,
+                   const std::string &text,
+                   const Format       format,
+                   const std::size_t  header_end)
+      {
+        Declared declared;
+        declared.format = format;
+        // gmsh writes the integer 1 after the format line, to tell the
+        // byte order.
+        int one = 0;
+        if (header_end + sizeof(int) > text.size())
+          fail(filename, "the binary file ends in its header");
+        std::memcpy(&one, text.data() + header_end, sizeof(int));
+        if (one != 1)
+          fail(filename,
+               "a binary file of another byte order, or damaged (convert it "
+               "to ASCII with gmsh)");
+        const auto count_of = [&](const std::string &name) -> std::size_t {
+          const std::size_t at = text.find("\n" + name + "\n", header_end);
+          if (at == std::string::npos)
+            fail(filename, "no " + name + " section");
+          const std::size_t data = at + name.size() + 2;
+          if (text.find("\n$End" + name.substr(1), data) == std::string::npos)
+            fail(filename, "section '" + name + "' is not closed");
+          std::size_t count = 0;
+          if (format == Format::msh2_binary)
+            {
+              // The count is a text line.
+              const std::size_t        eol = text.find('\n', data);
+              std::vector<std::size_t> values;
+              if (eol == std::string::npos ||
+                  !read_integers(
+                    text.substr(data, eol - data), values, 1, true))
+                fail(filename,
+                     "the count of section '" + name + "' is not a number");
+              count = values[0];
+            }
+          else
+            {
+              // numEntityBlocks, count, minTag, maxTag as size_t.
+              if (data + 4 * sizeof(std::size_t) > text.size())
+                fail(filename, "section '" + name + "' ends in its header");
+              std::memcpy(&count,
+                          text.data() + data + sizeof(std::size_t),
+                          sizeof(std::size_t));
+            }
+          if (count > text.size())
+            fail(filename,
+                 "section '" + name + "' declares " + std::to_string(count) +
+                   " items: more than the file can hold");
+          return count;
+        };
+        declared.nodes    = count_of("$Nodes");
+        declared.elements = count_of("$Elements");
+        return declared;
+      }
+
+      Declared
+      check_file(const std::string &filename, const std::string &text)
+      {
+        if (is_geo_file(filename))
+          {
+            if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+              fail(filename, "the gmsh script is empty");
+            return Declared();
+          }
+        // gmsh chooses its reader by the name first: a mesh must be named
+        // so that gmsh reads it as one.
+        if (!has_extension(filename, ".msh"))
+          fail(filename,
+               "its name must end in .msh (a gmsh mesh) or .geo (a gmsh "
+               "script)");
+        if (text.empty())
+          fail(filename, "the file is empty");
+        std::size_t       eol   = text.find('\n');
+        const std::string first = [&]() {
+          std::string line = text.substr(0, std::min(eol, std::size_t(80)));
+          while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
+            line.pop_back();
+          return line;
+        }();
+        if (first == "$NOD")
+          return check_ascii(filename, text, Format::msh1);
+        if (first != "$MeshFormat")
+          fail(filename,
+               "not a gmsh mesh: it starts with " + in_quotes(first) +
+                 " (a mesh file starts with '$MeshFormat', or '$NOD' for "
+                 "format 1; a gmsh script must be named *.geo)");
+        const std::size_t start = eol + 1;
+        eol                     = text.find('\n', start);
+        if (eol == std::string::npos)
+          fail(filename, "the file ends in '$MeshFormat'");
+        std::istringstream fields(text.substr(start, eol - start));
+        std::string        version, file_type, data_size;
+        fields >> version >> file_type >> data_size;
+        const bool v2 = version == "2" || version == "2.0" ||
+                        version == "2.1" || version == "2.2";
+        if (!v2 && version != "4.1")
+          fail(filename,
+               "gmsh format " + in_quotes(version) +
+                 " (this program reads formats 1, 2.2 and 4.1; gmsh writes "
+                 "them with Mesh.MshFileVersion or '-format msh22' / "
+                 "'msh41')");
+        if ((file_type != "0" && file_type != "1") || data_size != "8")
+          fail(filename,
+               "the format line " + in_quotes(text.substr(start, eol - start)) +
+                 " is not 'version 0|1 8'");
+        if (file_type == "0")
+          return check_ascii(filename,
+                             text,
+                             v2 ? Format::msh2_ascii : Format::msh41_ascii);
+        return check_binary(filename,
+                            text,
+                            v2 ? Format::msh2_binary : Format::msh41_binary,
+                            eol + 1);
+      }
+
+      // --------------------------------------------------------------
+      // 2. What gmsh read (gmsh_process.h), checked.
+      // --------------------------------------------------------------
+
+      // No cell repeats a corner, is folded or flat; no edge is shared by
+      // more than two cells; every line joins two corners of a cell.
+      void
+      check_cells(const GmshMesh &mesh)
+      {
+        const auto element_fail = [&](const GmshElement &e,
+                                      const std::string &what) {
+          fail(mesh.filename, "element " + std::to_string(e.tag) + ": " + what);
+        };
+        std::map<std::pair<std::size_t, std::size_t>, unsigned int> edge_use;
+        bool any_cell = false, linear = false;
+        for (const auto &e : mesh.elements)
+          if (e.type == 3 || e.type == 10 || e.type == 16)
+            {
+              any_cell = true;
+              linear   = linear || e.type == 3;
+              const std::set<std::size_t> corners(e.nodes.begin(),
+                                                  e.nodes.begin() + 4);
+              if (corners.size() != 4)
+                element_fail(e, "a quadrilateral that repeats a corner node");
+              // gmsh numbers the corners around the cell: the turns at the
+              // four corners must all have one sign.
+              int sign = 0;
+              for (unsigned int i = 0; i < 4; ++i)
+                {
+                  const Point<2> a     = mesh.nodes.at(e.nodes[i]);
+                  const Point<2> b     = mesh.nodes.at(e.nodes[(i + 1) % 4]);
+                  const Point<2> c     = mesh.nodes.at(e.nodes[(i + 2) % 4]);
+                  const double   cross = (b[0] - a[0]) * (c[1] - b[1]) -
+                                       (b[1] - a[1]) * (c[0] - b[0]);
+                  const double scale = (b - a).norm() * (c - b).norm();
+                  const int    s     = cross > 1e-12 * scale  ? 1 :
+                                       cross < -1e-12 * scale ? -1 :
+                                                                0;
+                  if (s == 0 || (sign != 0 && s != sign))
+                    element_fail(
+                      e, "a quadrilateral that is flat, folded or not convex");
+                  sign = s;
+                }
+              for (unsigned int i = 0; i < 4; ++i)
+                {
+                  const auto a = e.nodes[i], b = e.nodes[(i + 1) % 4];
+                  if (++edge_use[{std::min(a, b), std::max(a, b)}] > 2)
+                    element_fail(e,
+                                 "an edge shared by more than two "
+                                 "quadrilaterals");
+                }
+            }
+        if (!any_cell)
+          fail(mesh.filename,
+               "no quadrilaterals (the rings are meshed with gmsh types 3, 10 "
+               "or 16)");
+        if (linear && mesh.quadratic)
+          fail(mesh.filename, "linear and quadratic elements mixed");
+        for (const auto &e : mesh.elements)
+          if (e.type == 1 || e.type == 8)
+            {
+              const auto a = e.nodes[0], b = e.nodes[1];
+              if (edge_use.count({std::min(a, b), std::max(a, b)}) == 0)
+                element_fail(e,
+                             "a line (physical tag " +
+                               std::to_string(e.physical) +
+                               ") that is not an edge of a quadrilateral");
+            }
+      }
+
+      // What gmsh read, checked as the rings need it; the elements of
+      // each entity take the entity's physical tag.
+      GmshMesh
+      checked_mesh(const GmshModel   &model,
+                   const std::string &filename,
+                   const Declared    &declared)
+      {
+        const bool geo = declared.format == Format::geo;
+        GmshMesh   mesh;
+        mesh.filename           = filename;
+        const auto &node_tags   = model.node_tags;
+        const auto &coordinates = model.coordinates;
+        if (!geo && node_tags.size() != declared.nodes)
+          fail(filename,
+               "the file declares " + std::to_string(declared.nodes) +
+                 " nodes but gmsh read " + std::to_string(node_tags.size()) +
+                 " (a node number given twice?)");
+        double largest = 0;
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          {
+            const double x = coordinates[3 * i], y = coordinates[3 * i + 1],
+                         z = coordinates[3 * i + 2];
+            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) ||
+                std::abs(x) > 1e100 || std::abs(y) > 1e100 ||
+                std::abs(z) > 1e100)
+              fail(filename,
+                   "node " + std::to_string(node_tags[i]) +
+                     " has a coordinate that is not a finite number");
+            if (!mesh.nodes.emplace(node_tags[i], Point<2>(x, y)).second)
+              fail(filename,
+                   "node " + std::to_string(node_tags[i]) +
+                     " is defined twice");
+            largest = std::max({largest, std::abs(x), std::abs(y)});
+          }
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          if (std::abs(coordinates[3 * i + 2]) > 1e-10 * largest)
+            fail(filename,
+                 "node " + std::to_string(node_tags[i]) +
+                   " has z = " + std::to_string(coordinates[3 * i + 2]) +
+                   ": the rings are a plane mesh");
+
+        // A mesh file declared its elements: gmsh must have read them all.
+        // A script keeps only the entities in physical groups (if it has
+        // any), as gmsh does when it saves a mesh: the curves between the
+        // patches of a ring and the points of its geometry are not part of
+        // the mesh.
+        std::size_t n_elements   = 0;
+        bool        any_physical = false;
+        for (const auto &entity : model.entities)
+          {
+            any_physical = any_physical || !entity.physicals.empty();
+            for (const auto &tags : entity.element_tags)
+              n_elements += tags.size();
+          }
+        if (!geo && n_elements != declared.elements)
+          fail(filename,
+               "the file declares " + std::to_string(declared.elements) +
+                 " elements but gmsh read " + std::to_string(n_elements));
+
+        std::set<std::size_t> element_tags;
+        for (const auto &entity : model.entities)
+          {
+            // gmsh files a format 1 or 2.2 element's physical tag under its
+            // elementary entity: two tags on one entity cannot be told
+            // apart.
+            if (entity.physicals.size() > 1 && entity.dim > 0)
+              fail(filename,
+                   "the elements of gmsh entity " + std::to_string(entity.tag) +
+                     " (dimension " + std::to_string(entity.dim) +
+                     ") carry physical tags " +
+                     std::to_string(entity.physicals[0]) + " and " +
+                     std::to_string(entity.physicals[1]) +
+                     ": each entity needs one");
+            if (geo && any_physical && entity.physicals.empty())
+              continue;
+            const long physical =
+              entity.physicals.empty() ? 0 : entity.physicals[0];
+            // deal.II keeps the largest ids for itself.
+            if (physical < 0 || physical > 1000000000)
+              fail(filename,
+                   "gmsh entity " + std::to_string(entity.tag) +
+                     " (dimension " + std::to_string(entity.dim) +
+                     ") has physical tag " + std::to_string(physical) +
+                     " (the rings' tags are between 0 and 1e9)");
+            for (unsigned int t = 0; t < entity.types.size(); ++t)
+              {
+                const int          type    = entity.types[t];
+                const auto        &tags    = entity.element_tags[t];
+                const auto        &nodes   = entity.element_nodes[t];
+                const unsigned int n_nodes = nodes_of_type(type);
+                if (n_nodes == 0)
+                  fail(filename,
+                       "element " + std::to_string(tags.empty() ? 0 : tags[0]) +
+                         " is a " + name_of_type(type) + " (gmsh type " +
+                         std::to_string(type) +
+                         "): the rings must be meshed with quadrilaterals "
+                         "(gmsh types 3, 10 and 16) and lines (1 and 8)");
+                if (nodes.size() != n_nodes * tags.size())
+                  fail(filename, "the answer of gmsh's reader is inconsistent");
+                for (std::size_t i = 0; i < tags.size(); ++i)
+                  {
+                    if (!element_tags.insert(tags[i]).second)
+                      fail(filename,
+                           "element " + std::to_string(tags[i]) +
+                             " is defined twice");
+                    if (type == 15)
+                      continue; // points: not part of the rings
+                    GmshElement element;
+                    element.type     = type;
+                    element.physical = physical;
+                    element.tag      = tags[i];
+                    element.nodes.assign(nodes.begin() + i * n_nodes,
+                                         nodes.begin() + (i + 1) * n_nodes);
+                    for (const std::size_t node : element.nodes)
+                      if (mesh.nodes.count(node) == 0)
+                        fail(filename,
+                             "element " + std::to_string(element.tag) +
+                               " refers to node " + std::to_string(node) +
+                               ", which the file does not define");
+                    if (type == 8 || type == 10 || type == 16)
+                      mesh.quadratic = true;
+                    mesh.elements.push_back(std::move(element));
+                  }
+              }
+          }
+        // The order of the file (gmsh gives them by entity and type).
+        std::sort(mesh.elements.begin(),
+                  mesh.elements.end(),
+                  [](const GmshElement &a, const GmshElement &b) {
+                    return a.tag < b.tag;
+                  });
+        check_cells(mesh);
+        return mesh;
+      }
     } // namespace
 
-    GmshMesh
-    read_gmsh_file(const std::string &filename)
+    bool
+    is_geo_file(const std::string &filename)
     {
-      GmshMesh mesh;
-      mesh.filename = filename;
-      mesh.text = read_text_file(filename, "mesh file", max_mesh_file_bytes);
-      Parser(mesh).parse();
-      return mesh;
+      return has_extension(filename, ".geo");
+    }
+
+    GmshMesh
+    read_gmsh_file(const std::string &filename,
+                   const GeoNumbers  &geo_numbers,
+                   const unsigned int element_order)
+    {
+      const std::string text =
+        read_text_file(filename, "mesh file", max_mesh_file_bytes);
+      const Declared declared = check_file(filename, text);
+      const bool     geo      = declared.format == Format::geo;
+      // A legal mesh takes gmsh well under a second per megabyte; a script
+      // may mesh for as long as it asks (it is the user's program).
+      const double time_limit =
+        geo ? 0 : 60 + static_cast<double>(text.size()) / (1 << 20);
+      return checked_mesh(
+        run_gmsh(filename, geo, geo_numbers, element_order, time_limit),
+        filename,
+        declared);
     }
   } // namespace Geometry
 } // namespace RingContact

@@ -1,3 +1,4 @@
+#include <ring_contact/gmsh_file.h>
 #include <ring_contact/parameter_file.h>
 #include <ring_contact/parameters.h>
 #include <ring_contact/utilities.h>
@@ -8,6 +9,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -71,6 +73,68 @@ namespace RingContact
                 "', which is not a usable number (a floating-point number "
                 "between 1e-300 and 1e300 in magnitude, or 0)");
       return value;
+    }
+
+    // A gmsh script is text written by hand: a few kilobytes.
+    constexpr std::size_t max_geo_file_bytes = std::size_t(64) << 20;
+
+    // 'name = value, name = value' of the entry 'Geo parameters'.
+    std::vector<std::pair<std::string, double>>
+    parse_geo_numbers(const std::string &text)
+    {
+      std::vector<std::pair<std::string, double>> numbers;
+      if (Utilities::trim(text).empty())
+        return numbers;
+      const auto fail = [](const std::string &what) {
+        require(false, "Mesh", "Geo parameters", what);
+      };
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const std::size_t equal = item.find('=');
+          if (equal == std::string::npos)
+            fail("holds '" + printable(item) +
+                 "', not 'name = value' (e.g. 'Ne = 80, Nr1 = 6')");
+          const std::string name  = Utilities::trim(item.substr(0, equal));
+          const std::string value = Utilities::trim(item.substr(equal + 1));
+          bool              identifier =
+            !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
+          for (const char c : name)
+            identifier =
+              identifier &&
+              (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+          if (!identifier)
+            fail("holds the name '" + printable(name) +
+                 "', which is not a gmsh variable name (letters, digits and "
+                 "_, not starting with a digit)");
+          char        *end    = nullptr;
+          const double number = std::strtod(value.c_str(), &end);
+          if (value.empty() || *end != '\0' || !std::isfinite(number) ||
+              (number != 0 &&
+               (std::abs(number) < 1e-300 || std::abs(number) > 1e300)))
+            fail("gives '" + name + "' the value '" + printable(value) +
+                 "', which is not a usable number");
+          for (const auto &earlier : numbers)
+            if (earlier.first == name)
+              fail("gives '" + name + "' twice");
+          numbers.emplace_back(name, number);
+        }
+      return numbers;
+    }
+
+    // Whether `name` occurs in `text` as a whole word.
+    bool
+    occurs_as_word(const std::string &text, const std::string &name)
+    {
+      const auto word_character = [](const char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      };
+      for (std::size_t at = text.find(name); at != std::string::npos;
+           at             = text.find(name, at + 1))
+        if ((at == 0 || !word_character(text[at - 1])) &&
+            (at + name.size() == text.size() ||
+             !word_character(text[at + name.size()])))
+          return true;
+      return false;
     }
 
     // The value of an integer entry, in [lowest, highest].
@@ -226,10 +290,30 @@ namespace RingContact
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
-                        "gmsh mesh (format 1 or 2.2, linear quadrilaterals) "
-                        "with the physical tags of SSNP152 (100, 101, 200, "
-                        "300, 400, 500). A relative path is taken from the "
-                        "folder of the .prm file.");
+                        "gmsh mesh with the physical tags of SSNP152 (100, "
+                        "101, 200, 300, 400, 500), read by gmsh's own "
+                        "library: a .msh file (formats 1, 2.2 and 4.1, "
+                        "ASCII or binary; quadrilaterals of 4, 8 or 9 nodes "
+                        "and lines of 2 or 3 nodes), or a gmsh script "
+                        "(.geo) that gmsh meshes in 2d when the program "
+                        "reads it, with elements of order 1 if both rings "
+                        "have displacement degree 1 and 2 otherwise (see "
+                        "'Geo parameters'; a script is a program: give only "
+                        "trusted ones). The cells are the vertices only: "
+                        "the circles come from the polar geometry, and "
+                        "quadratic nodes on the circles are checked to lie "
+                        "on them. A relative path is taken from the folder "
+                        "of the .prm file.");
+      prm.declare_entry("Geo parameters",
+                        "",
+                        Patterns::Anything(),
+                        "Numbers handed to a .geo 'Mesh file', as gmsh's "
+                        "'-setnumber name value' does: comma-separated "
+                        "'name = value' pairs, e.g. 'Ne = 80, Nr1 = 6'. "
+                        "Each name must be set in the script with "
+                        "DefineConstant[] (a plain assignment in the script "
+                        "overrides the number) and must occur in it. Empty: "
+                        "the script's own values. Only with a .geo file.");
       prm.declare_entry("Elements around",
                         "40",
                         Patterns::Integer(3),
@@ -326,6 +410,27 @@ namespace RingContact
                   "Mesh file",
                   "names something that is not a regular file: " +
                     printable(mesh_file));
+        }
+      geo_numbers = parse_geo_numbers(prm.get("Geo parameters"));
+      require(geo_numbers.empty() || (source == MeshSource::gmsh_file &&
+                                      Geometry::is_geo_file(mesh_file)),
+              "Mesh",
+              "Geo parameters",
+              "needs a gmsh script as mesh ('Mesh source' = gmsh file and "
+              "a 'Mesh file' ending in .geo)");
+      if (!geo_numbers.empty())
+        {
+          // gmsh 4.8's API cannot list a script's variables, and gmsh
+          // ignores a number the script does not use: at least catch a
+          // misspelt name.
+          const std::string script =
+            read_text_file(mesh_file, "mesh file", max_geo_file_bytes);
+          for (const auto &[name, value] : geo_numbers)
+            require(occurs_as_word(script, name),
+                    "Mesh",
+                    "Geo parameters",
+                    "names '" + name + "', which does not occur in " +
+                      printable(mesh_file, 200));
         }
       elements_around = get_count(prm, "Mesh", "Elements around", 3, 10000000);
       radial_elements_outer =

@@ -169,6 +169,14 @@ main()
                "subsection Mesh\n set Mesh source = gmsh file\n"
                " set Mesh file = not_a_mesh.prm\nend\n",
                "cannot read mesh file");
+  // Named as a mesh, but text that gmsh would run as a script.
+  std::filesystem::copy_file("not_a_mesh.prm",
+                             "not_a_mesh.msh",
+                             std::filesystem::copy_options::overwrite_existing);
+  expect_error("not_a_mesh_inside",
+               "subsection Mesh\n set Mesh source = gmsh file\n"
+               " set Mesh file = not_a_mesh.msh\nend\n",
+               "not a gmsh mesh: it starts with 'subsection Mesh'");
   expect_error("no_prm_file", "include does_not_exist.prm\n", "");
 
   // Parameter files that used to crash, hang or be misread.
@@ -224,8 +232,10 @@ main()
 
   // Meshes: a triangle; the original mesh with an element count 19 lower
   // than the elements it lists (deal.II's reader dropped 19 of the 40
-  // segments of r = R1 and the checks still passed); an element with too
-  // few nodes for its type (read past the end of its array).
+  // segments of r = R1 and the checks still passed; gmsh's reader does the
+  // same, so the line count is checked before gmsh reads); an element with
+  // too few nodes for its type (deal.II's reader read past the end of its
+  // array; gmsh's refuses the file, without saying more).
   {
     std::ofstream("triangle.msh")
       << "$NOD\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$ENDNOD\n$ELM\n1\n"
@@ -266,7 +276,22 @@ main()
                "declares 381 elements but lists 400");
   expect_error("too_few_nodes",
                gmsh + " set Mesh file = few_nodes.msh\nend\n",
-               "declares 3 nodes");
+               "gmsh: Error loading 'few_nodes.msh'");
+
+  // A gmsh script: its own error for a number it refuses, and a number
+  // whose name it does not use.
+  std::filesystem::copy_file(source_dir + "/meshes/ssnp152.geo",
+                             "rings.geo",
+                             std::filesystem::copy_options::overwrite_existing);
+  const std::string geo =
+    gmsh + " set Mesh file = rings.geo\n set Geo parameters = ";
+  expect_error("geo_script_error",
+               geo + "Ne = 10\nend\n",
+               "Ne = 10: the number of elements around must be a multiple "
+               "of 4");
+  expect_error("geo_unknown_number",
+               geo + "Ne = 40, N_radial = 6\nend\n",
+               "names 'N_radial', which does not occur in");
 
   // Newton that cannot converge (one iteration allowed, an unreachable
   // tolerance): the step is cut and retried, then the run stops with a

@@ -11,14 +11,17 @@
 // The corpus: mutated values of every kind of entry (huge, tiny, negative,
 // NaN, inf, empty, 1e-320, garbage bytes, very long), broken syntax, include
 // loops, deep and missing includes, directories and special files where
-// files are expected, and the three meshes of the repository (formats 1 and
+// files are expected, the three meshes of the repository (formats 1 and
 // 2.2, linear and quadratic) truncated at random points, with changed
-// counts, element types, node counts, tags and random bytes.
+// counts, element types, node counts, tags and random bytes, the linear one
+// written again by gmsh in formats 4.1 (ASCII and binary) and 2.2 (binary),
+// cut and overwritten, and numbers handed to a .geo script.
 #include <ring_contact/config.h>
 
 #include "tests.h"
 
 #include <fcntl.h>
+#include <gmsh.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -571,6 +574,93 @@ namespace
       }
   }
 
+  // Write the original's linear mesh again with gmsh itself.
+  std::string
+  written_by_gmsh(const double version, const bool binary)
+  {
+    const std::string file = "fuzz/written-" + std::to_string(version) +
+                             (binary ? "-binary" : "") + ".msh";
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::open(source_dir + "/meshes/ssnp152a.msh");
+    gmsh::option::setNumber("Mesh.MshFileVersion", version);
+    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
+    gmsh::write(file);
+    gmsh::finalize();
+    return read_file(file);
+  }
+
+  // The formats gmsh writes and the mutations above do not cover: ASCII
+  // 4.1, binary 4.1 and 2.2, cut and overwritten at random; element nodes
+  // that gmsh 4.8's ASCII 4.1 reader does not check (-1 crashes it); and
+  // the numbers handed to a .geo script.
+  void
+  gmsh_written_mutations()
+  {
+    unsigned int n    = 0;
+    const auto   name = [&]() { return "written_" + std::to_string(n++); };
+    for (const auto &[version, binary] : {std::make_pair(4.1, false),
+                                          std::make_pair(4.1, true),
+                                          std::make_pair(2.2, true)})
+      {
+        const std::string text = written_by_gmsh(version, binary);
+        add_mesh_case(name(), text, "1");
+        for (unsigned int i = 0; i < 6; ++i)
+          add_mesh_case(name(), text.substr(0, random_below(text.size())), "1");
+        for (unsigned int i = 0; i < 5; ++i)
+          {
+            std::string corrupted = text;
+            for (unsigned int j = 0; j < 1 + i; ++j)
+              corrupted[random_below(corrupted.size())] =
+                static_cast<char>(random_below(256));
+            add_mesh_case(name(), corrupted, "1");
+          }
+        if (binary)
+          continue;
+        // A quadrilateral "tag n1 n2 n3 n4" of the element section.
+        const auto         lines = lines_of(text);
+        const unsigned int elements =
+          std::find(lines.begin(), lines.end(), "$Elements") - lines.begin();
+        std::vector<unsigned int> quads;
+        for (unsigned int i = elements + 2; i < lines.size(); ++i)
+          {
+            std::istringstream       in(lines[i]);
+            std::vector<std::string> f;
+            for (std::string w; in >> w;)
+              f.push_back(w);
+            if (f.size() == 5)
+              quads.push_back(i);
+          }
+        for (const std::string node : {"-1", "0", "987654"})
+          {
+            auto               mutated = lines;
+            const unsigned int at      = quads[random_below(quads.size())];
+            const std::size_t  space   = mutated[at].find(' ');
+            mutated[at] = mutated[at].substr(0, space) + " " + node +
+                          mutated[at].substr(mutated[at].find(' ', space + 1));
+            add_mesh_case(name(), join(mutated), "1");
+          }
+      }
+    const std::string geo = "subsection Mesh\n set Mesh source = gmsh file\n"
+                            " set Mesh file = " +
+                            source_dir + "/meshes/ssnp152.geo\n";
+    for (const std::string numbers : {"Ne = 12, Nr1 = 1, Nr2 = 1",
+                                      "Ne = 10",
+                                      "Ne = abc",
+                                      "Ne = 1e-320",
+                                      "Ne = 12, Ne = 16",
+                                      "1x = 3",
+                                      "Nx = 3",
+                                      "Ne 12",
+                                      ","})
+      add_prm(name(),
+              quiet_base + geo + " set Geo parameters = " + numbers +
+                "\nend\n");
+    add_prm(name(),
+            quiet_base + "subsection Mesh\n set Geo parameters = Ne = 12\n"
+                         "end\n");
+  }
+
   void
   size_and_hang_mutations()
   {
@@ -621,6 +711,7 @@ main()
   include_mutations();
   file_mutations();
   mesh_mutations();
+  gmsh_written_mutations();
   size_and_hang_mutations();
 
   std::map<Outcome, unsigned int> counts;

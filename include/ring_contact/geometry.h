@@ -27,11 +27,16 @@ namespace RingContact
     void
     make_blocks(Triangulation<2> &triangulation, const MeshParameters &mesh);
 
-    /// Read a gmsh mesh (format 1 or 2.2) with the original's physical tags,
-    /// after checking the whole file (see gmsh_file.h); returns what the
-    /// file holds, for the checks of the boundary tags.
+    /// Read a gmsh mesh (.msh formats 1, 2.2, 4.1) or mesh a gmsh script
+    /// (.geo, with `geo_numbers` and elements of `element_order`) through
+    /// gmsh's library, checked (see gmsh_file.h), with the original's
+    /// physical tags as material and boundary ids; returns what gmsh read,
+    /// for the checks of the boundary tags.
     GmshMesh
-    read_gmsh(Triangulation<2> &triangulation, const std::string &filename);
+    read_gmsh(Triangulation<2>  &triangulation,
+              const std::string &filename,
+              const GeoNumbers  &geo_numbers   = {},
+              unsigned int       element_order = 1);
 
     /// Throw a one-line error, before anything large is allocated, if a mesh
     /// of `n_coarse_cells` cells refined as the parameters say would need

@@ -9,6 +9,7 @@
 #include <deal.II/base/point.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RingContact
@@ -19,7 +20,7 @@ namespace RingContact
   enum class MeshSource
   {
     generated, ///< built in code for any number of elements around
-    gmsh_file, ///< read from a gmsh file (format 1 or 2.2)
+    gmsh_file, ///< read from a gmsh mesh (.msh) or made by a gmsh script (.geo)
     patch_test ///< the contact patch test: two blocks pressed together
   };
 
@@ -135,6 +136,8 @@ namespace RingContact
     /// the upper (slave) block.
     unsigned int patch_elements_lower;
     unsigned int patch_elements_upper;
+    /// Numbers handed to a .geo mesh file (gmsh's -setnumber), in order.
+    std::vector<std::pair<std::string, double>> geo_numbers;
 
     static void
     declare_parameters(ParameterHandler &prm);

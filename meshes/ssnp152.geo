@@ -1,13 +1,25 @@
 // SSNP152: two concentric rings with duplicated interface nodes.
 //
-//   gmsh -2 -format msh22 rings.geo -setnumber Ne 40 -o rings-40.msh
+// The program meshes it itself when it is the 'Mesh file' (gmsh's library,
+// in 2d, with the element order of the displacement degrees); the numbers
+// below can be set from the .prm:
 //
-// Parameters (override with -setnumber NAME VALUE):
-//   Ne     elements around every circle (a multiple of 4), first vertex at 0
-//   Nr1    elements across the outer ring (R2 <= r <= R1)
-//   Nr2    elements across the inner ring (R3 <= r <= R2)
-//   order  element order: 1 (4-node quads) or 2 (9-node quads, mid-side
-//          nodes on the circles)
+//   set Mesh file      = ssnp152.geo
+//   set Geo parameters = Ne = 80, Nr1 = 6, Nr2 = 6
+//
+// or on gmsh's command line (-setnumber NAME VALUE), e.g. the seed mesh
+//   gmsh -2 -format msh22 ssnp152.geo -setnumber Ne 40 -o rings-40.msh
+//
+// Parameters:
+//   Ne          elements around every circle (a multiple of 4), first
+//               vertex at angle 0
+//   Nr1, Nr2    elements across the outer (R2 <= r <= R1) and the inner
+//               ring (R3 <= r <= R2)
+//   R1, R2, R3  the radii [m] (the .prm's must be the same: the program
+//               checks the boundaries against them)
+//   order       element order for gmsh's command line: 1 (4-node quads) or
+//               2 (9-node quads, mid-side nodes on the circles); the program
+//               sets the order itself
 // Physical tags, as the original Code_Aster test: 100 outer ring (C1),
 // 101 inner ring (C2), 200 r = R1 (S1R1), 300 outer ring at r = R2 (S1R2),
 // 400 inner ring at r = R2 (S2R2), 500 r = R3 (S2R3).

@@ -1,0 +1,409 @@
+#include <ring_contact/gmsh_process.h>
+#include <ring_contact/utilities.h>
+
+#include <fcntl.h>
+#include <gmsh.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <stdexcept>
+
+namespace RingContact
+{
+  namespace Geometry
+  {
+    namespace
+    {
+      [[noreturn]] void
+      fail(const std::string &filename, const std::string &what)
+      {
+        throw std::runtime_error("cannot read mesh file '" +
+                                 printable(filename, 200) + "': " + what);
+      }
+
+      // What the child sends: a byte of status, then either gmsh's error
+      // message or the model.
+      class Writer
+      {
+      public:
+        explicit Writer(const int fd)
+            : fd(fd)
+        {}
+
+        template <typename T>
+        void
+        value(const T &v)
+        {
+          bytes(&v, sizeof(T));
+        }
+
+        template <typename T>
+        void
+        vector(const std::vector<T> &v)
+        {
+          value<std::uint64_t>(v.size());
+          bytes(v.data(), v.size() * sizeof(T));
+        }
+
+        void
+        string(const std::string &s)
+        {
+          value<std::uint64_t>(s.size());
+          bytes(s.data(), s.size());
+        }
+
+        void
+        bytes(const void *data, std::size_t n)
+        {
+          const char *p = static_cast<const char *>(data);
+          while (n > 0)
+            {
+              const ssize_t written = ::write(fd, p, n);
+              if (written < 0 && errno == EINTR)
+                continue;
+              if (written <= 0)
+                _exit(3);
+              p += written;
+              n -= static_cast<std::size_t>(written);
+            }
+        }
+
+      private:
+        const int fd;
+      };
+
+      class Reader
+      {
+      public:
+        Reader(const std::string &data, const std::string &filename)
+            : data(data)
+            , filename(filename)
+        {}
+
+        template <typename T>
+        T
+        value()
+        {
+          T v;
+          bytes(&v, sizeof(T));
+          return v;
+        }
+
+        template <typename T>
+        std::vector<T>
+        vector()
+        {
+          const auto n = value<std::uint64_t>();
+          if (n > (data.size() - at) / sizeof(T))
+            incomplete();
+          std::vector<T> v(n);
+          bytes(v.data(), n * sizeof(T));
+          return v;
+        }
+
+        std::string
+        string()
+        {
+          const auto n = value<std::uint64_t>();
+          if (n > data.size() - at)
+            incomplete();
+          std::string s = data.substr(at, n);
+          at += n;
+          return s;
+        }
+
+        bool
+        at_end() const
+        {
+          return at == data.size();
+        }
+
+      private:
+        const std::string &data;
+        const std::string &filename;
+        std::size_t        at = 0;
+
+        void
+        bytes(void *to, const std::size_t n)
+        {
+          if (n > data.size() - at)
+            incomplete();
+          if (n > 0)
+            std::memcpy(to, data.data() + at, n);
+          at += n;
+        }
+
+        [[noreturn]] void
+        incomplete() const
+        {
+          fail(filename, "the answer of gmsh's reader is incomplete");
+        }
+      };
+
+      constexpr std::uint32_t end_of_answer = 0x52494e47;
+
+      // The child: gmsh reads (or meshes) the file and the model is
+      // written to `fd`. Never returns.
+      [[noreturn]] void
+      gmsh_child(const int          fd,
+                 const std::string &filename,
+                 const bool         geo,
+                 const GeoNumbers  &geo_numbers,
+                 const unsigned int element_order)
+      {
+        Writer out(fd);
+        try
+          {
+            std::vector<std::string> arguments = {"gmsh"};
+            for (const auto &[name, value] : geo_numbers)
+              {
+                char number[64];
+                std::snprintf(number, sizeof(number), "%.17g", value);
+                arguments.insert(arguments.end(), {"-setnumber", name, number});
+              }
+            std::vector<char *> argv;
+            for (auto &argument : arguments)
+              argv.push_back(argument.data());
+            argv.push_back(nullptr);
+            gmsh::initialize(static_cast<int>(arguments.size()),
+                             argv.data(),
+                             /*readConfigFiles=*/false);
+            gmsh::option::setNumber("General.Terminal", 0);
+            gmsh::option::setNumber("General.AbortOnError", 3); // throw
+            gmsh::option::setNumber("General.NumThreads", 1);
+            gmsh::open(filename);
+            if (geo)
+              {
+                gmsh::model::mesh::generate(2);
+                gmsh::model::mesh::setOrder(static_cast<int>(element_order));
+              }
+
+            std::vector<std::size_t> node_tags;
+            std::vector<double>      coordinates, parametric;
+            gmsh::model::mesh::getNodes(
+              node_tags, coordinates, parametric, -1, -1, false, false);
+            gmsh::vectorpair entities;
+            gmsh::model::getEntities(entities);
+
+            out.value<std::uint8_t>(0);
+            out.vector(node_tags);
+            out.vector(coordinates);
+            out.value<std::uint64_t>(entities.size());
+            for (const auto &[dim, tag] : entities)
+              {
+                std::vector<int> physicals;
+                gmsh::model::getPhysicalGroupsForEntity(dim, tag, physicals);
+                std::vector<int>                      types;
+                std::vector<std::vector<std::size_t>> element_tags, nodes;
+                gmsh::model::mesh::getElements(
+                  types, element_tags, nodes, dim, tag);
+                out.value<std::int32_t>(dim);
+                out.value<std::int32_t>(tag);
+                out.vector(physicals);
+                out.vector(types);
+                for (unsigned int t = 0; t < types.size(); ++t)
+                  {
+                    out.vector(element_tags[t]);
+                    out.vector(nodes[t]);
+                  }
+              }
+            out.value(end_of_answer);
+            _exit(0);
+          }
+        catch (const std::string &message) // what gmsh 4.8 throws
+          {
+            out.value<std::uint8_t>(1);
+            out.string(message);
+          }
+        catch (const std::bad_alloc &)
+          {
+            out.value<std::uint8_t>(1);
+            out.string("out of memory");
+          }
+        catch (const std::exception &e)
+          {
+            out.value<std::uint8_t>(1);
+            out.string(e.what());
+          }
+        catch (...)
+          {
+            out.value<std::uint8_t>(1);
+            out.string("an unknown exception");
+          }
+        out.value(end_of_answer);
+        _exit(0);
+      }
+
+      // Run gmsh_child() in a child process and return its answer. A
+      // crash, an exit or a hang of gmsh becomes a one-line error.
+      std::string
+      fork_gmsh(const std::string &filename,
+                const bool         geo,
+                const GeoNumbers  &geo_numbers,
+                const unsigned int element_order,
+                const double       time_limit_seconds)
+      {
+        int ends[2];
+        if (pipe2(ends, O_CLOEXEC) != 0)
+          fail(filename,
+               "cannot make a pipe for gmsh: " + std::string(strerror(errno)));
+        // Nothing buffered may be written twice, by the child too.
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        const pid_t parent = getpid();
+        const pid_t pid    = fork();
+        if (pid < 0)
+          {
+            const int error = errno;
+            close(ends[0]);
+            close(ends[1]);
+            fail(filename,
+                 "cannot start a process for gmsh: " +
+                   std::string(strerror(error)));
+          }
+        if (pid == 0)
+          {
+            // Quiet (gmsh's messages go nowhere, the error comes back
+            // through the pipe), no file of the program held open (the
+            // results folder's lock), killed with the program, deaf to the
+            // Ctrl-C meant for the program (which stops between steps),
+            // and bounded in memory.
+            const int quiet = open("/dev/null", O_RDWR);
+            if (quiet >= 0)
+              {
+                dup2(quiet, 0);
+                dup2(quiet, 1);
+                dup2(quiet, 2);
+              }
+            if (dup2(ends[1], 3) != 3)
+              _exit(4);
+            closefrom(4);
+            prctl(PR_SET_PDEATHSIG, SIGKILL);
+            if (getppid() != parent)
+              _exit(5);
+            signal(SIGINT, SIG_IGN);
+            signal(SIGTERM, SIG_IGN);
+            signal(SIGPIPE, SIG_DFL);
+#ifndef __SANITIZE_ADDRESS__
+            // (Not under AddressSanitizer: its shadow memory already holds
+            // terabytes of address space.)
+            const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                                  sysconf(_SC_PAGE_SIZE);
+            rlimit limit;
+            if (memory > 0 && getrlimit(RLIMIT_AS, &limit) == 0)
+              {
+                const rlim_t cap = static_cast<rlim_t>(memory);
+                if (limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur > cap)
+                  {
+                    limit.rlim_cur = cap;
+                    setrlimit(RLIMIT_AS, &limit);
+                  }
+              }
+#endif
+            gmsh_child(3, filename, geo, geo_numbers, element_order);
+          }
+        close(ends[1]);
+
+        std::string answer;
+        const auto  start     = std::chrono::steady_clock::now();
+        bool        timed_out = false;
+        char        buffer[1 << 16];
+        while (true)
+          {
+            const double elapsed = std::chrono::duration<double>(
+                                     std::chrono::steady_clock::now() - start)
+                                     .count();
+            if (time_limit_seconds > 0 && elapsed > time_limit_seconds)
+              {
+                timed_out = true;
+                break;
+              }
+            pollfd    wait_for{ends[0], POLLIN, 0};
+            const int ready = poll(&wait_for, 1, 200);
+            if (ready < 0 && errno != EINTR)
+              break;
+            if (ready <= 0)
+              continue;
+            const ssize_t n = read(ends[0], buffer, sizeof(buffer));
+            if (n < 0 && (errno == EINTR || errno == EAGAIN))
+              continue;
+            if (n <= 0)
+              break;
+            answer.append(buffer, static_cast<std::size_t>(n));
+          }
+        close(ends[0]);
+        if (timed_out)
+          kill(pid, SIGKILL);
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+          ;
+        if (timed_out)
+          fail(filename,
+               "gmsh did not finish reading it within " +
+                 std::to_string(static_cast<int>(time_limit_seconds)) + " s");
+        if (WIFSIGNALED(status))
+          fail(filename,
+               "gmsh's reader crashed on it (signal " +
+                 std::to_string(WTERMSIG(status)) + ", " +
+                 strsignal(WTERMSIG(status)) +
+                 "): the file is damaged or not a mesh gmsh can read");
+        if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+          fail(filename,
+               "gmsh's reader stopped (exit code " +
+                 std::to_string(WEXITSTATUS(status)) + ") on it");
+        return answer;
+      }
+
+    } // namespace
+
+    GmshModel
+    run_gmsh(const std::string &filename,
+             const bool         mesh_script,
+             const GeoNumbers  &geo_numbers,
+             const unsigned int element_order,
+             const double       time_limit_seconds)
+    {
+      const std::string answer = fork_gmsh(
+        filename, mesh_script, geo_numbers, element_order, time_limit_seconds);
+      Reader in(answer, filename);
+      if (answer.empty())
+        fail(filename, "gmsh's reader gave no answer");
+      if (in.value<std::uint8_t>() != 0)
+        // gmsh's message (it often repeats the file name), on one line.
+        fail(filename, "gmsh: " + printable(in.string(), 300));
+      GmshModel model;
+      model.node_tags       = in.vector<std::size_t>();
+      model.coordinates     = in.vector<double>();
+      const auto n_entities = in.value<std::uint64_t>();
+      for (std::uint64_t e = 0; e < n_entities; ++e)
+        {
+          GmshModel::Entity entity;
+          entity.dim       = in.value<std::int32_t>();
+          entity.tag       = in.value<std::int32_t>();
+          entity.physicals = in.vector<int>();
+          entity.types     = in.vector<int>();
+          for (unsigned int t = 0; t < entity.types.size(); ++t)
+            {
+              entity.element_tags.push_back(in.vector<std::size_t>());
+              entity.element_nodes.push_back(in.vector<std::size_t>());
+            }
+          model.entities.push_back(std::move(entity));
+        }
+      if (in.value<std::uint32_t>() != end_of_answer || !in.at_end() ||
+          model.coordinates.size() != 3 * model.node_tags.size())
+        fail(filename, "the answer of gmsh's reader is inconsistent");
+      return model;
+    }
+  } // namespace Geometry
+} // namespace RingContact
