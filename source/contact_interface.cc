@@ -197,7 +197,9 @@ namespace RingContact
                 if (pairing == Pairing::hold || master.smooths_normals() ||
                     (p.t >= 0 && p.t <= 1))
                   return p;
-                return master.project_onto_vertex(x, preferred, p.t < 0 ? 0 : 1);
+                return master.project_onto_vertex(x,
+                                                  preferred,
+                                                  p.t < 0 ? 0 : 1);
               }
             kept.gap = (x - master.current_point(kept.segment, kept.t).x) *
                        master.normal(kept);

@@ -181,10 +181,8 @@ main(int argc, char **argv)
                         << " of scheme " << scheme.name() << '\n';
               break;
             }
-          const auto v = evaluate_checks(parameters.checks,
-                                         scheme.name(),
-                                         history,
-                                         n_steps);
+          const auto v =
+            evaluate_checks(parameters.checks, scheme.name(), history, n_steps);
           verdicts.insert(verdicts.end(), v.begin(), v.end());
           if (output.write_history)
             write_verdicts(output.directory + "/verdicts.csv", verdicts);

@@ -251,8 +251,10 @@ namespace RingContact
                 for (unsigned int k = 0; k < 3; ++k)
                   if (face->vertex(v).distance(fixed[k].first) < 1e-8 * r)
                     {
-                      const auto dof = face->vertex_dof_index(
-                        v, fixed[k].second, cell->active_fe_index());
+                      const auto dof =
+                        face->vertex_dof_index(v,
+                                               fixed[k].second,
+                                               cell->active_fe_index());
                       if (!target.is_constrained(dof))
                         target.add_line(dof);
                       found[k] = true;
@@ -536,7 +538,7 @@ namespace RingContact
     hp::QCollection<1> face_q;
     for (unsigned int i = 0; i < q_collection.size(); ++i)
       face_q.push_back(QGauss<1>(fe_collection[i].degree + 1));
-    hp::FEFaceValues<2> hp_face_values(mapping_collection,
+    hp::FEFaceValues<2>                  hp_face_values(mapping_collection,
                                        fe_collection,
                                        face_q,
                                        update_values | update_gradients |
@@ -552,7 +554,7 @@ namespace RingContact
             cell->face(f)->boundary_id() == Ids::outer_boundary)
           {
             hp_face_values.reinit(cell, f);
-            const FEFaceValues<2> &fv = hp_face_values.get_present_fe_values();
+            const FEFaceValues<2>  &fv = hp_face_values.get_present_fe_values();
             const FiniteElement<2> &fe = cell->get_fe();
             const unsigned int      n  = fe.n_dofs_per_cell();
             dofs.resize(n);
@@ -571,7 +573,8 @@ namespace RingContact
                   N * dA;
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    const unsigned int c = fe.system_to_component_index(i).first;
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
                     if (c >= 2)
                       continue;
                     face_rhs(i) -= p * fv.shape_value(i, q) * nda[c];
@@ -585,8 +588,8 @@ namespace RingContact
                           continue;
                         Tensor<2, 2> G;
                         G[d] = fv.shape_grad(j, q);
-                        face_matrix(i, j) += p * fv.shape_value(i, q) *
-                                             (cofactor(G) * N)[c] * dA;
+                        face_matrix(i, j) +=
+                          p * fv.shape_value(i, q) * (cofactor(G) * N)[c] * dA;
                       }
                   }
               }
@@ -674,7 +677,8 @@ namespace RingContact
       }
     // Under the pressure load the reactions vanish: the scale of the forces
     // is then the load itself.
-    reaction = std::max(std::sqrt(reaction + external_force.norm_sqr()), 1e-300);
+    reaction =
+      std::max(std::sqrt(reaction + external_force.norm_sqr()), 1e-300);
     largest_displacement = std::max(largest_displacement, 1e-300);
     largest_pressure     = std::max(largest_pressure, 1e-300);
 
@@ -859,9 +863,9 @@ namespace RingContact
       {
         solution = start;
         solution.add(step_length, newton_update);
-        n_changed = assemble_newton_system(
-          keep_partners ? ContactInterface::Pairing::hold :
-                          ContactInterface::Pairing::search);
+        n_changed = assemble_newton_system(keep_partners ?
+                                             ContactInterface::Pairing::hold :
+                                             ContactInterface::Pairing::search);
         if (n_inverted == 0)
           {
             const ResidualMeasure trial = residual_measure();

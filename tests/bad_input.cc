@@ -309,10 +309,9 @@ main()
     std::ifstream     log("newton_fails.log");
     std::stringstream text;
     text << log.rdbuf();
-    const bool failed = text.str().find("step not reached") !=
-                          std::string::npos &&
-                        text.str().find("0 of 1 checks pass") !=
-                          std::string::npos;
+    const bool failed =
+      text.str().find("step not reached") != std::string::npos &&
+      text.str().find("0 of 1 checks pass") != std::string::npos;
     check(failed, "newton_fails: the checks of the last step fail");
     RingContactTests::deallog_file
       << "newton_fails: the checks of the last step: step not reached, "

@@ -181,10 +181,10 @@ namespace
       columns.push_back(i);
     // Those of r = R1, where the pressure acts.
     if (pressure_loaded)
-      for (const auto i :
-           DoFTools::extract_boundary_dofs(problem.get_dof_handler(),
-                                           ComponentMask({true, true, false}),
-                                           {static_cast<types::boundary_id>(Ids::outer_boundary)}))
+      for (const auto i : DoFTools::extract_boundary_dofs(
+             problem.get_dof_handler(),
+             ComponentMask({true, true, false}),
+             {static_cast<types::boundary_id>(Ids::outer_boundary)}))
         columns.push_back(i);
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
