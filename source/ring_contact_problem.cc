@@ -498,22 +498,33 @@ namespace RingContact
                   }
               }
           }
-        // Bulk rows are computed from the displacement alone: their
-        // round-off is eps sum_j |K_ij| |u_j|.
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            internal_force(dofs[i]) -= cell_rhs(i);
-            double magnitude = std::abs(cell_rhs(i));
-            for (unsigned int j = 0; j < n; ++j)
-              magnitude +=
-                std::abs(cell_matrix(i, j)) * std::abs(solution(dofs[j]));
-            residual_magnitude(dofs[i]) += magnitude;
-          }
-        update_constraints().distribute_local_to_global(
-          cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
+        add_local_system(cell_matrix, cell_rhs, dofs, internal_force);
       }
     if (pressure_loading)
       assemble_pressure_load();
+  }
+
+  // Add a cell's (or face's) matrix and right-hand side -R to the system,
+  // its force R to `force` (internal or external), and to each row the
+  // magnitude of its terms: computed from the displacement alone, their
+  // round-off is eps sum_j |K_ij| |u_j| (see residual_measure()).
+  void
+  RingContactProblem::add_local_system(
+    const FullMatrix<double>                   &matrix,
+    const Vector<double>                       &rhs,
+    const std::vector<types::global_dof_index> &dofs,
+    Vector<double>                             &force)
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        force(dofs[i]) -= rhs(i);
+        double magnitude = std::abs(rhs(i));
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          magnitude += std::abs(matrix(i, j)) * std::abs(solution(dofs[j]));
+        residual_magnitude(dofs[i]) += magnitude;
+      }
+    update_constraints().distribute_local_to_global(
+      matrix, rhs, dofs, system_matrix, system_rhs);
   }
 
   // The pressure p on r = R1, on the current configuration: the load
@@ -593,17 +604,7 @@ namespace RingContact
                       }
                   }
               }
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                external_force(dofs[i]) -= face_rhs(i);
-                double magnitude = std::abs(face_rhs(i));
-                for (unsigned int j = 0; j < n; ++j)
-                  magnitude +=
-                    std::abs(face_matrix(i, j)) * std::abs(solution(dofs[j]));
-                residual_magnitude(dofs[i]) += magnitude;
-              }
-            update_constraints().distribute_local_to_global(
-              face_matrix, face_rhs, dofs, system_matrix, system_rhs);
+            add_local_system(face_matrix, face_rhs, dofs, external_force);
           }
   }
 

@@ -15,6 +15,7 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -202,6 +203,11 @@ namespace RingContact
     add_rigid_body_constraints(AffineConstraints<double> &target) const;
     void
     assemble_pressure_load();
+    void
+    add_local_system(const FullMatrix<double>                   &matrix,
+                     const Vector<double>                       &rhs,
+                     const std::vector<types::global_dof_index> &dofs,
+                     Vector<double>                             &force);
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,
