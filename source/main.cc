@@ -13,6 +13,7 @@
 // complete (exit code 130 or 143); a second signal ends it at once.
 #include <deal.II/base/multithread_info.h>
 
+#include <ring_contact/config.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/output_folder.h>
 #include <ring_contact/parameters.h>
@@ -112,7 +113,8 @@ main(int argc, char **argv)
 
   const std::string usage = "usage: ring_contact <file.prm>\n"
                             "       ring_contact --print-parameters   (all "
-                            "entries, defaults, docs)\n";
+                            "entries, defaults, docs)\n"
+                            "       ring_contact --version\n";
   if (argc != 2)
     {
       std::cerr << usage;
@@ -122,6 +124,11 @@ main(int argc, char **argv)
   if (argument == "--help" || argument == "-h")
     {
       std::cout << usage;
+      return 0;
+    }
+  if (argument == "--version")
+    {
+      std::cout << "ring_contact " RING_CONTACT_VERSION "\n";
       return 0;
     }
   if (argument == "--print-parameters")
