@@ -168,8 +168,15 @@ namespace RingContact
       // and the mid-side nodes of the circles are checked to lie on it.
       // Vertices are numbered by node tag and cells taken by element tag,
       // the order of the file whatever its format.
+      // `on_circles`: the boundary lines lie on circles about the origin
+      // (the rings), and a quadratic line's mid-side node must be on its
+      // circle; otherwise the geometry is straight-sided, and it must be at
+      // the middle of its line (a curved quadratic mesh would otherwise be
+      // silently straightened).
       void
-      build_triangulation(Triangulation<2> &triangulation, const GmshMesh &mesh)
+      build_triangulation(Triangulation<2> &triangulation,
+                          const GmshMesh   &mesh,
+                          const bool        on_circles)
       {
         std::map<std::size_t, unsigned int> vertex_of_node;
         for (const auto &element : mesh.elements)
@@ -209,8 +216,21 @@ namespace RingContact
               if (element.type == 8)
                 {
                   const Point<2> mid = mesh.nodes.at(n[2]),
-                                 end = mesh.nodes.at(n[0]);
-                  if (std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
+                                 end = mesh.nodes.at(n[0]),
+                                 other = mesh.nodes.at(n[1]);
+                  if (!on_circles &&
+                      mid.distance(0.5 * (end + other)) >
+                        1e-8 * end.distance(other))
+                    throw std::runtime_error(
+                      "mesh file '" + mesh.filename + "', element " +
+                      std::to_string(element.tag) +
+                      ": the mid-side node of a boundary line is not at its "
+                      "middle; the geometry of a general problem is taken "
+                      "from the vertices (straight sides), so a curved "
+                      "quadratic mesh is refused: give a linear mesh, as "
+                      "fine as the geometry needs");
+                  if (on_circles &&
+                      std::abs(mid.norm() - end.norm()) > 1e-8 * end.norm())
                     throw std::runtime_error(
                       "mesh file '" + mesh.filename + "', element " +
                       std::to_string(element.tag) +
@@ -218,6 +238,11 @@ namespace RingContact
                       "circle of its end nodes");
                 }
             }
+        // gmsh numbers a quadrilateral's corners in the sense of its
+        // surface's curve loop: a clockwise loop gives cells of negative
+        // measure, whose stiffness would have the wrong sign (the body
+        // moves against its load). deal.II orders them counterclockwise.
+        GridTools::invert_cells_with_negative_measure(vertices, cells);
         GridTools::consistently_order_cells(cells);
         try
           {
@@ -283,11 +308,12 @@ namespace RingContact
     read_gmsh(Triangulation<2>  &triangulation,
               const std::string &filename,
               const GeoNumbers  &geo_numbers,
-              const unsigned int element_order)
+              const unsigned int element_order,
+              const bool         on_circles)
     {
       const GmshMesh mesh =
         read_gmsh_file(filename, geo_numbers, element_order);
-      build_triangulation(triangulation, mesh);
+      build_triangulation(triangulation, mesh, on_circles);
       return mesh;
     }
 
@@ -296,8 +322,12 @@ namespace RingContact
     {
       // Unknowns per cell: two displacement components and, on about half
       // of the cells, the multiplier, each p^2 per cell for degree p.
-      const unsigned int p = std::max(parameters.finite_elements.degree_outer,
-                                      parameters.finite_elements.degree_inner);
+      const unsigned int p =
+        parameters.general() ?
+          std::max(parameters.problem.bodies[0].degree,
+                   parameters.problem.bodies[1].degree) :
+          std::max(parameters.finite_elements.degree_outer,
+                   parameters.finite_elements.degree_inner);
       const double       cells = static_cast<double>(n_coarse_cells) *
                            std::pow(4.0, parameters.mesh.global_refinements);
       const double unknowns = cells * 3 * p * p;
@@ -323,9 +353,97 @@ namespace RingContact
     }
 
     void
+    check_bodies(const Triangulation<2> &triangulation,
+                 const Parameters       &parameters)
+    {
+      const std::string name = "mesh '" + parameters.mesh.mesh_file + "'";
+      const auto       &problem = parameters.problem;
+      std::map<types::material_id, unsigned int> body_of;
+      for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
+        body_of[problem.bodies[b].material_id] = b;
+
+      std::set<types::material_id> materials;
+      std::map<types::boundary_id, std::set<types::material_id>> bodies_of;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          materials.insert(cell->material_id());
+          if (body_of.count(cell->material_id()) == 0)
+            throw std::runtime_error(
+              name + " has cells of physical group " +
+              std::to_string(cell->material_id()) +
+              ", which is neither Body 1's nor Body 2's 'Material id' (" +
+              std::to_string(problem.bodies[0].material_id) + ", " +
+              std::to_string(problem.bodies[1].material_id) + ")");
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              bodies_of[face->boundary_id()].insert(cell->material_id());
+        }
+      for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
+        if (materials.count(problem.bodies[b].material_id) == 0)
+          throw std::runtime_error(
+            name + " has no cells of physical group " +
+            std::to_string(problem.bodies[b].material_id) + " (Body " +
+            std::to_string(b + 1) + "'s 'Material id')");
+
+      const auto require_boundary = [&](const unsigned int id,
+                                        const std::string &role) {
+        if (bodies_of.count(id) == 0)
+          throw std::runtime_error(name + " has no boundary with tag " +
+                                   std::to_string(id) + " (" + role + ")");
+      };
+      for (const auto &condition : problem.boundary_conditions)
+        require_boundary(condition.boundary_id, condition.name);
+      for (const auto &check : problem.checks)
+        if (check.quantity == ProblemQuantity::resultant_force_x ||
+            check.quantity == ProblemQuantity::resultant_force_y)
+          require_boundary(check.boundary_id, check.name);
+      const unsigned int slave  = parameters.contact.slave_boundary_id,
+                         master = parameters.contact.master_boundary_id;
+      require_boundary(slave, "Contact/Slave boundary");
+      require_boundary(master, "Contact/Master boundary");
+      for (const auto &[id, role] :
+           {std::make_pair(slave, "slave"), std::make_pair(master, "master")})
+        if (bodies_of.at(id).size() != 1)
+          throw std::runtime_error(name + ": the " + role + " surface " +
+                                   std::to_string(id) +
+                                   " touches both bodies; it must belong "
+                                   "to one");
+      const auto slave_body  = *bodies_of.at(slave).begin();
+      const auto master_body = *bodies_of.at(master).begin();
+      if (slave_body == master_body)
+        throw std::runtime_error(name +
+                                 ": the slave and master surfaces belong to "
+                                 "the same body (" +
+                                 std::to_string(slave_body) + ")");
+      if (parameters.finite_elements.multiplier_degree >
+          problem.bodies[body_of.at(slave_body)].degree)
+        throw std::runtime_error(
+          "Finite elements/Multiplier degree (" +
+          std::to_string(parameters.finite_elements.multiplier_degree) +
+          ") exceeds the displacement degree of the slave body (Body " +
+          std::to_string(body_of.at(slave_body) + 1) + ")");
+    }
+
+    void
     create_mesh(Triangulation<2> &triangulation, const Parameters &parameters)
     {
       const auto &mesh_parameters = parameters.mesh;
+      // A general problem: the bodies of a gmsh mesh, straight-sided
+      // (FlatManifold), meshed from a script with linear elements (the
+      // cells take the vertices only).
+      if (parameters.general())
+        {
+          const GmshMesh mesh = read_gmsh(triangulation,
+                                          parameters.mesh.mesh_file,
+                                          parameters.mesh.geo_numbers,
+                                          1,
+                                          false);
+          check_bodies(triangulation, parameters);
+          check_boundary_tags(triangulation, mesh);
+          check_size(triangulation.n_active_cells(), parameters);
+          triangulation.refine_global(parameters.mesh.global_refinements);
+          return;
+        }
       if (parameters.mesh.source == MeshSource::patch_test)
         {
           check_size(2 * (mesh_parameters.patch_elements_lower +

@@ -12,9 +12,16 @@ namespace RingContact
   unsigned int
   LoadProgram::n_steps() const
   {
-    return parameters.program == LoadProgramType::ramp ?
-             parameters.ramp_steps :
-             parameters.rotation_steps;
+    switch (parameters.program)
+      {
+        case LoadProgramType::ramp:
+          return parameters.ramp_steps;
+        case LoadProgramType::rotation:
+          return parameters.rotation_steps;
+        case LoadProgramType::steps:
+          break;
+      }
+    return parameters.time_points.size();
   }
 
   double
@@ -22,6 +29,8 @@ namespace RingContact
   {
     if (parameters.program == LoadProgramType::ramp)
       return step * parameters.time_step;
+    if (parameters.program == LoadProgramType::steps)
+      return step == 0 ? 0.0 : parameters.time_points.at(step - 1);
     // Rotation: the pseudo-time runs from 0 to 1 over the steps.
     return static_cast<double>(step) / parameters.rotation_steps;
   }
@@ -37,13 +46,16 @@ namespace RingContact
         const double dt = parameters.time_step;
         const double p =
           parameters.reference_pressure * std::pow(10.0, std::max(t, dt) - 1.1);
-        return {t < dt ? p * t / dt : p, 0.0};
+        return {t < dt ? p * t / dt : p, 0.0, t};
       }
+    // Steps: the expressions of the problem take t itself.
+    if (parameters.program == LoadProgramType::steps)
+      return {0.0, 0.0, t};
     // Rotation: the full pressure from the first step on (reached linearly
     // within the first step if that step has to be cut), s = s_end t.
     const double t1 = time(1);
     const double p  = parameters.rotation_pressure * std::min(1.0, t / t1);
-    return {p, parameters.rotation_elements * t};
+    return {p, parameters.rotation_elements * t, t};
   }
 
   LoadState

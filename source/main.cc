@@ -157,8 +157,13 @@ main(int argc, char **argv)
                       << removed.size() << " files of an earlier run ("
                       << describe_files(removed) << ")\n";
           if (output.write_history)
-            history_file =
-              std::make_unique<HistoryFile>(output.directory + "/history.csv");
+            {
+              std::vector<std::string> columns;
+              for (const auto &check : parameters.problem.checks)
+                columns.push_back(check.column());
+              history_file = std::make_unique<HistoryFile>(
+                output.directory + "/history.csv", columns);
+            }
         }
 
       std::vector<Verdict> verdicts;
@@ -189,7 +194,12 @@ main(int argc, char **argv)
               break;
             }
           const auto v =
-            evaluate_checks(parameters.checks, scheme.name(), history, n_steps);
+            parameters.general() ?
+              evaluate_checks(parameters.problem,
+                              scheme.name(),
+                              history,
+                              n_steps) :
+              evaluate_checks(parameters.checks, scheme.name(), history, n_steps);
           verdicts.insert(verdicts.end(), v.begin(), v.end());
           if (output.write_history)
             write_verdicts(output.directory + "/verdicts.csv", verdicts);

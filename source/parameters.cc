@@ -1,4 +1,5 @@
 #include <ring_contact/gmsh_file.h>
+#include <ring_contact/parameter_checks.h>
 #include <ring_contact/parameter_file.h>
 #include <ring_contact/parameters.h>
 #include <ring_contact/utilities.h>
@@ -15,7 +16,7 @@
 
 namespace RingContact
 {
-  namespace
+  namespace ParameterChecks
   {
     std::string
     to_text(const double value)
@@ -74,6 +75,119 @@ namespace RingContact
                 "between 1e-300 and 1e300 in magnitude, or 0)");
       return value;
     }
+
+    // The value of an integer entry, in [lowest, highest].
+    unsigned int
+    get_count(ParameterHandler  &prm,
+              const std::string &subsection,
+              const std::string &entry,
+              const long         lowest,
+              const long         highest)
+    {
+      const std::string text  = prm.get(entry);
+      long              value = 0;
+      bool              ok    = true;
+      try
+        {
+          value = prm.get_integer(entry);
+        }
+      catch (...)
+        {
+          ok = false;
+        }
+      require(ok,
+              subsection,
+              entry,
+              "has the value '" + printable(text) + "', not an integer");
+      require(value >= lowest && value <= highest,
+              subsection,
+              entry,
+              "must be between " + std::to_string(lowest) + " and " +
+                std::to_string(highest) + ", got " + std::to_string(value));
+      return static_cast<unsigned int>(value);
+    }
+
+    void
+    get_steps(ParameterHandler          &prm,
+              const std::string         &subsection,
+              const std::string         &entry,
+              bool                      &every_step,
+              std::vector<unsigned int> &steps)
+    {
+      const std::string steps_text = Utilities::trim(prm.get(entry));
+      require(!steps_text.empty(),
+              subsection,
+              entry,
+              "is empty: give 'all', 'last', 'none' (no checks) or step "
+              "numbers");
+      every_step = (steps_text == "all");
+      steps.clear();
+      if (steps_text == "last")
+        steps.push_back(numbers::invalid_unsigned_int);
+      else if (!every_step && steps_text != "none")
+        {
+          for (const auto &s : Utilities::split_string_list(steps_text))
+            {
+              long n = 0;
+              try
+                {
+                  n = Utilities::string_to_int(s);
+                }
+              catch (...)
+                {
+                  n = 0;
+                }
+              require(n >= 1 && n <= 100000,
+                      subsection,
+                      entry,
+                      "must be 'all', 'last', 'none' or step numbers from 1 "
+                      "to 100000, got '" +
+                        printable(s) + "'");
+              steps.push_back(n);
+            }
+          // "1,,2" or " , " select nothing where something was meant.
+          require(!steps.empty(),
+                  subsection,
+                  entry,
+                  "selects no step: give 'all', 'last', 'none' (no checks) "
+                  "or step numbers");
+        }
+    }
+
+    std::array<double, 2>
+    get_point(ParameterHandler  &prm,
+              const std::string &subsection,
+              const std::string &entry)
+    {
+      const std::string     text = prm.get(entry);
+      const auto            xy   = Utilities::split_string_list(text);
+      std::array<double, 2> point;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          double value = 0;
+          try
+            {
+              value = xy.size() == 2 ? Utilities::string_to_double(xy.at(d)) :
+                                       std::nan("");
+            }
+          catch (...)
+            {
+              value = std::nan("");
+            }
+          require(std::isfinite(value) && std::abs(value) < 1e300,
+                  subsection,
+                  entry,
+                  "must be two finite coordinates 'x, y', got '" +
+                    printable(text) + "'");
+          point[d] = value;
+        }
+      return point;
+    }
+  } // namespace ParameterChecks
+
+  namespace
+  {
+    using namespace ParameterChecks;
 
     // A gmsh script is text written by hand: a few kilobytes.
     constexpr std::size_t max_geo_file_bytes = std::size_t(64) << 20;
@@ -137,37 +251,9 @@ namespace RingContact
       return false;
     }
 
-    // The value of an integer entry, in [lowest, highest].
-    unsigned int
-    get_count(ParameterHandler  &prm,
-              const std::string &subsection,
-              const std::string &entry,
-              const long         lowest,
-              const long         highest)
-    {
-      const std::string text  = prm.get(entry);
-      long              value = 0;
-      bool              ok    = true;
-      try
-        {
-          value = prm.get_integer(entry);
-        }
-      catch (...)
-        {
-          ok = false;
-        }
-      require(ok,
-              subsection,
-              entry,
-              "has the value '" + printable(text) + "', not an integer");
-      require(value >= lowest && value <= highest,
-              subsection,
-              entry,
-              "must be between " + std::to_string(lowest) + " and " +
-                std::to_string(highest) + ", got " + std::to_string(value));
-      return static_cast<unsigned int>(value);
-    }
   } // namespace
+
+  using namespace ParameterChecks;
 
   // ------------------------------------------------------------------
   // IntegrationScheme
@@ -709,25 +795,8 @@ namespace RingContact
       reported_pressure = prm.get("Reported pressure") == "Cauchy" ?
                             PressureMeasure::cauchy :
                             PressureMeasure::nominal;
-      const auto xy     = Utilities::split_string_list(prm.get("Probe point"));
-      for (unsigned int d = 0; d < 2; ++d)
-        {
-          double value = 0;
-          try
-            {
-              value = Utilities::string_to_double(xy.at(d));
-            }
-          catch (...)
-            {
-              value = std::nan("");
-            }
-          require(std::isfinite(value) && std::abs(value) < 1e300,
-                  "Contact",
-                  "Probe point",
-                  "must be two finite coordinates 'x, y', got '" +
-                    printable(prm.get("Probe point")) + "'");
-          probe_point[d] = value;
-        }
+      const auto xy = get_point(prm, "Contact", "Probe point");
+      probe_point   = Point<2>(xy[0], xy[1]);
     }
     prm.leave_subsection();
   }
@@ -743,10 +812,24 @@ namespace RingContact
     {
       prm.declare_entry("Program",
                         "ramp",
-                        Patterns::Selection("ramp|rotation"),
+                        Patterns::Selection("ramp|rotation|steps"),
                         "ramp: p(t) = p0 10^(t - 1.1) at t = k dt, imposed "
                         "radially (A, B, H); rotation: pressure fixed, the "
-                        "inner boundary turned through s elements (C-G).");
+                        "inner boundary turned through s elements (C-G); "
+                        "steps: the pseudo-times of 'Time points', or "
+                        "t = k / n for k = 1..n with n = 'Number of steps' "
+                        "(Problem/Scenario = general, whose expressions "
+                        "take t).");
+      prm.declare_entry("Number of steps",
+                        "1",
+                        Patterns::Integer(1),
+                        "Program = steps: n equal steps from t = 0 to 1.");
+      prm.declare_entry("Time points",
+                        "",
+                        Patterns::Anything(),
+                        "Program = steps: the pseudo-times at the ends of "
+                        "the steps, increasing from above 0, e.g. '0.1, "
+                        "0.5, 1' (empty: 'Number of steps' equal steps).");
       prm.declare_entry(
         "Loading",
         "imposed displacements",
@@ -793,8 +876,42 @@ namespace RingContact
   {
     prm.enter_subsection("Load program");
     {
-      program = prm.get("Program") == "ramp" ? LoadProgramType::ramp :
-                                               LoadProgramType::rotation;
+      const std::string program_name = prm.get("Program");
+      program = program_name == "ramp"     ? LoadProgramType::ramp :
+                program_name == "rotation" ? LoadProgramType::rotation :
+                                             LoadProgramType::steps;
+      time_points.clear();
+      const std::string points_text = Utilities::trim(prm.get("Time points"));
+      if (points_text.empty())
+        {
+          const unsigned int n =
+            get_count(prm, "Load program", "Number of steps", 1, 100000);
+          for (unsigned int k = 1; k <= n; ++k)
+            time_points.push_back(static_cast<double>(k) / n);
+        }
+      else
+        for (const auto &item : Utilities::split_string_list(points_text))
+          {
+            double t = std::nan("");
+            try
+              {
+                t = Utilities::string_to_double(item);
+              }
+            catch (...)
+              {}
+            require(std::isfinite(t) && std::abs(t) < 1e300 &&
+                      t > (time_points.empty() ? 0.0 : time_points.back()),
+                    "Load program",
+                    "Time points",
+                    "must be increasing finite numbers above 0, got '" +
+                      printable(item) + "' in '" + printable(points_text) +
+                      "'");
+            time_points.push_back(t);
+          }
+      require(time_points.size() <= 100000,
+              "Load program",
+              "Time points",
+              "gives more than 100000 steps");
       loading = prm.get("Loading") == "pressure" ?
                   Loading::pressure :
                   Loading::imposed_displacements;
@@ -993,44 +1110,7 @@ namespace RingContact
                   name == "pressure spread" ? CheckedQuantity::pressure_spread :
                                               CheckedQuantity::l2_pressure_error;
       tolerance = get_double(prm, "Checks", "Tolerance");
-      const std::string steps_text = Utilities::trim(prm.get("Steps"));
-      require(!steps_text.empty(),
-              "Checks",
-              "Steps",
-              "is empty: give 'all', 'last', 'none' (no checks) or step "
-              "numbers");
-      every_step = (steps_text == "all");
-      steps.clear();
-      if (steps_text == "last")
-        steps.push_back(numbers::invalid_unsigned_int);
-      else if (!every_step && steps_text != "none")
-        {
-          for (const auto &s : Utilities::split_string_list(steps_text))
-            {
-              long n = 0;
-              try
-                {
-                  n = Utilities::string_to_int(s);
-                }
-              catch (...)
-                {
-                  n = 0;
-                }
-              require(n >= 1 && n <= 100000,
-                      "Checks",
-                      "Steps",
-                      "must be 'all', 'last', 'none' or step numbers from 1 "
-                      "to 100000, got '" +
-                        printable(s) + "'");
-              steps.push_back(n);
-            }
-          // "1,,2" or " , " select nothing where something was meant.
-          require(!steps.empty(),
-                  "Checks",
-                  "Steps",
-                  "selects no step: give 'all', 'last', 'none' (no checks) "
-                  "or step numbers");
-        }
+      get_steps(prm, "Checks", "Steps", every_step, steps);
     }
     prm.leave_subsection();
   }
@@ -1050,7 +1130,58 @@ namespace RingContact
     NewtonParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     CheckParameters::declare_parameters(prm);
+    ProblemParameters::declare_parameters(prm);
   }
+
+  namespace
+  {
+    // The entries that only one scenario reads: set in a file of the other
+    // scenario they would be silently ignored, so they are refused.
+    bool
+    only_for_general(const std::string &key)
+    {
+      for (const std::string prefix :
+           {"Body ", "Boundary condition ", "Check ", "Problem/Constants"})
+        if (key.rfind(prefix, 0) == 0)
+          return true;
+      return key == "Load program/Number of steps" ||
+             key == "Load program/Time points";
+    }
+
+    bool
+    only_for_ssnp152(const std::string &key)
+    {
+      for (const std::string prefix : {"Checks/"})
+        if (key.rfind(prefix, 0) == 0)
+          return true;
+      for (const std::string entry :
+           {"Mesh/Elements around",
+            "Mesh/Radial elements outer ring",
+            "Mesh/Radial elements inner ring",
+            "Mesh/Sector elements",
+            "Mesh/Patch test elements lower block",
+            "Mesh/Patch test elements upper block",
+            "Mesh/Outer radius",
+            "Mesh/Interface radius",
+            "Mesh/Inner radius",
+            "Materials/Young's modulus outer ring",
+            "Materials/Poisson's ratio outer ring",
+            "Materials/Young's modulus inner ring",
+            "Materials/Poisson's ratio inner ring",
+            "Finite elements/Displacement degree outer ring",
+            "Finite elements/Displacement degree inner ring",
+            "Load program/Loading",
+            "Load program/Reference pressure",
+            "Load program/Ramp steps",
+            "Load program/Time step",
+            "Load program/Rotation pressure",
+            "Load program/Rotation steps",
+            "Load program/Rotation in elements"})
+        if (key == entry)
+          return true;
+      return false;
+    }
+  } // namespace
 
   void
   Parameters::read(const std::string &filename)
@@ -1074,11 +1205,42 @@ namespace RingContact
         newton.parse_parameters(prm);
         output.parse_parameters(prm, name);
         checks.parse_parameters(prm);
+        problem.parse_parameters(prm);
+        for (const auto &[key, origin] : origins)
+          {
+            const auto slash = key.rfind('/');
+            if (general() && only_for_ssnp152(key))
+              require(false,
+                      key.substr(0, slash),
+                      key.substr(slash + 1),
+                      "is read for SSNP152 only, but Problem/Scenario is "
+                      "general (a general problem takes its bodies, "
+                      "conditions and checks from the subsections Body, "
+                      "Boundary condition and Check)");
+            if (!general() && only_for_general(key))
+              require(false,
+                      key.substr(0, slash),
+                      key.substr(slash + 1),
+                      "is read only when Problem/Scenario = general");
+          }
+        // A general problem's probe: the point of its first pressure check.
+        if (general() &&
+            origins.count(entry_key("Contact", "Probe point")) == 0)
+          {
+            contact.probe_point = Point<2>();
+            for (const auto &check : problem.checks)
+              if (check.quantity == ProblemQuantity::contact_pressure)
+                {
+                  contact.probe_point = check.point;
+                  break;
+                }
+          }
         // Node A of SSNP152 is the slave node at (R2, 0): a file that
         // changes the radii and not the probe point still checks node A.
         if (origins.count(entry_key("Contact", "Probe point")) == 0 &&
             mesh.source != MeshSource::patch_test)
-          contact.probe_point = Point<2>(mesh.interface_radius, 0);
+          if (!general())
+            contact.probe_point = Point<2>(mesh.interface_radius, 0);
         check_consistency();
       }
     catch (const ParameterError &e)
@@ -1098,6 +1260,16 @@ namespace RingContact
   void
   Parameters::check_consistency() const
   {
+    if (general())
+      {
+        check_general_consistency();
+        return;
+      }
+    require(load.program != LoadProgramType::steps,
+            "Load program",
+            "Program",
+            "= steps takes Problem/Scenario = general (SSNP152 is loaded by "
+            "the ramp or the rotation)");
     const unsigned int slave_degree =
       (contact.slave_boundary_id == Ids::outer_ring_contact) ?
         finite_elements.degree_outer :
@@ -1207,6 +1379,58 @@ namespace RingContact
               "names step " + std::to_string(step) +
                 ", but the load program has " + std::to_string(n_steps) +
                 " steps");
+  }
+
+  // A general problem: a gmsh mesh, the steps program, two bodies, and
+  // checked steps within the program.
+  void
+  Parameters::check_general_consistency() const
+  {
+    require(mesh.source == MeshSource::gmsh_file,
+            "Mesh",
+            "Mesh source",
+            "must be 'gmsh file' for Problem/Scenario = general (its bodies "
+            "and boundaries are the physical groups of the mesh)");
+    require(load.program == LoadProgramType::steps,
+            "Load program",
+            "Program",
+            "must be 'steps' for Problem/Scenario = general (ramp and "
+            "rotation are SSNP152's programs)");
+    require(problem.bodies[0].material_id != problem.bodies[1].material_id,
+            "Body 2",
+            "Material id",
+            "is that of Body 1 (" +
+              std::to_string(problem.bodies[0].material_id) +
+              "): the two bodies are two physical groups");
+    const unsigned int n_steps = load.time_points.size();
+    for (const auto &check : problem.checks)
+      for (const unsigned int step : check.steps)
+        require(step == numbers::invalid_unsigned_int || step <= n_steps,
+                check.name,
+                "Steps",
+                "names step " + std::to_string(step) +
+                  ", but the load program has " + std::to_string(n_steps) +
+                  " steps");
+    for (const auto &condition : problem.boundary_conditions)
+      {
+        require(condition.boundary_id != contact.slave_boundary_id &&
+                  condition.boundary_id != contact.master_boundary_id,
+                condition.name,
+                "Boundary id",
+                "= " + std::to_string(condition.boundary_id) +
+                  " is a contact surface (Contact/Slave boundary or Master "
+                  "boundary)");
+        for (const auto &other : problem.boundary_conditions)
+          require(&other == &condition ||
+                    other.boundary_id != condition.boundary_id ||
+                    other.type == BoundaryConditionType::displacement ||
+                    condition.type == BoundaryConditionType::displacement,
+                  condition.name,
+                  "Boundary id",
+                  "= " + std::to_string(condition.boundary_id) +
+                    " has two loads (" + other.name + " too): give their sum "
+                    "in one");
+      }
   }
 
   void

@@ -87,6 +87,70 @@ namespace RingContact
     return verdicts;
   }
 
+  std::vector<Verdict>
+  evaluate_checks(const ProblemParameters       &problem,
+                  const std::string             &scheme,
+                  const std::vector<HistoryRow> &history,
+                  const unsigned int             n_steps)
+  {
+    std::vector<Verdict> verdicts;
+    for (unsigned int k = 0; k < problem.checks.size(); ++k)
+      {
+        const ProblemCheckParameters &check = problem.checks[k];
+        const auto reference = make_expression({check.reference},
+                                               problem.constants,
+                                               check.name + "/Reference");
+        const auto check_row = [&](const HistoryRow &row) {
+          Verdict v;
+          v.scheme    = row.scheme;
+          v.quantity  = check.description();
+          v.step      = row.step;
+          v.tolerance = check.tolerance;
+          v.value     = row.quantities.at(k);
+          reference->set_time(row.time);
+          v.reference = reference->value(check.point);
+          v.error     = v.value - v.reference;
+          if (check.relative)
+            v.error /= std::abs(v.reference);
+          v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
+          verdicts.push_back(v);
+        };
+        const auto not_reached = [&](const unsigned int step) {
+          verdicts.push_back(Verdict{scheme,
+                                     "step not reached",
+                                     step,
+                                     std::nan(""),
+                                     0,
+                                     std::nan(""),
+                                     check.tolerance,
+                                     false});
+        };
+        if (check.every_step)
+          {
+            for (const auto &row : history)
+              check_row(row);
+            if (history.empty() || history.back().step < n_steps)
+              not_reached(history.empty() ? 1 : history.back().step + 1);
+          }
+        else
+          for (const unsigned int step : check.steps)
+            {
+              const unsigned int wanted =
+                step == numbers::invalid_unsigned_int ? n_steps : step;
+              bool found = false;
+              for (const auto &row : history)
+                if (row.step == wanted)
+                  {
+                    check_row(row);
+                    found = true;
+                  }
+              if (!found)
+                not_reached(wanted);
+            }
+      }
+    return verdicts;
+  }
+
   bool
   print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts)
   {
@@ -136,11 +200,15 @@ namespace RingContact
   }
 
   std::string
-  history_csv_header()
+  history_csv_header(const std::vector<std::string> &extra_columns)
   {
-    return "scheme,step,time,load_factor,rotation,pressure_A,analytic,"
-           "relative_error,l2_relative_error,pressure_min,pressure_max,"
-           "newton_iterations,step_cuts,active_nodes,wall_time\n";
+    std::string header =
+      "scheme,step,time,load_factor,rotation,pressure_A,analytic,"
+      "relative_error,l2_relative_error,pressure_min,pressure_max,"
+      "newton_iterations,step_cuts,active_nodes,wall_time";
+    for (const auto &column : extra_columns)
+      header += "," + column;
+    return header + "\n";
   }
 
   std::string
@@ -152,23 +220,27 @@ namespace RingContact
         << ',' << r.rotation << ',' << r.pressure_A << ',' << r.analytic << ','
         << r.relative_error << ',' << r.l2_relative_error << ','
         << r.pressure_min << ',' << r.pressure_max << ',' << r.newton_iterations
-        << ',' << r.step_cuts << ',' << r.active_nodes << ',' << r.wall_time
-        << '\n';
+        << ',' << r.step_cuts << ',' << r.active_nodes << ',' << r.wall_time;
+    for (const double q : r.quantities)
+      out << ',' << q;
+    out << '\n';
     return out.str();
   }
 
   void
-  write_history(const std::string             &filename,
-                const std::vector<HistoryRow> &history)
+  write_history(const std::string              &filename,
+                const std::vector<HistoryRow>  &history,
+                const std::vector<std::string> &extra_columns)
   {
-    std::string contents = history_csv_header();
+    std::string contents = history_csv_header(extra_columns);
     for (const auto &row : history)
       contents += history_csv_row(row);
     write_file_atomically(filename, contents);
   }
 
-  HistoryFile::HistoryFile(const std::string &filename)
-      : file(filename, history_csv_header())
+  HistoryFile::HistoryFile(const std::string              &filename,
+                           const std::vector<std::string> &extra_columns)
+      : file(filename, history_csv_header(extra_columns))
   {}
 
   void

@@ -9,6 +9,8 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
+
 #include <ring_contact/boundary_motion.h>
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
@@ -30,10 +32,10 @@ namespace RingContact
       , log(log)
       , dof_handler(triangulation)
       , displacement(0)
-      , analytic(parameters.mesh, parameters.materials)
+      , scenario(make_scenario(parameters))
+      , bodies(scenario->bodies())
+      , boundary_loads(scenario->boundary_loads())
       , load_program(parameters.load)
-      , patch_test(parameters.mesh.source == MeshSource::patch_test)
-      , pressure_loading(parameters.load.loading == Loading::pressure)
       , previous_time(0)
       , current_time(0)
       , current_load{0, 0}
@@ -42,17 +44,11 @@ namespace RingContact
                                                TimerOutput::never,
               TimerOutput::wall_times)
   {
-    const auto &m = parameters.materials;
-    materials.emplace(Ids::outer_ring,
-                      Material(m.youngs_modulus_outer,
-                               m.poissons_ratio_outer,
-                               m.plane,
-                               m.kinematics));
-    materials.emplace(Ids::inner_ring,
-                      Material(m.youngs_modulus_inner,
-                               m.poissons_ratio_inner,
-                               m.plane,
-                               m.kinematics));
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        materials.emplace(bodies[b].material_id, bodies[b].material);
+        fe_index_of[bodies[b].material_id] = b;
+      }
   }
 
   // The mesh: generated or read, checked, on the polar manifold. The ring
@@ -69,20 +65,19 @@ namespace RingContact
           slave_ring = cell->material_id();
   }
 
-  // One FESystem per ring: FE_Q(p)^2 for the displacement and, on the slave
-  // ring, FE_Q(q) for the contact pressure (its values off the slave surface
-  // are constrained to zero); FE_Nothing on the master ring. The rings share
-  // no vertex, so the two elements never meet.
+  // One FESystem per body: FE_Q(p)^2 for the displacement and, on the slave
+  // body, FE_Q(q) for the contact pressure (its values off the slave surface
+  // are constrained to zero); FE_Nothing on the master body. The bodies
+  // share no vertex, so the two elements never meet.
   void
   RingContactProblem::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
     const auto        &fe = parameters.finite_elements;
-    for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
+    for (const Body &body : bodies)
       {
-        const unsigned int degree =
-          ring == Ids::outer_ring ? fe.degree_outer : fe.degree_inner;
-        if (ring == slave_ring)
+        const unsigned int degree = body.degree;
+        if (body.material_id == slave_ring)
           fe_collection.push_back(
             FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(fe.multiplier_degree), 1));
         else
@@ -91,12 +86,12 @@ namespace RingContact
         q_collection.push_back(
           QGauss<2>(fe.reduced_integration ? degree : degree + 1));
       }
-    // One mapping per ring (the order of the finite elements).
-    for (const unsigned int ring : {Ids::outer_ring, Ids::inner_ring})
-      mapping_collection.push_back(MappingQ<2>(fe.mapping_degree_of(ring)));
+    // One mapping per body.
+    for (const Body &body : bodies)
+      mapping_collection.push_back(MappingQ<2>(body.mapping_degree));
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 : 1);
+      cell->set_active_fe_index(fe_index_of.at(cell->material_id()));
     dof_handler.distribute_dofs(fe_collection);
 
     // Cyclic symmetry: the nodes of the sector's two sides, and the master
@@ -126,15 +121,16 @@ namespace RingContact
           CyclicSymmetry::multiplier_pairs(cyclic_pairs);
       }
 
-    contact = std::make_unique<ContactInterface>(
+    const Body &slave_body  = bodies[fe_index_of.at(slave_ring)];
+    const Body &master_body = bodies[1 - fe_index_of.at(slave_ring)];
+    contact                 = std::make_unique<ContactInterface>(
       dof_handler,
       parameters.contact,
       scheme,
-      fe.mapping_degree_of(slave_ring),
-      fe.mapping_degree_of(slave_ring == Ids::outer_ring ? Ids::inner_ring :
-                                                           Ids::outer_ring),
-      std::max(parameters.materials.youngs_modulus_outer,
-               parameters.materials.youngs_modulus_inner),
+      slave_body.mapping_degree,
+      master_body.mapping_degree,
+      std::max(slave_body.material.youngs_modulus,
+               master_body.material.youngs_modulus),
       parameters.materials.kinematics == Kinematics::small_strain,
       sector);
     probe_dof =
@@ -153,6 +149,12 @@ namespace RingContact
   void
   RingContactProblem::make_constraints()
   {
+    imposed_dofs.clear();
+    for (const auto &[dof, value] :
+         scenario->imposed_displacements(dof_handler,
+                                         mapping_collection,
+                                         LoadState{0, 0, 0}))
+      imposed_dofs.push_back(dof);
     add_constraints(constraints, {}, &is_dirichlet);
     const IndexSet all_multipliers =
       DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
@@ -172,33 +174,8 @@ namespace RingContact
     std::vector<bool>                               *fixed_dofs)
   {
     target.clear();
-    // Rings: both displacement components on r = R1 and r = R3. Patch
-    // test: the vertical one on the bottom and the top, and the horizontal
-    // one at the left corner of each block (no rigid sliding).
-    // Pressure loading: no displacement imposed, the rigid-body modes
-    // removed instead.
-    const ComponentMask displacement_mask({!patch_test, true, false});
-    if (pressure_loading)
-      add_rigid_body_constraints(target);
-    else
-      for (const unsigned int id : {Ids::outer_boundary, Ids::inner_boundary})
-        VectorTools::interpolate_boundary_values(mapping_collection,
-                                                 dof_handler,
-                                                 id,
-                                                 Functions::ZeroFunction<2>(3),
-                                                 target,
-                                                 displacement_mask);
-    if (patch_test)
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          if (std::abs(cell->vertex(v)[0]) < 1e-12 &&
-              std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
-            {
-              const auto dof =
-                cell->vertex_dof_index(v, 0, cell->active_fe_index());
-              if (!target.is_constrained(dof))
-                target.add_line(dof);
-            }
+    for (const auto dof : imposed_dofs)
+      target.add_line(dof);
     for (const auto &[dof, increment] : boundary_increment)
       target.set_inhomogeneity(dof, increment);
     if (fixed_dofs)
@@ -224,52 +201,6 @@ namespace RingContact
                                       parameters.mesh.sector_angle(),
                                       target);
     target.close();
-  }
-
-  // Under the pressure load nothing holds the rings in place: each can
-  // translate and turn (frictionless contact transmits no torque). Three
-  // displacement components per ring fix them without constraining the
-  // solution sought, which is radial: u_y = 0 at (r, 0) and (-r, 0), u_x = 0
-  // at (0, r), on r = R1 for the outer ring and r = R3 for the inner one.
-  void
-  RingContactProblem::add_rigid_body_constraints(
-    AffineConstraints<double> &target) const
-  {
-    const auto &mesh = parameters.mesh;
-    for (const auto &[boundary, r] :
-         {std::make_pair(Ids::outer_boundary, mesh.outer_radius),
-          std::make_pair(Ids::inner_boundary, mesh.inner_radius)})
-      {
-        // point, component
-        const std::array<std::pair<Point<2>, unsigned int>, 3> fixed = {
-          {{Point<2>(r, 0), 1}, {Point<2>(-r, 0), 1}, {Point<2>(0, r), 0}}};
-        std::array<bool, 3> found = {{false, false, false}};
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && face->boundary_id() == boundary)
-              for (const unsigned int v : face->vertex_indices())
-                for (unsigned int k = 0; k < 3; ++k)
-                  if (face->vertex(v).distance(fixed[k].first) < 1e-8 * r)
-                    {
-                      const auto dof =
-                        face->vertex_dof_index(v,
-                                               fixed[k].second,
-                                               cell->active_fe_index());
-                      if (!target.is_constrained(dof))
-                        target.add_line(dof);
-                      found[k] = true;
-                    }
-        for (unsigned int k = 0; k < 3; ++k)
-          AssertThrow(found[k],
-                      ExcMessage(
-                        "Loading = pressure: no mesh node at (" +
-                        Utilities::to_string(fixed[k].first[0]) + ", " +
-                        Utilities::to_string(fixed[k].first[1]) +
-                        ") on boundary " + std::to_string(boundary) +
-                        ", where a rigid-body mode of its ring is fixed "
-                        "(the number of elements around must be a multiple "
-                        "of 4, with a node at angle 0)"));
-      }
   }
 
   // The first update of a load step carries the boundary increment, the
@@ -327,59 +258,13 @@ namespace RingContact
     make_sparsity_pattern();
   }
 
-  // Impose the displacements of the load state on r = R1 and r = R3.
+  // The scenario's displacements at the load state become the target.
   void
   RingContactProblem::apply_boundary_motion(const LoadState &load)
   {
-    if (patch_test)
-      {
-        // The top moves down by the shortening of the two blocks under the
-        // uniaxial pressure p (small strain): p (H1 / E1* + H2 / E2*).
-        const auto modulus = [&](const double E, const double nu) {
-          return parameters.materials.plane == PlaneAssumption::plane_stress ?
-                   E :
-                   E / (1 - nu * nu);
-        };
-        const auto  &m = parameters.materials;
-        const double shortening =
-          load.pressure *
-          (0.5 / modulus(m.youngs_modulus_outer, m.poissons_ratio_outer) +
-           0.5 / modulus(m.youngs_modulus_inner, m.poissons_ratio_inner));
-        std::map<types::global_dof_index, double> boundary_values;
-        VectorTools::interpolate_boundary_values(
-          mapping_collection,
-          dof_handler,
-          Ids::inner_boundary,
-          Functions::ConstantFunction<2>(
-            std::vector<double>{0, -shortening, 0}),
-          boundary_values,
-          ComponentMask({false, true, false}));
-        boundary_target = boundary_values;
-        current_load    = load;
-        return;
-      }
-    if (pressure_loading)
-      {
-        boundary_target.clear(); // the load is the pressure on r = R1
-        current_load = load;
-        return;
-      }
-    const double angle = 2 * numbers::PI * load.rotation_elements /
-                         (parameters.mesh.elements_around *
-                          (1u << parameters.mesh.global_refinements));
-    const BoundaryMotion outer(analytic.f_R1(load.pressure), 0.0, 3);
-    const BoundaryMotion inner(analytic.f_R3(load.pressure), angle, 3);
-    std::map<types::boundary_id, const Function<2> *> motion = {
-      {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
-    std::map<types::global_dof_index, double> boundary_values;
-    VectorTools::interpolate_boundary_values(mapping_collection,
-                                             dof_handler,
-                                             motion,
-                                             boundary_values,
-                                             ComponentMask(
-                                               {true, true, false}));
-    boundary_target = boundary_values;
-    current_load    = load;
+    boundary_target =
+      scenario->imposed_displacements(dof_handler, mapping_collection, load);
+    current_load = load;
   }
 
   // Bulk: total Lagrangian virtual work int P : Grad(delta u) dV and its
@@ -500,8 +385,7 @@ namespace RingContact
           }
         add_local_system(cell_matrix, cell_rhs, dofs, internal_force);
       }
-    if (pressure_loading)
-      assemble_pressure_load();
+    assemble_boundary_loads();
   }
 
   // Add a cell's (or face's) matrix and right-hand side -R to the system,
@@ -527,16 +411,21 @@ namespace RingContact
       matrix, rhs, dofs, system_matrix, system_rhs);
   }
 
-  // The pressure p on r = R1, on the current configuration: the load
-  // -p n da, with n da = cof(F) N dA (Nanson; in two dimensions the
-  // cofactor det(F) F^-T is linear in F), adds int p phi_i . cof(F) N dA to
-  // the residual and, F = I + Grad u, the tangent int p phi_i . cof(Grad
-  // phi_j) N dA (not symmetric). Small strain: the dead load, cof(F) = I.
+  // The scenario's boundary loads.
+  // A pressure p on the current configuration: the load -p n da, with
+  // n da = cof(F) N dA (Nanson; in two dimensions the cofactor det(F) F^-T
+  // is linear in F), adds int p phi_i . cof(F) N dA to the residual and,
+  // F = I + Grad u, the tangent int p phi_i . cof(Grad phi_j) N dA (not
+  // symmetric). Small strain: the dead load, cof(F) = I. p is evaluated at
+  // the reference position of the quadrature point.
+  // A traction t per reference length: the dead load, - int phi_i . t dA
+  // in the residual, no tangent.
   void
-  RingContactProblem::assemble_pressure_load()
+  RingContactProblem::assemble_boundary_loads()
   {
-    const double p = current_load.pressure;
-    const bool   follower =
+    if (boundary_loads.empty())
+      return;
+    const bool follower =
       parameters.materials.kinematics == Kinematics::finite_strain;
     const auto cofactor = [](const Tensor<2, 2> &G) {
       Tensor<2, 2> C;
@@ -554,58 +443,72 @@ namespace RingContact
                                        face_q,
                                        update_values | update_gradients |
                                          update_normal_vectors |
+                                         update_quadrature_points |
                                          update_JxW_values);
     std::vector<types::global_dof_index> dofs;
     std::vector<Tensor<2, 2>>            grad_u;
     FullMatrix<double>                   face_matrix;
     Vector<double>                       face_rhs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() == Ids::outer_boundary)
-          {
-            hp_face_values.reinit(cell, f);
-            const FEFaceValues<2>  &fv = hp_face_values.get_present_fe_values();
-            const FiniteElement<2> &fe = cell->get_fe();
-            const unsigned int      n  = fe.n_dofs_per_cell();
-            dofs.resize(n);
-            cell->get_dof_indices(dofs);
-            face_matrix.reinit(n, n);
-            face_rhs.reinit(n);
-            grad_u.resize(fv.n_quadrature_points);
-            fv[displacement].get_function_gradients(solution, grad_u);
-            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-              {
-                const Tensor<1, 2> N  = fv.normal_vector(q);
-                const double       dA = fv.JxW(q);
-                const Tensor<1, 2> nda =
-                  (follower ? cofactor(unit_symmetric_tensor<2>() + grad_u[q]) :
-                              Tensor<2, 2>(unit_symmetric_tensor<2>())) *
-                  N * dA;
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    const unsigned int c =
-                      fe.system_to_component_index(i).first;
-                    if (c >= 2)
-                      continue;
-                    face_rhs(i) -= p * fv.shape_value(i, q) * nda[c];
-                    if (!follower)
-                      continue;
-                    for (unsigned int j = 0; j < n; ++j)
-                      {
-                        const unsigned int d =
-                          fe.system_to_component_index(j).first;
-                        if (d >= 2)
-                          continue;
-                        Tensor<2, 2> G;
-                        G[d] = fv.shape_grad(j, q);
-                        face_matrix(i, j) +=
-                          p * fv.shape_value(i, q) * (cofactor(G) * N)[c] * dA;
-                      }
-                  }
-              }
-            add_local_system(face_matrix, face_rhs, dofs, external_force);
-          }
+    for (const BoundaryLoad &load : boundary_loads)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == load.boundary_id)
+            {
+              hp_face_values.reinit(cell, f);
+              const FEFaceValues<2> &fv = hp_face_values.get_present_fe_values();
+              const FiniteElement<2> &fe       = cell->get_fe();
+              const unsigned int      n        = fe.n_dofs_per_cell();
+              const bool              pressure = load.type ==
+                                    BoundaryLoad::Type::pressure;
+              dofs.resize(n);
+              cell->get_dof_indices(dofs);
+              face_matrix.reinit(n, n);
+              face_rhs.reinit(n);
+              grad_u.resize(fv.n_quadrature_points);
+              fv[displacement].get_function_gradients(solution, grad_u);
+              for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                {
+                  const Tensor<1, 2> value =
+                    load.value(fv.quadrature_point(q), current_load);
+                  const double       p  = value[0];
+                  const Tensor<1, 2> N  = fv.normal_vector(q);
+                  const double       dA = fv.JxW(q);
+                  // The force per unit of the face's measure, times dA.
+                  const Tensor<1, 2> force =
+                    pressure ?
+                      Tensor<1, 2>(-p *
+                                   ((follower ?
+                                       cofactor(unit_symmetric_tensor<2>() +
+                                                grad_u[q]) :
+                                       Tensor<2, 2>(unit_symmetric_tensor<2>())) *
+                                    N) *
+                                   dA) :
+                      Tensor<1, 2>(value * dA);
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int c =
+                        fe.system_to_component_index(i).first;
+                      if (c >= 2)
+                        continue;
+                      face_rhs(i) += fv.shape_value(i, q) * force[c];
+                      if (!pressure || !follower)
+                        continue;
+                      for (unsigned int j = 0; j < n; ++j)
+                        {
+                          const unsigned int d =
+                            fe.system_to_component_index(j).first;
+                          if (d >= 2)
+                            continue;
+                          Tensor<2, 2> G;
+                          G[d] = fv.shape_grad(j, q);
+                          face_matrix(i, j) += p * fv.shape_value(i, q) *
+                                               (cofactor(G) * N)[c] * dA;
+                        }
+                    }
+                }
+              add_local_system(face_matrix, face_rhs, dofs, external_force);
+            }
   }
 
   // Pair, choose the active set, and assemble the Newton system at the
@@ -959,8 +862,19 @@ namespace RingContact
     return true;
   }
 
-  // The quantities of SSNP152 after a step: pressure at node A against
-  // sigma_n, L2 error over the slave surface, extreme pressures.
+  double
+  RingContactProblem::reported_pressure(
+    const types::global_dof_index dof) const
+  {
+    const double lambda = solution(dof);
+    return parameters.contact.reported_pressure == PressureMeasure::cauchy ?
+             lambda :
+             lambda * contact->stretch_at(dof);
+  }
+
+  // The quantities after a step: the pressure at the probe (node A of
+  // SSNP152) against the scenario's reference, the L2 error over the slave
+  // surface, extreme pressures, and the quantities a general problem checks.
   void
   RingContactProblem::postprocess_step(const unsigned int step,
                                        const unsigned int iterations,
@@ -970,10 +884,7 @@ namespace RingContact
     TimerOutput::Scope    t(timer, "postprocessing");
     const PressureMeasure measure  = parameters.contact.reported_pressure;
     const auto            reported = [&](const types::global_dof_index dof) {
-      const double lambda = solution(dof);
-      return measure == PressureMeasure::cauchy ?
-                          lambda :
-                          lambda * contact->stretch_at(dof);
+      return reported_pressure(dof);
     };
     HistoryRow row;
     row.scheme         = scheme.name();
@@ -982,9 +893,7 @@ namespace RingContact
     row.load_factor    = current_load.pressure;
     row.rotation       = current_load.rotation_elements;
     row.pressure_A     = reported(probe_dof);
-    row.analytic       = patch_test ?
-                           current_load.pressure :
-                           analytic.contact_pressure(current_load.pressure);
+    row.analytic       = scenario->reference_pressure(current_load);
     row.relative_error = (row.pressure_A - row.analytic) / row.analytic;
     row.l2_relative_error =
       contact->l2_relative_error(solution, row.analytic, measure);
@@ -999,9 +908,23 @@ namespace RingContact
     row.step_cuts         = cuts;
     row.active_nodes      = contact->n_active();
     row.wall_time         = wall_time;
+    for (const auto &check : parameters.problem.checks)
+      row.quantities.push_back(checked_quantity(check));
     history_rows.push_back(row);
 
-    if (parameters.output.print_steps)
+    if (parameters.output.print_steps && parameters.general())
+      {
+        log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
+            << std::setprecision(4) << row.time << "  Newton " << iterations
+            << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
+            << "  active " << row.active_nodes << "  p_probe "
+            << std::setprecision(7) << row.pressure_A;
+        for (unsigned int k = 0; k < parameters.problem.checks.size(); ++k)
+          log << "  " << parameters.problem.checks[k].description() << " "
+              << std::setprecision(7) << row.quantities[k];
+        log << '\n';
+      }
+    else if (parameters.output.print_steps)
       log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
           << std::setprecision(4) << row.time << "  p " << std::setw(10)
           << std::setprecision(6) << row.load_factor << "  s " << std::setw(5)
@@ -1016,7 +939,7 @@ namespace RingContact
     // A converged state with every contact node open under a load that
     // closes the contact (analytic pressure > 0) is another solution of the
     // discrete problem, not the one sought: say so, it is otherwise silent.
-    if (!patch_test && row.analytic > 0 && row.active_nodes == 0)
+    if (row.analytic > 0 && row.active_nodes == 0)
       log << "Warning: step " << step
           << ": Newton converged with the contact open at every node, while "
              "the analytic solution is closed contact (pressure "
@@ -1028,6 +951,108 @@ namespace RingContact
       output_results(step);
   }
 
+  // A general problem's checked quantity at the current (converged) state.
+  double
+  RingContactProblem::checked_quantity(
+    const ProblemCheckParameters &check) const
+  {
+    const ContactSurface &slave = contact->slave_surface();
+    switch (check.quantity)
+      {
+        case ProblemQuantity::contact_pressure:
+          return reported_pressure(
+            contact->multiplier_dof_nearest_to(check.point));
+
+          // The farthest slave node in contact (positive pressure) from the
+          // point, or, where a node in contact is next to an open one on a
+          // segment, the midpoint between the two: the edge of the contact
+          // to half a node spacing.
+        case ProblemQuantity::contact_half_width:
+          {
+            double             width = 0;
+            const auto        &nodes = slave.multiplier_nodes();
+            std::vector<double> t(nodes.begin(), nodes.end());
+            std::sort(t.begin(), t.end());
+            for (unsigned int s = 0; s < slave.segments().size(); ++s)
+              {
+                const auto &segment = slave.segments()[s];
+                if (segment.is_copy)
+                  continue;
+                const auto dof_at = [&](const double t_node) {
+                  for (unsigned int k = 0; k < nodes.size(); ++k)
+                    if (nodes[k] == t_node)
+                      return segment.multiplier_dofs[k];
+                  return segment.multiplier_dofs[0];
+                };
+                for (unsigned int k = 0; k < t.size(); ++k)
+                  {
+                    const Point<2> x  = slave.reference_point(s, t[k]).x;
+                    const bool     in = reported_pressure(dof_at(t[k])) > 0;
+                    if (in)
+                      width = std::max(width, x.distance(check.point));
+                    for (const int side : {-1, 1})
+                      {
+                        const int j = static_cast<int>(k) + side;
+                        if (!in || j < 0 || j >= static_cast<int>(t.size()))
+                          continue;
+                        if (reported_pressure(dof_at(t[j])) > 0)
+                          continue;
+                        const Point<2> edge =
+                          slave.reference_point(s, 0.5 * (t[k] + t[j])).x;
+                        width = std::max(width, edge.distance(check.point));
+                      }
+                  }
+              }
+            return width;
+          }
+
+          // The sum of the nodal forces of the boundary's unknowns: the
+          // internal force, which at a converged state balances what acts
+          // there from outside (a support's reaction, an applied load).
+        case ProblemQuantity::resultant_force_x:
+        case ProblemQuantity::resultant_force_y:
+          {
+            const unsigned int component =
+              check.quantity == ProblemQuantity::resultant_force_x ? 0 : 1;
+            std::vector<bool> mask(3, false);
+            mask[component] = true;
+            const IndexSet dofs =
+              DoFTools::extract_boundary_dofs(dof_handler,
+                                              ComponentMask(mask),
+                                              {static_cast<types::boundary_id>(
+                                                check.boundary_id)});
+            double force = 0;
+            for (const auto i : dofs)
+              force += internal_force(i);
+            return force;
+          }
+
+        case ProblemQuantity::displacement_x:
+        case ProblemQuantity::displacement_y:
+          {
+            Vector<double> value(3);
+            try
+              {
+                VectorTools::point_value(
+                  mapping_collection, dof_handler, solution, check.point, value);
+              }
+            catch (...)
+              {
+                std::ostringstream where;
+                where << check.point;
+                throw std::runtime_error(check.name + ": the point (" +
+                                         where.str() +
+                                         ") is in no cell of the mesh");
+              }
+            return value(check.quantity == ProblemQuantity::displacement_x ? 0 :
+                                                                             1);
+          }
+        case ProblemQuantity::none:
+          break;
+      }
+    return std::nan("");
+  }
+
   void
   RingContactProblem::output_results(const unsigned int step)
   {
@@ -1037,9 +1062,10 @@ namespace RingContact
         const unsigned int subdivisions =
           parameters.output.vtu_subdivisions > 0 ?
             parameters.output.vtu_subdivisions :
-            std::max(std::max(parameters.finite_elements.mapping_degree, 1u),
-                     std::max(parameters.finite_elements.degree_outer,
-                              parameters.finite_elements.degree_inner));
+            std::max({parameters.finite_elements.mapping_degree,
+                      1u,
+                      bodies[0].degree,
+                      bodies[1].degree});
         vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
                                                  scheme.tag(),
                                                  subdivisions);

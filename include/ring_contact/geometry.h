@@ -36,7 +36,8 @@ namespace RingContact
     read_gmsh(Triangulation<2>  &triangulation,
               const std::string &filename,
               const GeoNumbers  &geo_numbers   = {},
-              unsigned int       element_order = 1);
+              unsigned int       element_order = 1,
+              bool               on_circles    = true);
 
     /// Throw a one-line error, before anything large is allocated, if a mesh
     /// of `n_coarse_cells` cells refined as the parameters say would need
@@ -58,6 +59,15 @@ namespace RingContact
     void
     check_rings(const Triangulation<2> &triangulation,
                 const Parameters       &parameters);
+
+    /// The same for a general problem: every cell in one of the two
+    /// bodies, each body present, every boundary tag that a condition, a
+    /// check or the contact pair names present, the slave and master
+    /// surfaces each on one body and not the same one, and the multiplier
+    /// degree at most the slave body's.
+    void
+    check_bodies(const Triangulation<2> &triangulation,
+                 const Parameters       &parameters);
   } // namespace Geometry
 } // namespace RingContact
 

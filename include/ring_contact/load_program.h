@@ -15,6 +15,7 @@ namespace RingContact
   {
     double pressure;          ///< equivalent external pressure p [Pa]
     double rotation_elements; ///< rotation parameter s (elements turned)
+    double time = 0;          ///< the pseudo-time t
   };
 
   class LoadProgram

@@ -8,6 +8,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ring_contact/problem_description.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,7 +92,8 @@ namespace RingContact
   enum class LoadProgramType
   {
     ramp,    ///< p(t) = p0 10^(t - 1.1), no rotation (modelisations A, B, H)
-    rotation ///< p fixed, inner boundary turned through s elements (C-G)
+    rotation, ///< p fixed, inner boundary turned through s elements (C-G)
+    steps     ///< given pseudo-times (Scenario = general)
   };
 
   /// The checked quantity of a verdict.
@@ -210,6 +213,8 @@ namespace RingContact
     double          rotation_pressure;
     unsigned int    rotation_steps;
     double          rotation_elements; ///< final s
+    /// Program = steps: the pseudo-time at the end of each step.
+    std::vector<double> time_points;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -272,6 +277,16 @@ namespace RingContact
     NewtonParameters        newton;
     OutputParameters        output;
     CheckParameters         checks;
+    /// The scenario, and for a general problem its bodies, boundary
+    /// conditions and checks.
+    ProblemParameters problem;
+
+    /// Scenario = general.
+    bool
+    general() const
+    {
+      return problem.scenario == ScenarioType::general;
+    }
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -286,6 +301,9 @@ namespace RingContact
     /// checked steps against the load program.
     void
     check_consistency() const;
+    /// The same for Problem/Scenario = general.
+    void
+    check_general_consistency() const;
 
     /// Print every entry with default and documentation.
     static void

@@ -38,6 +38,8 @@ namespace RingContact
     unsigned int step_cuts;
     unsigned int active_nodes;
     double       wall_time; ///< seconds spent on the step
+    /// A general problem: the value of each of its checks' quantities.
+    std::vector<double> quantities;
   };
 
   /// One checked value and its outcome.
@@ -63,6 +65,15 @@ namespace RingContact
                   const std::vector<HistoryRow> &history,
                   const unsigned int             n_steps);
 
+  /// The verdicts of a general problem's checks (Check 1, 2, ...) from the
+  /// quantities of its history rows, the references evaluated at each
+  /// row's pseudo-time; a checked step not reached fails, as above.
+  std::vector<Verdict>
+  evaluate_checks(const ProblemParameters       &problem,
+                  const std::string             &scheme,
+                  const std::vector<HistoryRow> &history,
+                  const unsigned int             n_steps);
+
   /// The verdict table; returns true if every check passes.
   bool
   print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts);
@@ -76,8 +87,9 @@ namespace RingContact
 
   /// history.csv with a header row, replaced atomically.
   void
-  write_history(const std::string             &filename,
-                const std::vector<HistoryRow> &history);
+  write_history(const std::string              &filename,
+                const std::vector<HistoryRow>  &history,
+                const std::vector<std::string> &extra_columns = {});
 
   /// history.csv as a run writes it: the header, then one row per converged
   /// step, each on disk (fsync'ed) before append() returns; a failed write
@@ -85,7 +97,9 @@ namespace RingContact
   class HistoryFile
   {
   public:
-    explicit HistoryFile(const std::string &filename);
+    /// `extra_columns`: the names of the rows' quantities.
+    explicit HistoryFile(const std::string              &filename,
+                         const std::vector<std::string> &extra_columns = {});
 
     void
     append(const HistoryRow &row);

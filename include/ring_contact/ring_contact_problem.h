@@ -26,6 +26,7 @@
 #include <ring_contact/material.h>
 #include <ring_contact/parameters.h>
 #include <ring_contact/postprocessing.h>
+#include <ring_contact/scenario.h>
 
 #include <functional>
 #include <map>
@@ -200,9 +201,7 @@ namespace RingContact
     bool
     solve_newton_step(unsigned int &iterations, double &final_residual);
     void
-    add_rigid_body_constraints(AffineConstraints<double> &target) const;
-    void
-    assemble_pressure_load();
+    assemble_boundary_loads();
     void
     add_local_system(const FullMatrix<double>                   &matrix,
                      const Vector<double>                       &rhs,
@@ -222,6 +221,13 @@ namespace RingContact
                      const double       wall_time);
     void
     output_results(const unsigned int step);
+    /// A quantity of a general problem's check at the current state.
+    double
+    checked_quantity(const ProblemCheckParameters &check) const;
+    /// The contact pressure reported at a multiplier node (Cauchy or
+    /// nominal, as Contact/Reported pressure says).
+    double
+    reported_pressure(const types::global_dof_index dof) const;
 
     const Parameters        parameters;
     const IntegrationScheme scheme;
@@ -233,13 +239,16 @@ namespace RingContact
     hp::MappingCollection<2>         mapping_collection;
     hp::QCollection<2>               q_collection;
     const FEValuesExtractors::Vector displacement;
-    std::map<unsigned int, Material> materials; ///< by ring (material id)
-    types::material_id               slave_ring;
-    const AnalyticSolution           analytic;
-    const LoadProgram                load_program;
-    /// The contact patch test (two blocks) instead of the rings.
-    const bool                        patch_test;
-    std::unique_ptr<ContactInterface> contact;
+    /// The problem posed: bodies, boundary data, reference.
+    const std::unique_ptr<const Scenario> scenario;
+    const std::vector<Body>               bodies;
+    const std::vector<BoundaryLoad>       boundary_loads;
+    std::map<unsigned int, Material>      materials; ///< by material id
+    /// The finite element (and mapping) of each body's cells.
+    std::map<types::material_id, unsigned int> fe_index_of;
+    types::material_id                         slave_ring;
+    const LoadProgram                          load_program;
+    std::unique_ptr<ContactInterface>          contact;
     /// Cyclic symmetry: the nodes of the sector's end side and their images.
     std::vector<CyclicSymmetry::NodePair> cyclic_pairs;
 
@@ -252,18 +261,17 @@ namespace RingContact
     SparseMatrix<double>      system_matrix;
     Vector<double>            system_rhs;
     Vector<double>            internal_force;
-    /// The pressure load's nodal forces (Loading = pressure), for the scale
-    /// of the residual.
+    /// The boundary loads' nodal forces, for the scale of the residual.
     Vector<double> external_force;
-    /// Loading = pressure: p on r = R1, r = R3 free.
-    const bool pressure_loading;
+    /// The displacement unknowns the scenario imposes.
+    std::vector<types::global_dof_index> imposed_dofs;
 
     /// The constraints of the first update of a load step: the same lines,
     /// with the remaining boundary increment as inhomogeneity (step-44).
     AffineConstraints<double> lifting_constraints;
     /// Assemble and solve with lifting_constraints.
     bool lifting = false;
-    /// The displacements of r = R1 and r = R3 at the current load state.
+    /// The imposed displacements at the current load state.
     std::map<types::global_dof_index, double> boundary_target;
 
     /// Per row, the sum of the magnitudes of the terms that make up the

@@ -1,0 +1,62 @@
+// The value checks shared by every subsection's parse_parameters(): each
+// failure is a ParameterError that names the subsection and the entry
+// (Parameters::read() adds the file and line that set the value).
+#ifndef ring_contact_parameter_checks_h
+#define ring_contact_parameter_checks_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  namespace ParameterChecks
+  {
+    using namespace dealii;
+
+    /// "1e+06", "0.5": a number as the messages show it.
+    std::string
+    to_text(const double value);
+
+    /// Throw a one-line error that names the entry, when `ok` is false.
+    void
+    require(const bool         ok,
+            const std::string &subsection,
+            const std::string &entry,
+            const std::string &what);
+
+    /// The value of an entry as a finite double between 1e-300 and 1e300
+    /// in magnitude, or 0.
+    double
+    get_double(ParameterHandler  &prm,
+               const std::string &subsection,
+               const std::string &entry);
+
+    /// The value of an integer entry, in [lowest, highest].
+    unsigned int
+    get_count(ParameterHandler  &prm,
+              const std::string &subsection,
+              const std::string &entry,
+              const long         lowest,
+              const long         highest);
+
+    /// An entry 'Steps': 'all' (every_step), 'last' (invalid_unsigned_int),
+    /// 'none' (empty) or a list of step numbers from 1.
+    void
+    get_steps(ParameterHandler          &prm,
+              const std::string         &subsection,
+              const std::string         &entry,
+              bool                      &every_step,
+              std::vector<unsigned int> &steps);
+
+    /// An entry of two coordinates 'x, y'.
+    std::array<double, 2>
+    get_point(ParameterHandler  &prm,
+              const std::string &subsection,
+              const std::string &entry);
+  } // namespace ParameterChecks
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,168 @@
+// A two-body contact problem written in the parameter file: the bodies (the
+// physical groups of a gmsh mesh, each with its material and elements), the
+// boundary conditions per boundary tag (imposed displacement, traction, or
+// pressure on the current configuration), and checks of computed
+// quantities against references, all as expressions of x, y, the
+// pseudo-time t and named constants (deal.II's FunctionParser, muparser
+// syntax). The contact pair is subsection Contact, the load program
+// subsection 'Load program' with Program = steps. SSNP152 is the other
+// scenario: its boundary data and reference are its analytic solution.
+//
+//   subsection Problem
+//     set Scenario  = general
+//     set Constants = R = 1, q = 1e6
+//   end
+//   subsection Body 1
+//     set Material id = 1
+//     set Young's modulus = 2e11
+//   end
+//   subsection Boundary condition 1
+//     set Boundary id = 3
+//     set Type        = traction
+//     set Value       = 0; -q * t
+//   end
+//   subsection Check 1
+//     set Quantity  = contact pressure
+//     set Point     = 0, 0
+//     set Reference = sqrt(...)
+//   end
+#ifndef ring_contact_problem_description_h
+#define ring_contact_problem_description_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// Which problem the parameter file poses.
+  enum class ScenarioType
+  {
+    ssnp152, ///< the rings of SSNP152 (or, with Mesh source = patch test,
+             ///< the contact patch test), with their analytic solutions
+    general  ///< bodies, boundary conditions and checks as written in the file
+  };
+
+  /// One body of a general problem: a physical group of the mesh.
+  struct BodyParameters
+  {
+    unsigned int material_id; ///< the physical group's tag
+    double       youngs_modulus;
+    double       poissons_ratio;
+    unsigned int degree; ///< displacement degree
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &subsection);
+  };
+
+  enum class BoundaryConditionType
+  {
+    none,         ///< the slot is not used
+    displacement, ///< imposed displacement components
+    traction,     ///< a dead load per reference length [N/m per unit thickness]
+    pressure      ///< p on the current configuration (follower) [Pa]
+  };
+
+  /// One boundary condition of a general problem, on one boundary tag.
+  struct BoundaryConditionParameters
+  {
+    BoundaryConditionType type = BoundaryConditionType::none;
+    unsigned int          boundary_id;
+    /// Displacement: components in polar form (u_r, u_theta about the
+    /// origin) instead of (u_x, u_y).
+    bool polar = false;
+    /// Displacement: which components are imposed (x/r, y/theta).
+    std::array<bool, 2> components = {{true, true}};
+    /// The expressions of x, y and t: displacement and traction two
+    /// (the components not imposed are not used), pressure one.
+    std::vector<std::string> expressions;
+    std::string              name; ///< "Boundary condition 3"
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler                    &prm,
+                     const std::string                   &subsection,
+                     const std::map<std::string, double> &constants);
+  };
+
+  enum class ProblemQuantity
+  {
+    none,
+    contact_pressure,   ///< at the slave node nearest to the point
+    contact_half_width, ///< farthest extent of the contact from the point
+    resultant_force_x,  ///< sum of the nodal forces of a boundary
+    resultant_force_y,
+    displacement_x, ///< at the point (reference coordinates)
+    displacement_y
+  };
+
+  /// One check of a general problem: a computed quantity against a
+  /// reference expression, at chosen steps.
+  struct ProblemCheckParameters
+  {
+    ProblemQuantity quantity = ProblemQuantity::none;
+    Point<2>        point;
+    unsigned int    boundary_id;
+    /// The reference, an expression of x, y (the point) and t.
+    std::string               reference;
+    double                    tolerance;
+    bool                      relative;
+    bool                      every_step;
+    std::vector<unsigned int> steps; ///< invalid_unsigned_int: the last
+    std::string               name;  ///< "Check 2"
+
+    /// "contact pressure at (0, 0)", "force y on 3", ...
+    std::string
+    description() const;
+    /// A column name for history.csv: "contact_pressure", "force_y_3", ...
+    std::string
+    column() const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler                    &prm,
+                     const std::string                   &subsection,
+                     const std::map<std::string, double> &constants);
+  };
+
+  /// Subsections Problem, Body 1/2, Boundary condition 1..n, Check 1..n.
+  struct ProblemParameters
+  {
+    static constexpr unsigned int n_bodies              = 2;
+    static constexpr unsigned int max_boundary_conditions = 12;
+    static constexpr unsigned int max_checks              = 12;
+
+    ScenarioType                                scenario;
+    std::map<std::string, double>               constants;
+    std::array<BodyParameters, n_bodies>        bodies;
+    std::vector<BoundaryConditionParameters>    boundary_conditions;
+    std::vector<ProblemCheckParameters>         checks;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /// An expression of x, y and t with the problem's constants, n components
+  /// separated by ';' (deal.II's FunctionParser). Throws a one-line message
+  /// naming `what` if it does not parse or does not evaluate at the origin.
+  std::unique_ptr<FunctionParser<2>>
+  make_expression(const std::vector<std::string>      &expressions,
+                  const std::map<std::string, double> &constants,
+                  const std::string                   &what);
+} // namespace RingContact
+
+#endif

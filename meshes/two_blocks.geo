@@ -1,0 +1,29 @@
+// Two blocks pressed together, the contact patch test written as a general
+// problem: the lower block [0, 1] x [-0.5, 0] (physical surface 1, its top
+// the master, 20) and the upper block [0, 1] x [0, 0.5] (physical surface 2,
+// its bottom the slave, 10), with nl and nu elements along the interface
+// (non-matching meshes). Tags: 21 the lower block's bottom, 22 and 12 the
+// left sides (x = 0), 11 the upper block's top, 13 and 23 the right sides.
+DefineConstant[ nl = 5, nu = 7, nh = 3 ];
+Point(1) = {0, -0.5, 0}; Point(2) = {1, -0.5, 0};
+Point(3) = {1, 0, 0};    Point(4) = {0, 0, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Point(5) = {0, 0, 0};    Point(6) = {1, 0, 0};
+Point(7) = {1, 0.5, 0};  Point(8) = {0, 0.5, 0};
+Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
+Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
+Transfinite Curve{1, 3} = nl + 1; Transfinite Curve{2, 4} = nh + 1;
+Transfinite Curve{5, 7} = nu + 1; Transfinite Curve{6, 8} = nh + 1;
+Transfinite Surface{1}; Transfinite Surface{2};
+Recombine Surface{1, 2};
+Physical Surface(1) = {1};
+Physical Surface(2) = {2};
+Physical Curve(20) = {3};
+Physical Curve(21) = {1};
+Physical Curve(22) = {4};
+Physical Curve(23) = {2};
+Physical Curve(10) = {5};
+Physical Curve(11) = {7};
+Physical Curve(12) = {8};
+Physical Curve(13) = {6};
