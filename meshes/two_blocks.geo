@@ -4,11 +4,18 @@
 // its bottom the slave, 10), with nl and nu elements along the interface
 // (non-matching meshes). Tags: 21 the lower block's bottom, 22 and 12 the
 // left sides (x = 0), 11 the upper block's top, 13 and 23 the right sides.
-DefineConstant[ nl = 5, nu = 7, nh = 3 ];
+// clockwise = 1 draws the lower block's outline clockwise, so that gmsh
+// writes its cells clockwise (the program must reorient them).
+DefineConstant[ nl = 5, nu = 7, nh = 3, clockwise = 0 ];
 Point(1) = {0, -0.5, 0}; Point(2) = {1, -0.5, 0};
 Point(3) = {1, 0, 0};    Point(4) = {0, 0, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
-Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+If (clockwise)
+  Curve Loop(1) = {-4, -3, -2, -1};
+Else
+  Curve Loop(1) = {1, 2, 3, 4};
+EndIf
+Plane Surface(1) = {1};
 Point(5) = {0, 0, 0};    Point(6) = {1, 0, 0};
 Point(7) = {1, 0.5, 0};  Point(8) = {0, 0.5, 0};
 Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};

@@ -1039,7 +1039,7 @@ namespace RingContact
             catch (...)
               {
                 std::ostringstream where;
-                where << check.point;
+                where << check.point[0] << ", " << check.point[1];
                 throw std::runtime_error(check.name + ": the point (" +
                                          where.str() +
                                          ") is in no cell of the mesh");
@@ -1091,6 +1091,10 @@ namespace RingContact
         << " cells, " << dof_handler.n_dofs() << " unknowns, "
         << contact->multiplier_dofs().size() << " contact pressure nodes, "
         << load_program.n_steps() << " steps\n";
+    // Every checked quantity can be evaluated (a point outside the mesh is
+    // an error now, not after the first step has been solved).
+    for (const auto &check : parameters.problem.checks)
+      checked_quantity(check);
     bool ok = true;
     for (unsigned int step = 1; step <= load_program.n_steps() && ok; ++step)
       {

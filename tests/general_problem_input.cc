@@ -1,0 +1,169 @@
+// A general problem (Problem/Scenario = general) with bad input gets a
+// one-line error that names what is wrong, never a crash or a silently
+// ignored entry: each case changes one thing in prm/two_blocks.prm (which
+// itself solves, see the test two_blocks) and runs the real executable.
+#include "run_program.h"
+
+#include <fstream>
+
+using RingContactTests::check;
+
+namespace
+{
+  // prm/two_blocks.prm with the mesh found from the test's folder, without
+  // output, and `changes` after it.
+  void
+  expect_error(const std::string &name,
+               const std::string &changes,
+               const std::string &expected)
+  {
+    {
+      std::ofstream prm(name + ".prm");
+      prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+          << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+             "/../meshes/two_blocks.geo\nend\n"
+          << "subsection Output\n set VTU interval = 0\n"
+             " set Write history = false\n set Print timing = false\n"
+             " set Print steps = false\nend\n"
+          << "subsection Newton\n set Verbose = false\nend\n"
+          << changes;
+    }
+    const auto  result = RingContactTests::run_program(name + ".prm");
+    std::string last;
+    for (const auto &line : result.lines)
+      if (!line.empty())
+        last = line;
+    // The message may name the source folder: show it from "error:",
+    // without the folder.
+    const auto  shown = last.find("error:");
+    std::string text  = shown == std::string::npos ? last : last.substr(shown);
+    for (const std::string folder :
+         {std::string(SOURCE_DIR "/../"),
+          std::string(RING_CONTACT_SOURCE_DIR "/")})
+      for (auto at = text.find(folder); at != std::string::npos;
+           at      = text.find(folder))
+        text.erase(at, folder.size());
+    RingContactTests::deallog_file << name << ": exit code "
+                                   << result.exit_code << ": " << text
+                                   << std::endl;
+    check(result.signal == 0 && result.exit_code == 1,
+          name + ": the program must fail with exit code 1");
+    check(shown != std::string::npos &&
+            last.find(expected) != std::string::npos,
+          name + ": message must mention '" + expected + "', got: " + last);
+  }
+} // namespace
+
+int
+main()
+{
+  // The problem itself solves: exit code 0, every check passes.
+  {
+    std::ofstream prm("valid.prm");
+    prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+        << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+           "/../meshes/two_blocks.geo\nend\n"
+        << "subsection Output\n set VTU interval = 0\n"
+           " set Write history = false\nend\n";
+    prm.close();
+    const auto result = RingContactTests::run_program("valid.prm");
+    check(result.exit_code == 0 && result.printed("7 of 7 checks pass"),
+          "two_blocks.prm must solve and pass its checks");
+    RingContactTests::deallog_file << "valid: 7 of 7 checks pass" << std::endl;
+  }
+
+  expect_error("unknown_body",
+               "subsection Body 2\n set Material id = 7\nend\n",
+               "has cells of physical group 2, which is neither");
+  expect_error("same_body_twice",
+               "subsection Body 2\n set Material id = 1\nend\n",
+               "is that of Body 1");
+  expect_error("missing_boundary",
+               "subsection Boundary condition 5\n set Type = traction\n"
+               " set Boundary id = 99\nend\n",
+               "no boundary with tag 99 (Boundary condition 5)");
+  expect_error("condition_on_contact_surface",
+               "subsection Boundary condition 5\n set Type = traction\n"
+               " set Boundary id = 10\nend\n",
+               "is a contact surface");
+  expect_error("two_loads_on_one_boundary",
+               "subsection Boundary condition 5\n set Type = pressure\n"
+               " set Boundary id = 11\n set Value = 1\nend\n",
+               "has two loads");
+  expect_error("bad_expression",
+               "subsection Boundary condition 1\n set Value = 0; -p * (t\n"
+               "end\n",
+               "is not a usable function");
+  expect_error("unknown_variable",
+               "subsection Boundary condition 1\n set Value = 0; -p * z\n"
+               "end\n",
+               "is not a usable function");
+  expect_error("wrong_number_of_expressions",
+               "subsection Boundary condition 1\n set Value = -p\nend\n",
+               "a traction needs 2");
+  expect_error("bad_constant",
+               "subsection Problem\n set Constants = p = 1e6, q = 2 * r\n"
+               "end\n",
+               "not a number nor an expression");
+  expect_error("constant_named_t",
+               "subsection Problem\n set Constants = t = 1\nend\n",
+               "every expression already has");
+  expect_error("one_polar_component",
+               "subsection Boundary condition 2\n set Components = r\nend\n",
+               "a polar condition imposes both");
+  expect_error("unknown_component",
+               "subsection Boundary condition 2\n set Components = z\nend\n",
+               "the components are x, y");
+  expect_error("time_points_not_increasing",
+               "subsection Load program\n set Time points = 0.5, 0.2\nend\n",
+               "must be increasing");
+  expect_error("checked_step_beyond_the_program",
+               "subsection Check 1\n set Steps = 3\nend\n",
+               "names step 3, but the load program has 2 steps");
+  expect_error("point_outside_the_mesh",
+               "subsection Check 2\n set Point = 5, 5\nend\n",
+               "is in no cell of the mesh");
+  expect_error("bad_reference",
+               "subsection Check 1\n set Reference = p *\nend\n",
+               "is not a usable function");
+  expect_error("ring_entry_in_a_general_problem",
+               "subsection Materials\n set Young's modulus outer ring = 2e11\n"
+               "end\n",
+               "is read for SSNP152 only");
+  expect_error("ssnp152_checks_in_a_general_problem",
+               "subsection Checks\n set Tolerance = 0.1\nend\n",
+               "is read for SSNP152 only");
+  expect_error("ramp_for_a_general_problem",
+               "subsection Load program\n set Program = ramp\nend\n",
+               "must be 'steps'");
+  expect_error("generated_mesh_for_a_general_problem",
+               "subsection Mesh\n set Mesh source = generated\nend\n",
+               "must be 'gmsh file'");
+  expect_error("slave_and_master_on_one_body",
+               "subsection Contact\n set Master boundary = 13\nend\n",
+               "belong to the same body");
+  expect_error("multiplier_above_the_slave_degree",
+               "subsection Finite elements\n set Multiplier degree = 2\nend\n",
+               "exceeds the displacement degree of the slave body");
+  expect_error("curved_quadratic_mesh",
+               "subsection Mesh\n set Mesh file = " SOURCE_DIR
+               "/../meshes/ssnp152g.msh\nend\n",
+               "curved quadratic mesh is refused");
+
+  // An entry of a general problem in an SSNP152 file is refused, not
+  // ignored.
+  {
+    std::ofstream prm("general_entry_in_ssnp152.prm");
+    prm << "include " SOURCE_DIR "/../prm/ssnp152a.prm\n"
+        << "subsection Boundary condition 1\n set Type = traction\nend\n";
+  }
+  const auto result =
+    RingContactTests::run_program("general_entry_in_ssnp152.prm");
+  check(result.exit_code == 1 &&
+          result.printed("is read only when Problem/Scenario = general"),
+        "general_entry_in_ssnp152: refused");
+  RingContactTests::deallog_file
+    << "general_entry_in_ssnp152: exit code 1: is read only when "
+       "Problem/Scenario = general"
+    << std::endl;
+}
