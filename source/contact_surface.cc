@@ -3,6 +3,7 @@
 #include <deal.II/grid/manifold.h>
 #include <deal.II/physics/transformations.h>
 
+#include <ring_contact/components.h>
 #include <ring_contact/contact_surface.h>
 
 #include <boost/geometry/index/rtree.hpp>
@@ -151,12 +152,12 @@ namespace RingContact
                 const auto &base =
                   fe.base_element(fe.component_to_base_index(component).first);
                 const double t = base.unit_face_support_point(index_in_base)[0];
-                if (component == 0)
+                if (component == Components::ux)
                   {
                     segment.dofs_x.push_back(face_dofs[i]);
                     u_nodes.push_back(t);
                   }
-                else if (component == 1)
+                else if (component == Components::uy)
                   segment.dofs_y.push_back(face_dofs[i]);
                 else
                   {

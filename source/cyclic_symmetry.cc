@@ -58,7 +58,7 @@ namespace RingContact
       {
         Point<2>                               position;
         types::material_id                     ring;
-        std::array<types::global_dof_index, 3> dofs;
+        std::array<types::global_dof_index, Components::n_components> dofs;
       };
       std::array<std::vector<Node>, 2> side_nodes; // start, end
       const double                     tolerance =
@@ -135,8 +135,8 @@ namespace RingContact
     {
       std::map<types::global_dof_index, types::global_dof_index> twins;
       for (const auto &pair : pairs)
-        if (pair.end[2] != numbers::invalid_dof_index)
-          twins[pair.end[2]] = pair.start[2];
+        if (pair.end[Components::multiplier] != numbers::invalid_dof_index)
+          twins[pair.end[Components::multiplier]] = pair.start[Components::multiplier];
       return twins;
     }
 
@@ -157,11 +157,11 @@ namespace RingContact
                 for (unsigned int j = 0; j < 2; ++j)
                   constraints.add_entry(pair.end[i], pair.start[j], R[i][j]);
               }
-          if (pair.end[2] != numbers::invalid_dof_index &&
-              !constraints.is_constrained(pair.end[2]))
+          if (pair.end[Components::multiplier] != numbers::invalid_dof_index &&
+              !constraints.is_constrained(pair.end[Components::multiplier]))
             {
-              constraints.add_line(pair.end[2]);
-              constraints.add_entry(pair.end[2], pair.start[2], 1.0);
+              constraints.add_line(pair.end[Components::multiplier]);
+              constraints.add_entry(pair.end[Components::multiplier], pair.start[Components::multiplier], 1.0);
             }
         }
     }

@@ -226,10 +226,10 @@ namespace RingContact
   OutputFolder::is_result_file(const std::string &name)
   {
     // The names VtuWriter, the history and the verdicts use (scheme tags
-    // are lower-case letters and digits), and their temporaries.
+    // are lower-case letters, digits and hyphens), and their temporaries.
     static const std::regex result(
-      "(history\\.csv|verdicts\\.csv|(solution|slave)-[a-z0-9]+-[0-9]+\\.vtu|"
-      "(solution|slave)-[a-z0-9]+\\.pvd)");
+      "(history\\.csv|verdicts\\.csv|(solution|slave)-[a-z0-9-]+-[0-9]+\\.vtu|"
+      "(solution|slave)-[a-z0-9-]+\\.pvd)");
     static const std::regex temporary("\\.(.+)\\.tmp");
     std::smatch             match;
     if (std::regex_match(name, match, temporary))

@@ -281,20 +281,12 @@ namespace RingContact
   std::string
   IntegrationScheme::tag() const
   {
-    switch (type)
-      {
-        case ContactIntegration::nodal:
-          return "nodal";
-        case ContactIntegration::gauss:
-          return "gauss" + std::to_string(n_points);
-        case ContactIntegration::simpson:
-          return "simpson" + std::to_string(n_points);
-        case ContactIntegration::newton_cotes:
-          return "newtoncotes" + std::to_string(n_points);
-        case ContactIntegration::segment_based:
-          return "segments" + std::to_string(n_points);
-      }
-    return "";
+    // The name in lower case, a hyphen for the space: "gauss-3".
+    std::string tag = name();
+    for (char &c : tag)
+      c = c == ' ' ? '-' :
+                     static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tag;
   }
 
   IntegrationScheme

@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out_faces.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <ring_contact/components.h>
 #include <ring_contact/output_folder.h>
 #include <ring_contact/postprocessing.h>
 
@@ -251,8 +252,10 @@ namespace RingContact
 
   namespace
   {
-    // Cauchy stress (xx, yy, xy) and von Mises stress from the
-    // displacement gradient, with each ring's own material.
+    // The Cauchy stress as a tensor (ParaView computes its principal
+    // values and directions) and the von Mises stress, with sigma_33 in
+    // plane strain, from the displacement gradient and each body's own
+    // material.
     class StressPostprocessor : public DataPostprocessor<2>
     {
     public:
@@ -273,20 +276,34 @@ namespace RingContact
             Tensor<2, 2> H;
             for (unsigned int d = 0; d < 2; ++d)
               H[d] = inputs.solution_gradients[q][d];
-            const Tensor<2, 2> s      = material.cauchy_stress(H);
-            computed_quantities[q][0] = s[0][0];
-            computed_quantities[q][1] = s[1][1];
-            computed_quantities[q][2] = s[0][1];
-            computed_quantities[q][3] =
-              std::sqrt(s[0][0] * s[0][0] + s[1][1] * s[1][1] -
-                        s[0][0] * s[1][1] + 3 * s[0][1] * s[0][1]);
+            const Tensor<2, 2> s = material.cauchy_stress(H);
+            for (unsigned int i = 0; i < 2; ++i)
+              for (unsigned int j = 0; j < 2; ++j)
+                computed_quantities[q][Tensor<2, 2>::component_to_unrolled_index(
+                  TableIndices<2>(i, j))] = s[i][j];
+            computed_quantities[q][4] = material.von_mises_stress(H);
           }
       }
 
       std::vector<std::string>
       get_names() const override
       {
-        return {"stress_xx", "stress_yy", "stress_xy", "von_Mises_stress"};
+        return {"cauchy_stress",
+                "cauchy_stress",
+                "cauchy_stress",
+                "cauchy_stress",
+                "von_Mises_stress"};
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(
+            4, DataComponentInterpretation::component_is_part_of_tensor);
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+        return interpretation;
       }
 
       UpdateFlags
@@ -340,6 +357,27 @@ namespace RingContact
       const types::boundary_id slave_id;
     };
 
+    // The displacement alone (the multiplier component is written on the
+    // slave surface only: in the bulk it would be a field that falls to zero
+    // across the first layer of cells).
+    class DisplacementPostprocessor : public DataPostprocessorVector<2>
+    {
+    public:
+      DisplacementPostprocessor()
+          : DataPostprocessorVector<2>("displacement", update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          for (unsigned int d = 0; d < 2; ++d)
+            computed_quantities[q][d] = inputs.solution_values[q][d];
+      }
+    };
+
     // The gap, stored in the multiplier component of a dof vector.
     class GapPostprocessor : public DataPostprocessorScalar<2>
     {
@@ -354,7 +392,8 @@ namespace RingContact
         std::vector<Vector<double>> &computed_quantities) const override
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-          computed_quantities[q][0] = inputs.solution_values[q][2];
+          computed_quantities[q][0] =
+            inputs.solution_values[q][Components::multiplier];
       }
     };
 
@@ -393,18 +432,17 @@ namespace RingContact
     // Fast zlib: best compression costs more than the solve here.
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
-    // The rings: curved cells as VTK Lagrange quadrilaterals, which deal.II
-    // 9.4 writes correctly for dim = 2.
+    // The bodies: curved cells as VTK Lagrange quadrilaterals, which deal.II
+    // 9.4 writes correctly for dim = 2; displacement, Cauchy stress tensor,
+    // von Mises stress and the material id of each cell.
     Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
       ring_id(cell->active_cell_index()) = cell->material_id();
-    StressPostprocessor stress(materials);
-    DataOut<2>          data_out;
+    StressPostprocessor       stress(materials);
+    DisplacementPostprocessor displacement;
+    DataOut<2>                data_out;
     data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(solution,
-                             names,
-                             DataOut<2>::type_dof_data,
-                             solution_interpretation());
+    data_out.add_data_vector(solution, displacement);
     data_out.add_data_vector(solution, stress);
     data_out.add_data_vector(ring_id, "ring_id");
     DataOutBase::VtkFlags bulk_flags    = flags;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 
+#include <ring_contact/components.h>
 #include <ring_contact/boundary_motion.h>
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
@@ -157,7 +158,7 @@ namespace RingContact
       imposed_dofs.push_back(dof);
     add_constraints(constraints, {}, &is_dirichlet);
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+      DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
     is_multiplier.assign(dof_handler.n_dofs(), false);
     for (const auto i : all_multipliers)
       is_multiplier[i] = true;
@@ -187,7 +188,7 @@ namespace RingContact
 
     // The multiplier lives on the slave surface only.
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+      DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
     const auto slave_multiplier_list = contact->all_multiplier_dofs();
     const std::set<types::global_dof_index> slave_multipliers(
       slave_multiplier_list.begin(), slave_multiplier_list.end());
@@ -342,7 +343,7 @@ namespace RingContact
         for (unsigned int i = 0; i < n; ++i)
           {
             component[i] = fe.system_to_component_index(i).first;
-            if (component[i] < 2)
+            if (Components::is_displacement(component[i]))
               u_dofs.push_back(i);
           }
         grad_phi.resize(u_dofs.size());
@@ -489,7 +490,7 @@ namespace RingContact
                     {
                       const unsigned int c =
                         fe.system_to_component_index(i).first;
-                      if (c >= 2)
+                      if (!Components::is_displacement(c))
                         continue;
                       face_rhs(i) += fv.shape_value(i, q) * force[c];
                       if (!pressure || !follower)
@@ -498,7 +499,7 @@ namespace RingContact
                         {
                           const unsigned int d =
                             fe.system_to_component_index(j).first;
-                          if (d >= 2)
+                          if (!Components::is_displacement(d))
                             continue;
                           Tensor<2, 2> G;
                           G[d] = fv.shape_grad(j, q);
@@ -1013,12 +1014,14 @@ namespace RingContact
         case ProblemQuantity::resultant_force_y:
           {
             const unsigned int component =
-              check.quantity == ProblemQuantity::resultant_force_x ? 0 : 1;
-            std::vector<bool> mask(3, false);
-            mask[component] = true;
+              check.quantity == ProblemQuantity::resultant_force_x ? Components::ux :
+                                                             Components::uy;
+            const ComponentMask mask =
+              Components::displacement_mask(component == Components::ux,
+                                            component == Components::uy);
             const IndexSet dofs =
               DoFTools::extract_boundary_dofs(dof_handler,
-                                              ComponentMask(mask),
+                                              mask,
                                               {static_cast<types::boundary_id>(
                                                 check.boundary_id)});
             double force = 0;
@@ -1030,7 +1033,7 @@ namespace RingContact
         case ProblemQuantity::displacement_x:
         case ProblemQuantity::displacement_y:
           {
-            Vector<double> value(3);
+            Vector<double> value(Components::n_components);
             try
               {
                 VectorTools::point_value(
@@ -1044,8 +1047,9 @@ namespace RingContact
                                          where.str() +
                                          ") is in no cell of the mesh");
               }
-            return value(check.quantity == ProblemQuantity::displacement_x ? 0 :
-                                                                             1);
+            return value(check.quantity == ProblemQuantity::displacement_x ?
+                           Components::ux :
+                           Components::uy);
           }
         case ProblemQuantity::none:
           break;
@@ -1095,6 +1099,9 @@ namespace RingContact
     // an error now, not after the first step has been solved).
     for (const auto &check : parameters.problem.checks)
       checked_quantity(check);
+    // The undeformed state, step 0: the start of every animation.
+    if (parameters.output.vtu_interval > 0)
+      output_results(0);
     bool ok = true;
     for (unsigned int step = 1; step <= load_program.n_steps() && ok; ++step)
       {

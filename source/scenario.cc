@@ -3,6 +3,7 @@
 
 #include <ring_contact/analytic_solution.h>
 #include <ring_contact/boundary_motion.h>
+#include <ring_contact/components.h>
 #include <ring_contact/scenario.h>
 
 #include <array>
@@ -80,16 +81,19 @@ namespace RingContact
         const double angle = 2 * numbers::PI * load.rotation_elements /
                              (parameters.mesh.elements_around *
                               (1u << parameters.mesh.global_refinements));
-        const BoundaryMotion outer(analytic.f_R1(load.pressure), 0.0, 3);
-        const BoundaryMotion inner(analytic.f_R3(load.pressure), angle, 3);
+        const BoundaryMotion outer(analytic.f_R1(load.pressure),
+                                   0.0,
+                                   Components::n_components);
+        const BoundaryMotion inner(analytic.f_R3(load.pressure),
+                                   angle,
+                                   Components::n_components);
         const std::map<types::boundary_id, const Function<2> *> motion = {
           {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
         VectorTools::interpolate_boundary_values(mapping,
                                                  dof_handler,
                                                  motion,
                                                  values,
-                                                 ComponentMask(
-                                                   {true, true, false}));
+                                                 Components::displacement_mask());
         return values;
       }
 
@@ -192,12 +196,13 @@ namespace RingContact
           (0.5 / modulus(m.youngs_modulus_outer, m.poissons_ratio_outer) +
            0.5 / modulus(m.youngs_modulus_inner, m.poissons_ratio_inner));
         std::map<types::global_dof_index, double> values;
-        const ComponentMask vertical({false, true, false});
+        const ComponentMask vertical =
+          Components::displacement_mask(false, true);
         VectorTools::interpolate_boundary_values(
           mapping,
           dof_handler,
           Ids::outer_boundary,
-          Functions::ZeroFunction<2>(3),
+          Functions::ZeroFunction<2>(Components::n_components),
           values,
           vertical);
         VectorTools::interpolate_boundary_values(
@@ -205,14 +210,16 @@ namespace RingContact
           dof_handler,
           Ids::inner_boundary,
           Functions::ConstantFunction<2>(
-            std::vector<double>{0, -shortening, 0}),
+            std::vector<double>{0, -shortening, 0}), // u_x, u_y, multiplier
           values,
           vertical);
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
             if (std::abs(cell->vertex(v)[0]) < 1e-12 &&
                 std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
-              values[cell->vertex_dof_index(v, 0, cell->active_fe_index())] =
+              values[cell->vertex_dof_index(v,
+                                            Components::ux,
+                                            cell->active_fe_index())] =
                 0;
         return values;
       }
@@ -237,7 +244,7 @@ namespace RingContact
       ImposedDisplacement(const BoundaryConditionParameters   &condition,
                           const std::map<std::string, double> &constants,
                           const double                         time)
-          : Function<2>(3, time)
+          : Function<2>(Components::n_components, time)
           , polar(condition.polar)
           , expression(make_expression(condition.expressions,
                                        constants,
@@ -263,13 +270,13 @@ namespace RingContact
             values(0) = u(0);
             values(1) = u(1);
           }
-        values(2) = 0;
+        values(Components::multiplier) = 0;
       }
 
       double
       value(const Point<2> &X, const unsigned int component) const override
       {
-        Vector<double> values(3);
+        Vector<double> values(Components::n_components);
         vector_value(X, values);
         return values(component);
       }
@@ -332,9 +339,8 @@ namespace RingContact
                 condition.boundary_id,
                 motion,
                 these,
-                ComponentMask({condition.components[0],
-                               condition.components[1],
-                               false}));
+                Components::displacement_mask(condition.components[0],
+                                              condition.components[1]));
               for (const auto &[dof, value] : these)
                 values[dof] = value;
             }

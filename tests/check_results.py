@@ -60,11 +60,8 @@ def check_history(path):
 
 
 def scheme_tag(name):
-    """The file name tag of a scheme name ("Gauss 3" -> "gauss3")."""
-    kind, _, n = name.partition(" ")
-    return {"nodal": "nodal", "Gauss": "gauss", "Simpson": "simpson",
-            "Newton-Cotes": "newtoncotes",
-            "segment-based": "segments"}[kind] + n
+    """The file name tag of a scheme name ("Gauss 3" -> "gauss-3")."""
+    return name.lower().replace(" ", "-")
 
 
 def triangulated_measure(cell, points):
@@ -143,6 +140,20 @@ def check_vtu(path):
                     if not math.isfinite(array.GetComponent(t, k)):
                         fail(f"{path}: {what} array {array.GetName()} value "
                              f"{t} is not finite")
+    # The Cauchy stress is a tensor (9 components, as ParaView reads
+    # tensors), symmetric, with nothing out of the plane but sigma_33.
+    stress = grid.GetPointData().GetArray("cauchy_stress")
+    if stress is not None:
+        if stress.GetNumberOfComponents() != 9:
+            fail(f"{path}: cauchy_stress has {stress.GetNumberOfComponents()} "
+                 "components, not the 9 of a tensor")
+        for t in range(stress.GetNumberOfTuples()):
+            s_ = [stress.GetComponent(t, k) for k in range(9)]
+            scale = max(1.0, max(abs(v) for v in s_))
+            if (abs(s_[1] - s_[3]) > 1e-6 * scale or
+                    max(abs(s_[2]), abs(s_[5]), abs(s_[6]), abs(s_[7])) > 0):
+                fail(f"{path}: cauchy_stress at point {t} is not a symmetric "
+                     f"in-plane tensor: {s_}")
     return {"cells": n_cells, "points": n_points, "signed": signed,
             "absolute": absolute, "types": sorted(cell_types),
             "arrays": grid.GetPointData().GetNumberOfArrays()}
@@ -213,7 +224,8 @@ def main():
         surface = os.path.basename(pvd).startswith("slave-")
         if args.vtu_every_step:
             tag = os.path.basename(pvd).split("-", 1)[1][:-len(".pvd")]
-            steps = [r[1] for r in rows if scheme_tag(r[0]) == tag]
+            # The undeformed state (step 0), then every converged step.
+            steps = ["0"] + [r[1] for r in rows if scheme_tag(r[0]) == tag]
             listed_steps = [str(int(f.rsplit("-", 1)[1][:-4])) for f in files]
             if listed_steps != steps:
                 fail(f"{pvd}: lists steps {listed_steps}, history.csv has "

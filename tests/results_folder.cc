@@ -113,21 +113,22 @@ namespace
       RingContactTests::run_program(write_prm("rerun", 6, "nodal, Gauss 3", 1));
     check(first.exit_code == 0, "rerun: the first run");
     check(count_rows("results_rerun/history.csv") == 12 &&
-            count_files("results_rerun", ".vtu") == 24 &&
+            count_files("results_rerun", ".vtu") == 28 &&
             count_files("results_rerun", ".pvd") == 4,
           "rerun: the first run's files");
+    // 6 steps and step 0, bulk and surface, two schemes: 28 VTU files.
     // Files this program does not write stay.
     std::ofstream("results_rerun/notes.txt") << "mine\n";
     std::ofstream("results_rerun/mesh.vtu") << "mine\n";
     const auto second =
       RingContactTests::run_program(write_prm("rerun", 3, "nodal", 1));
     check(second.exit_code == 0, "rerun: the second run");
-    check(second.printed("the 30 files of an earlier run"),
+    check(second.printed("the 34 files of an earlier run"),
           "rerun: the second run says what it removed: " + second.lines[0]);
     out << "rerun: " << second.lines[0] << std::endl;
     check(count_rows("results_rerun/history.csv") == 3 &&
             count_rows("results_rerun/verdicts.csv") == 3 &&
-            count_files("results_rerun", ".vtu") == 2 * 3 + 1 &&
+            count_files("results_rerun", ".vtu") == 2 * (3 + 1) + 1 &&
             count_files("results_rerun", ".pvd") == 2,
           "rerun: only the second run's files");
     check(std::filesystem::exists("results_rerun/notes.txt") &&
@@ -137,7 +138,8 @@ namespace
     check(RingContactTests::check_results(
             "results_rerun", "--quiet --all-listed --vtu-every-step --rows 3"),
           "rerun: the second run's files read back whole");
-    out << "rerun: 3 rows, 6 VTU files, 2 PVD files; other files kept"
+    out << "rerun: 3 rows, 8 VTU files (step 0 too), 2 PVD files; other "
+           "files kept"
         << std::endl;
   }
 

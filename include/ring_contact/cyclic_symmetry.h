@@ -27,6 +27,8 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <ring_contact/components.h>
+
 #include <array>
 #include <map>
 #include <vector>
@@ -77,8 +79,8 @@ namespace RingContact
     /// (invalid where the ring has none) at both.
     struct NodePair
     {
-      std::array<types::global_dof_index, 3> end;
-      std::array<types::global_dof_index, 3> start;
+      std::array<types::global_dof_index, Components::n_components> end;
+      std::array<types::global_dof_index, Components::n_components> start;
     };
 
     /// Pair every node of the end side (boundary id 601) with its image on

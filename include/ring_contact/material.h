@@ -1,8 +1,15 @@
-// The material law of each ring: Saint Venant-Kirchhoff in total Lagrangian
-// form (Green-Lagrange strain E, second Piola-Kirchhoff stress S, with the
-// linear isotropic law) or small-strain linear elasticity, in plane stress or
-// plane strain. Everything is written in terms of the displacement gradient
-// H = Grad u, so that the assembly only sees P(H) and dP/dH.
+// The material law of each body, behind one interface: a law maps the
+// displacement gradient H = Grad u to the stress conjugate to it in the
+// virtual work (the first Piola-Kirchhoff stress P, or sigma in small
+// strain) and its consistent tangent A = dP/dH, and gives the Cauchy stress
+// for output. Two laws, each in its own file:
+// - Saint Venant-Kirchhoff in total Lagrangian form (Green-Lagrange strain
+//   E, second Piola-Kirchhoff stress S, the linear isotropic law;
+//   saint_venant_kirchhoff.cc), the original's GROT_GDEP;
+// - small-strain linear elasticity (linear_elasticity.cc).
+// Each in plane stress (S33 = 0) or plane strain (E33 = 0). Adding a law is
+// one new file with its class and one line in make_material_law()
+// (material.cc).
 #ifndef ring_contact_material_h
 #define ring_contact_material_h
 
@@ -10,50 +17,127 @@
 
 #include <ring_contact/parameters.h>
 
+#include <memory>
+
 namespace RingContact
 {
   using namespace dealii;
 
+  /// The elastic constants of an isotropic body and its 2d assumption.
+  struct ElasticConstants
+  {
+    ElasticConstants(const double          youngs_modulus,
+                     const double          poissons_ratio,
+                     const PlaneAssumption plane);
+
+    double          youngs_modulus; ///< E [Pa]
+    double          poissons_ratio; ///< nu [-]
+    PlaneAssumption plane;
+    /// Lamé constants of the in-plane law: in plane stress lambda* = 2
+    /// lambda mu / (lambda + 2 mu), which follows from S33 = 0.
+    double lambda, mu;
+    /// The 3d lambda (the out-of-plane strain or stress).
+    double lambda_3d;
+  };
+
+  /// What the assembly and the output need of a material law.
+  class MaterialLaw
+  {
+  public:
+    virtual ~MaterialLaw() = default;
+
+    /// The stress conjugate to Grad u in the virtual work.
+    virtual Tensor<2, 2>
+    stress(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL).
+    virtual void
+    stress_and_tangent(const Tensor<2, 2> &grad_u,
+                       Tensor<2, 2>       &P,
+                       Tensor<4, 2>       &A) const = 0;
+
+    /// In-plane Cauchy stress.
+    virtual Tensor<2, 2>
+    cauchy_stress(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress).
+    virtual double
+    out_of_plane_stress(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Out-of-plane stretch F33 (1 in plane strain and small strain).
+    virtual double
+    thickness_stretch(const Tensor<2, 2> &grad_u) const = 0;
+  };
+
+  /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
+  /// linear elasticity for small strain.
+  std::shared_ptr<const MaterialLaw>
+  make_material_law(const ElasticConstants &constants,
+                    const Kinematics        kinematics);
+
+  /// Saint Venant-Kirchhoff (saint_venant_kirchhoff.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_saint_venant_kirchhoff(const ElasticConstants &constants);
+
+  /// Small-strain linear elasticity (linear_elasticity.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_linear_elasticity(const ElasticConstants &constants);
+
+  /// A body's material: its constants and its law, a value that can be
+  /// copied and stored (the law is shared, it has no state).
   class Material
   {
   public:
-    /// E [Pa], nu [-]. In plane stress the in-plane law uses
-    /// lambda* = 2 lambda mu / (lambda + 2 mu), which follows from S33 = 0.
+    /// E [Pa], nu [-], the 2d assumption and the kinematics, which chooses
+    /// the law.
     Material(const double          youngs_modulus,
              const double          poissons_ratio,
              const PlaneAssumption plane,
              const Kinematics      kinematics);
 
-    /// The stress conjugate to Grad u in the virtual work: the first
-    /// Piola-Kirchhoff stress P = F S (finite strain) or sigma (small strain).
     Tensor<2, 2>
-    stress(const Tensor<2, 2> &grad_u) const;
+    stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->stress(grad_u);
+    }
 
-    /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL).
     void
     stress_and_tangent(const Tensor<2, 2> &grad_u,
                        Tensor<2, 2>       &P,
-                       Tensor<4, 2>       &A) const;
+                       Tensor<4, 2>       &A) const
+    {
+      law->stress_and_tangent(grad_u, P, A);
+    }
 
-    /// In-plane Cauchy stress sigma = P F^T / det(F) (det F includes the
-    /// thickness stretch in plane stress); sigma itself in small strain.
     Tensor<2, 2>
-    cauchy_stress(const Tensor<2, 2> &grad_u) const;
+    cauchy_stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->cauchy_stress(grad_u);
+    }
 
-    /// Out-of-plane stretch F33 (1 in plane strain and small strain).
     double
-    thickness_stretch(const Tensor<2, 2> &grad_u) const;
+    out_of_plane_stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->out_of_plane_stress(grad_u);
+    }
 
-    const double          youngs_modulus;
-    const double          poissons_ratio;
-    const PlaneAssumption plane;
-    const Kinematics      kinematics;
+    double
+    thickness_stretch(const Tensor<2, 2> &grad_u) const
+    {
+      return law->thickness_stretch(grad_u);
+    }
+
+    /// The von Mises stress of the Cauchy stress, sigma_33 included.
+    double
+    von_mises_stress(const Tensor<2, 2> &grad_u) const;
+
+    double          youngs_modulus;
+    double          poissons_ratio;
+    PlaneAssumption plane;
+    Kinematics      kinematics;
 
   private:
-    /// Lamé constants of the in-plane law.
-    const double lambda, mu;
-    /// The 3d lambda (needed for E33 in plane stress).
-    const double lambda_3d;
+    std::shared_ptr<const MaterialLaw> law;
   };
 } // namespace RingContact
 

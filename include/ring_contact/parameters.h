@@ -60,7 +60,7 @@ namespace RingContact
     /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4", "segment-based 3".
     std::string
     name() const;
-    /// "nodal", "gauss3", ...: safe in file names.
+    /// The name for file names: "nodal", "gauss-3", "segment-based-2".
     std::string
     tag() const;
     /// Parse one of the names above; throws with a clear message otherwise.
