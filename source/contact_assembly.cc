@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <vector>
 
 namespace RingContact
 {
@@ -53,6 +56,409 @@ namespace RingContact
         }
       return p;
     }
+
+    // The contact element of one slave point and its partner: the local
+    // unknowns as AD variables, then the slave point, the partner and the
+    // normal, the residual, and its value and exact derivative scattered
+    // into the global system. Each step is a member function, in the order
+    // ContactInterface::assemble() calls them.
+    class ContactElement
+    {
+    public:
+      ContactElement(const ContactSurface &slave,
+                     const ContactSurface &master,
+                     const ContactPoint   &point,
+                     const bool            current,
+                     const bool            segment_based)
+          : slave(slave)
+          , master(master)
+          , point(point)
+          , projection(point.projection)
+          , s_seg(slave.segments()[point.slave_segment])
+          , m_seg(master.segments()[projection.segment])
+          , current(current)
+          , smooth(master.smooths_normals())
+          , segment_based(segment_based)
+      {}
+
+      void
+      gather_unknowns(const Vector<double> &solution);
+      void
+      evaluate_slave_point();
+      void
+      evaluate_partner_and_normal();
+      std::vector<AD>
+      residual(const double                                          c,
+               const std::function<bool(types::global_dof_index)> &active)
+        const;
+      void
+      scatter(std::vector<AD>                  &residual,
+              const AffineConstraints<double> &constraints,
+              SparseMatrix<double>            &matrix,
+              Vector<double>                  &rhs);
+
+    private:
+      ADCurvePoint
+      master_point(const unsigned int m, const double t) const;
+      void
+      scaled_normal(const unsigned int m, const double t, AD *normal_out) const;
+      void
+      vertex_normal(const unsigned int end, AD *n_out) const;
+      void
+      turn_copies(std::vector<AD> &v, const bool back) const;
+
+      const ContactSurface &slave;
+      const ContactSurface &master;
+      const ContactPoint   &point;
+      const Projection     &projection;
+      const SurfaceSegment &s_seg;
+      const SurfaceSegment &m_seg;
+      /// Finite strain: the current configuration (else the reference
+      /// tangent, small strain).
+      const bool current;
+      const bool smooth;
+      const bool segment_based;
+
+      // Local layout: slave u_x, u_y, then u_x, u_y of each master
+      // segment, then the multipliers.
+      std::vector<types::global_dof_index> local_dofs;
+      std::map<unsigned int, unsigned int> offset_of; // segment -> its u_x
+      unsigned int                         ns = 0, nl = 0, lambda_offset = 0;
+      std::vector<AD>                      u;
+
+      // The slave point.
+      std::vector<double> N, dN, ddN, Phi, dPhi, ddPhi;
+      AD                  d_eta, ds, lambda;
+      ADCurvePoint        xs;
+      std::vector<AD>     Phi_eta;
+
+      // The partner and the normal.
+      std::vector<double> Nm, dNm, ddNm;
+      AD                  dxi, gap;
+      AD                  normal[2];
+    };
+
+    // Local layout. Master segments whose displacement enters: the
+    // partner, and the neighbours that define the normal (at a vertex: the
+    // other segment there; smoothed normals and segment-based pieces: both
+    // neighbours of the partner). The local unknowns become AD variables; a
+    // rotated copy of a master segment (cyclic symmetry) moves by v = R a,
+    // a the unknowns of the original: its displacements are written in
+    // those (so that the derivatives are with respect to a), and its rows
+    // are turned back, r_a = R^T r_v, once the residual is known.
+    void
+    ContactElement::gather_unknowns(const Vector<double> &solution)
+    {
+      std::vector<unsigned int> master_segments = {projection.segment};
+      if (smooth || segment_based)
+        {
+          for (const unsigned int b : m_seg.neighbours)
+            if (b != numbers::invalid_unsigned_int)
+              master_segments.push_back(b);
+        }
+      else if (projection.at_vertex)
+        master_segments.push_back(
+          m_seg.neighbours[static_cast<unsigned int>(projection.t)]);
+
+      ns = s_seg.dofs_x.size();
+      nl = s_seg.multiplier_dofs.size();
+      local_dofs.insert(local_dofs.end(),
+                        s_seg.dofs_x.begin(),
+                        s_seg.dofs_x.end());
+      local_dofs.insert(local_dofs.end(),
+                        s_seg.dofs_y.begin(),
+                        s_seg.dofs_y.end());
+      for (const unsigned int m : master_segments)
+        {
+          const auto &seg = master.segments()[m];
+          offset_of[m]    = local_dofs.size();
+          local_dofs.insert(local_dofs.end(),
+                            seg.dofs_x.begin(),
+                            seg.dofs_x.end());
+          local_dofs.insert(local_dofs.end(),
+                            seg.dofs_y.begin(),
+                            seg.dofs_y.end());
+        }
+      lambda_offset = local_dofs.size();
+      local_dofs.insert(local_dofs.end(),
+                        s_seg.multiplier_dofs.begin(),
+                        s_seg.multiplier_dofs.end());
+      const unsigned int n = local_dofs.size();
+      u.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        u[i] = AD(n, i, solution(local_dofs[i]));
+      turn_copies(u, false);
+    }
+
+    void
+    ContactElement::turn_copies(std::vector<AD> &v, const bool back) const
+    {
+      for (const auto &[m, o] : offset_of)
+        {
+          const auto &seg = master.segments()[m];
+          if (!seg.is_copy)
+            continue;
+          const Tensor<2, 2> R  = back ? transpose(seg.rotation) : seg.rotation;
+          const unsigned int nm = seg.dofs_x.size();
+          for (unsigned int i = 0; i < nm; ++i)
+            {
+              const AD x = v[o + i], y = v[o + nm + i];
+              v[o + i]      = R[0][0] * x + R[0][1] * y;
+              v[o + nm + i] = R[1][0] * x + R[1][1] * y;
+            }
+        }
+    }
+
+    // A point of a master segment in AD numbers.
+    ADCurvePoint
+    ContactElement::master_point(const unsigned int m, const double t) const
+    {
+      std::vector<double> Nb, dNb, ddNb;
+      const unsigned int  nm = master.segments()[m].dofs_x.size();
+      master.displacement_basis().evaluate(t, Nb, dNb, ddNb);
+      return ad_curve_point(master.reference_point(m, t),
+                            Nb,
+                            dNb,
+                            ddNb,
+                            &u[offset_of.at(m)],
+                            &u[offset_of.at(m) + nm],
+                            current);
+    }
+
+    // Outward normal scaled by |x'| of a master segment at t.
+    void
+    ContactElement::scaled_normal(const unsigned int m,
+                                  const double       t,
+                                  AD                *normal_out) const
+    {
+      const ADCurvePoint p = master_point(m, t);
+      const double       o = master.segments()[m].orientation;
+      normal_out[0]        = o * p.dx[1];
+      normal_out[1]        = -o * p.dx[0];
+    }
+
+    // Unit vertex normal at the end `end` of the partner segment.
+    void
+    ContactElement::vertex_normal(const unsigned int end, AD *n_out) const
+    {
+      scaled_normal(projection.segment, end, n_out);
+      const unsigned int b = m_seg.neighbours[end];
+      if (b != numbers::invalid_unsigned_int)
+        {
+          AD other[2];
+          scaled_normal(b, m_seg.neighbour_t[end], other);
+          n_out[0] += other[0];
+          n_out[1] += other[1];
+        }
+      const AD length = std::sqrt(n_out[0] * n_out[0] + n_out[1] * n_out[1]);
+      n_out[0] /= length;
+      n_out[1] /= length;
+    }
+
+    // The slave point. Its parameter: fixed, or (segment-based) moving with
+    // the ends of its piece, each the crossing of the slave curve with the
+    // line through a vertex of the partner along its normal: eta_end = eta0
+    // - h / h' with h = (x_s(eta) - x_v) x n_v, whose value is eta0 and
+    // whose derivative is that of the crossing. Then its position, length
+    // element and the pressure there, the basis functions expanded to first
+    // order around eta0.
+    void
+    ContactElement::evaluate_slave_point()
+    {
+      const AD *us_x = &u[0], *us_y = &u[ns];
+      std::vector<double> G, dG, ddG;
+      AD eta_of_end[2] = {point.piece[0], point.piece[1]};
+      if (current)
+        for (unsigned int side = 0; side < 2; ++side)
+          if (point.piece_end[side] >= 0)
+            {
+              const double   eta0 = point.piece[side];
+              const unsigned end  = point.piece_end[side];
+              slave.geometry_basis().evaluate(eta0, G, dG, ddG);
+              slave.displacement_basis().evaluate(eta0, N, dN, ddN);
+              CurvePoint X;
+              for (unsigned int j = 0; j < G.size(); ++j)
+                {
+                  X.x += G[j] * s_seg.reference_nodes[j];
+                  X.dx += dG[j] * s_seg.reference_nodes[j];
+                }
+              const ADCurvePoint xe =
+                ad_curve_point(X, N, dN, ddN, us_x, us_y, true);
+              const ADCurvePoint xv = master_point(projection.segment, end);
+              AD                 nv[2];
+              vertex_normal(end, nv);
+              const AD h =
+                (xe.x[0] - xv.x[0]) * nv[1] - (xe.x[1] - xv.x[1]) * nv[0];
+              const AD slope   = xe.dx[0] * nv[1] - xe.dx[1] * nv[0];
+              eta_of_end[side] = eta0 - h / slope;
+            }
+      const AD piece_length = eta_of_end[1] - eta_of_end[0];
+      d_eta = eta_of_end[0] + piece_length * point.xi - point.eta; // value 0
+
+      slave.geometry_basis().evaluate(point.eta, G, dG, ddG);
+      slave.displacement_basis().evaluate(point.eta, N, dN, ddN);
+      slave.multiplier_basis().evaluate(point.eta, Phi, dPhi, ddPhi);
+      for (unsigned int dim = 0; dim < 2; ++dim)
+        {
+          xs.x[dim]  = 0;
+          xs.dx[dim] = 0;
+          for (unsigned int j = 0; j < G.size(); ++j)
+            {
+              xs.x[dim] +=
+                (G[j] + dG[j] * d_eta) * s_seg.reference_nodes[j][dim];
+              xs.dx[dim] +=
+                (dG[j] + ddG[j] * d_eta) * s_seg.reference_nodes[j][dim];
+            }
+        }
+      for (unsigned int i = 0; i < ns; ++i)
+        {
+          const AD Ni  = N[i] + dN[i] * d_eta;
+          const AD dNi = dN[i] + ddN[i] * d_eta;
+          xs.x[0] += Ni * us_x[i];
+          xs.x[1] += Ni * us_y[i];
+          if (current)
+            {
+              xs.dx[0] += dNi * us_x[i];
+              xs.dx[1] += dNi * us_y[i];
+            }
+        }
+      ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
+           piece_length * point.w;
+      const AD *lambda_k = &u[lambda_offset];
+      Phi_eta.resize(nl);
+      lambda = 0;
+      for (unsigned int k = 0; k < nl; ++k)
+        {
+          Phi_eta[k] = Phi[k] + dPhi[k] * d_eta;
+          lambda += Phi_eta[k] * lambda_k[k];
+        }
+    }
+
+    // The partner and the normal. The master point at the converged
+    // parameter xi0, and its first-order correction d xi = -f / f' where
+    // f(xi) = 0 defines the projection: its value vanishes, its derivative
+    // is that of the projection (implicit function theorem). Closest point:
+    // f = (x_s - x_m) . x_m'; along the smoothed normal m(xi) = (1 - xi) n0
+    // + xi n1: f = (x_s - x_m) x m. At a vertex or a clamped corner xi is
+    // fixed. Then the unit normal there and the gap along it.
+    void
+    ContactElement::evaluate_partner_and_normal()
+    {
+      const double xi0 = projection.t;
+      master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
+      const ADCurvePoint xm = master_point(projection.segment, xi0);
+      AD                 n0[2], n1[2];
+      if (smooth)
+        {
+          vertex_normal(0, n0);
+          vertex_normal(1, n1);
+        }
+      const AD d[2] = {xs.x[0] - xm.x[0], xs.x[1] - xm.x[1]};
+      dxi           = 0;
+      if (!projection.clamped && !projection.at_vertex && current)
+        {
+          if (smooth)
+            {
+              const AD m[2]  = {(1 - xi0) * n0[0] + xi0 * n1[0],
+                                (1 - xi0) * n0[1] + xi0 * n1[1]};
+              const AD f     = d[0] * m[1] - d[1] * m[0];
+              const AD slope = -(xm.dx[0] * m[1] - xm.dx[1] * m[0]) +
+                               d[0] * (n1[1] - n0[1]) - d[1] * (n1[0] - n0[0]);
+              dxi            = -f / slope;
+            }
+          else
+            {
+              const AD r     = d[0] * xm.dx[0] + d[1] * xm.dx[1];
+              const AD slope = -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
+                               d[0] * xm.ddx[0] + d[1] * xm.ddx[1];
+              dxi            = -r / slope;
+            }
+        }
+      AD x_m[2];
+      for (unsigned int dim = 0; dim < 2; ++dim)
+        x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
+      if (smooth)
+        {
+          const AD xi = xi0 + dxi;
+          normal[0]   = (1 - xi) * n0[0] + xi * n1[0];
+          normal[1]   = (1 - xi) * n0[1] + xi * n1[1];
+        }
+      else
+        {
+          if (projection.at_vertex) // xi0 is the vertex's end, 0 or 1
+            vertex_normal(static_cast<unsigned int>(xi0), normal);
+          else
+            {
+              // Outward normal scaled by |x_m'| (normalised below).
+              const double o = m_seg.orientation;
+              normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
+              normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
+            }
+        }
+      const AD length =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
+      normal[0] /= length;
+      normal[1] /= length;
+      gap = (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
+    }
+
+    // The residual: the contact virtual work on the slave and the master
+    // rows, and the weighted gap on the rows of the active multipliers.
+    std::vector<AD>
+    ContactElement::residual(
+      const double                                          c,
+      const std::function<bool(types::global_dof_index)> &active) const
+    {
+      std::vector<AD> r(local_dofs.size(), AD(0.0));
+      for (unsigned int i = 0; i < ns; ++i)
+        for (unsigned int dim = 0; dim < 2; ++dim)
+          r[dim * ns + i] = -lambda * (N[i] + dN[i] * d_eta) * normal[dim] * ds;
+      const unsigned int nm = m_seg.dofs_x.size();
+      const unsigned int mo = offset_of.at(projection.segment);
+      for (unsigned int i = 0; i < nm; ++i)
+        {
+          const AD Nm_xi = Nm[i] + dNm[i] * dxi;
+          for (unsigned int dim = 0; dim < 2; ++dim)
+            r[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
+        }
+      for (unsigned int k = 0; k < nl; ++k)
+        if (active(s_seg.multiplier_dofs[k]))
+          r[lambda_offset + k] = c * Phi_eta[k] * gap * ds;
+      return r;
+    }
+
+    // The value and the derivative of the residual into the global system.
+    // A vertex shared by the partner and its neighbour appears twice in the
+    // local unknowns: the two copies (rows and columns) are summed into one
+    // first.
+    void
+    ContactElement::scatter(std::vector<AD>                  &residual,
+                            const AffineConstraints<double> &constraints,
+                            SparseMatrix<double>            &matrix,
+                            Vector<double>                  &rhs)
+    {
+      turn_copies(residual, true);
+      const unsigned int                   n           = local_dofs.size();
+      std::vector<types::global_dof_index> unique_dofs = local_dofs;
+      std::sort(unique_dofs.begin(), unique_dofs.end());
+      unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
+                        unique_dofs.end());
+      std::vector<unsigned int> to_unique(n);
+      for (unsigned int i = 0; i < n; ++i)
+        to_unique[i] =
+          std::lower_bound(unique_dofs.begin(), unique_dofs.end(), local_dofs[i]) -
+          unique_dofs.begin();
+      FullMatrix<double> local_matrix(unique_dofs.size(), unique_dofs.size());
+      Vector<double>     local_rhs(unique_dofs.size());
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          local_rhs(to_unique[i]) -= residual[i].val();
+          for (unsigned int j = 0; j < n; ++j)
+            local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
+        }
+      constraints.distribute_local_to_global(
+        local_matrix, local_rhs, unique_dofs, matrix, rhs);
+    }
   } // namespace
 
   void
@@ -61,314 +467,19 @@ namespace RingContact
                              SparseMatrix<double>            &matrix,
                              Vector<double>                  &rhs) const
   {
-    const double c       = complementarity_constant;
-    const bool   current = !geometrically_linear;
-
-    std::vector<types::global_dof_index> local_dofs, unique_dofs;
-    FullMatrix<double>                   local_matrix;
-    Vector<double>                       local_rhs;
-    std::vector<double>                  Nm, dNm, ddNm, Nb, dNb, ddNb;
-    std::vector<double> G, dG, ddG, N, dN, ddN, Phi, dPhi, ddPhi;
-
-    const bool smooth = master.smooths_normals();
+    const auto is_active = [this](const types::global_dof_index dof) {
+      return static_cast<bool>(active[multiplier_index.at(dof)]);
+    };
     for (const auto &point : points)
       {
-        const Projection &projection = point.projection;
-        const auto       &s_seg      = slave.segments()[point.slave_segment];
-        const auto       &m_seg      = master.segments()[projection.segment];
-
-        // Master segments whose displacement enters: the partner, and the
-        // neighbours that define the normal (at a vertex: the other segment
-        // there; smoothed normals: both neighbours of the partner).
-        std::vector<unsigned int> master_segments = {projection.segment};
-        if (smooth || segment_based)
-          {
-            for (const unsigned int b : m_seg.neighbours)
-              if (b != numbers::invalid_unsigned_int)
-                master_segments.push_back(b);
-          }
-        else if (projection.at_vertex)
-          master_segments.push_back(
-            m_seg.neighbours[static_cast<unsigned int>(projection.t)]);
-
-        // Local unknowns: slave u_x, u_y, then u_x, u_y of each master
-        // segment, then the multipliers.
-        const unsigned int ns = s_seg.dofs_x.size();
-        const unsigned int nl = s_seg.multiplier_dofs.size();
-        local_dofs.clear();
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.dofs_x.begin(),
-                          s_seg.dofs_x.end());
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.dofs_y.begin(),
-                          s_seg.dofs_y.end());
-        std::map<unsigned int, unsigned int> offset_of; // segment -> u_x
-        for (const unsigned int m : master_segments)
-          {
-            const auto &seg = master.segments()[m];
-            offset_of[m]    = local_dofs.size();
-            local_dofs.insert(local_dofs.end(),
-                              seg.dofs_x.begin(),
-                              seg.dofs_x.end());
-            local_dofs.insert(local_dofs.end(),
-                              seg.dofs_y.begin(),
-                              seg.dofs_y.end());
-          }
-        const unsigned int lambda_offset = local_dofs.size();
-        local_dofs.insert(local_dofs.end(),
-                          s_seg.multiplier_dofs.begin(),
-                          s_seg.multiplier_dofs.end());
-        // The local unknowns as AD variables. A rotated copy of a master
-        // segment (cyclic symmetry) moves by v = R a, a the unknowns of the
-        // original: its displacements are written in those (so that the
-        // derivatives are with respect to a), and its rows are turned back,
-        // r_a = R^T r_v, once the residual is known.
-        const unsigned int n = local_dofs.size();
-        std::vector<AD>    u(n);
-        for (unsigned int i = 0; i < n; ++i)
-          u[i] = AD(n, i, solution(local_dofs[i]));
-        const auto turn_copies = [&](std::vector<AD> &v, const bool back) {
-          for (const auto &[m, o] : offset_of)
-            {
-              const auto &seg = master.segments()[m];
-              if (!seg.is_copy)
-                continue;
-              const Tensor<2, 2> R =
-                back ? transpose(seg.rotation) : seg.rotation;
-              const unsigned int nm = seg.dofs_x.size();
-              for (unsigned int i = 0; i < nm; ++i)
-                {
-                  const AD x = v[o + i], y = v[o + nm + i];
-                  v[o + i]      = R[0][0] * x + R[0][1] * y;
-                  v[o + nm + i] = R[1][0] * x + R[1][1] * y;
-                }
-            }
-        };
-        turn_copies(u, false);
-        const AD *us_x = &u[0], *us_y = &u[ns];
-        const AD *lambda_k = &u[lambda_offset];
-
-        // A point of a master segment in AD numbers.
-        const auto master_point = [&](const unsigned int m, const double t) {
-          const unsigned int nm = master.segments()[m].dofs_x.size();
-          master.displacement_basis().evaluate(t, Nb, dNb, ddNb);
-          return ad_curve_point(master.reference_point(m, t),
-                                Nb,
-                                dNb,
-                                ddNb,
-                                &u[offset_of[m]],
-                                &u[offset_of[m] + nm],
-                                current);
-        };
-        // Outward normal scaled by |x'| of a master segment at t.
-        const auto scaled_normal =
-          [&](const unsigned int m, const double t, AD *normal_out) {
-            const ADCurvePoint p = master_point(m, t);
-            const double       o = master.segments()[m].orientation;
-            normal_out[0]        = o * p.dx[1];
-            normal_out[1]        = -o * p.dx[0];
-          };
-        // Unit vertex normal at the end `end` of the partner segment.
-        const auto vertex_normal = [&](const unsigned int end, AD *n_out) {
-          scaled_normal(projection.segment, end, n_out);
-          const unsigned int b = m_seg.neighbours[end];
-          if (b != numbers::invalid_unsigned_int)
-            {
-              AD other[2];
-              scaled_normal(b, m_seg.neighbour_t[end], other);
-              n_out[0] += other[0];
-              n_out[1] += other[1];
-            }
-          const AD length =
-            std::sqrt(n_out[0] * n_out[0] + n_out[1] * n_out[1]);
-          n_out[0] /= length;
-          n_out[1] /= length;
-        };
-
-        // The slave point's parameter: fixed, or (segment-based) moving
-        // with the ends of its piece, each the crossing of the slave curve
-        // with the line through a vertex of the partner along its normal:
-        // eta_end = eta0 - h / h' with h = (x_s(eta) - x_v) x n_v, whose
-        // value is eta0 and whose derivative is that of the crossing.
-        AD eta_of_end[2] = {point.piece[0], point.piece[1]};
-        if (current)
-          for (unsigned int side = 0; side < 2; ++side)
-            if (point.piece_end[side] >= 0)
-              {
-                const double   eta0 = point.piece[side];
-                const unsigned end  = point.piece_end[side];
-                slave.geometry_basis().evaluate(eta0, G, dG, ddG);
-                slave.displacement_basis().evaluate(eta0, N, dN, ddN);
-                CurvePoint X;
-                for (unsigned int j = 0; j < G.size(); ++j)
-                  {
-                    X.x += G[j] * s_seg.reference_nodes[j];
-                    X.dx += dG[j] * s_seg.reference_nodes[j];
-                  }
-                const ADCurvePoint xe =
-                  ad_curve_point(X, N, dN, ddN, us_x, us_y, true);
-                const ADCurvePoint xv = master_point(projection.segment, end);
-                AD                 nv[2];
-                vertex_normal(end, nv);
-                const AD h =
-                  (xe.x[0] - xv.x[0]) * nv[1] - (xe.x[1] - xv.x[1]) * nv[0];
-                const AD slope   = xe.dx[0] * nv[1] - xe.dx[1] * nv[0];
-                eta_of_end[side] = eta0 - h / slope;
-              }
-        const AD piece_length = eta_of_end[1] - eta_of_end[0];
-        const AD d_eta =
-          eta_of_end[0] + piece_length * point.xi - point.eta; // value 0
-
-        // Slave point, its length element and the pressure there; the
-        // basis functions are expanded to first order around eta0.
-        slave.geometry_basis().evaluate(point.eta, G, dG, ddG);
-        slave.displacement_basis().evaluate(point.eta, N, dN, ddN);
-        slave.multiplier_basis().evaluate(point.eta, Phi, dPhi, ddPhi);
-        ADCurvePoint xs;
-        for (unsigned int dim = 0; dim < 2; ++dim)
-          {
-            xs.x[dim]  = 0;
-            xs.dx[dim] = 0;
-            for (unsigned int j = 0; j < G.size(); ++j)
-              {
-                xs.x[dim] +=
-                  (G[j] + dG[j] * d_eta) * s_seg.reference_nodes[j][dim];
-                xs.dx[dim] +=
-                  (dG[j] + ddG[j] * d_eta) * s_seg.reference_nodes[j][dim];
-              }
-          }
-        for (unsigned int i = 0; i < ns; ++i)
-          {
-            const AD Ni  = N[i] + dN[i] * d_eta;
-            const AD dNi = dN[i] + ddN[i] * d_eta;
-            xs.x[0] += Ni * us_x[i];
-            xs.x[1] += Ni * us_y[i];
-            if (current)
-              {
-                xs.dx[0] += dNi * us_x[i];
-                xs.dx[1] += dNi * us_y[i];
-              }
-          }
-        const AD ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
-                      piece_length * point.w;
-        std::vector<AD> Phi_eta(nl);
-        AD              lambda = 0;
-        for (unsigned int k = 0; k < nl; ++k)
-          {
-            Phi_eta[k] = Phi[k] + dPhi[k] * d_eta;
-            lambda += Phi_eta[k] * lambda_k[k];
-          }
-
-        // Master point at the converged parameter xi0, and its first-order
-        // correction d xi = -f / f' where f(xi) = 0 defines the projection:
-        // its value vanishes, its derivative is that of the projection
-        // (implicit function theorem). Closest point: f = (x_s - x_m) . x_m';
-        // along the smoothed normal m(xi) = (1 - xi) n0 + xi n1:
-        // f = (x_s - x_m) x m. At a vertex or a clamped corner xi is fixed.
-        const double xi0 = projection.t;
-        master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
-        const ADCurvePoint xm = master_point(projection.segment, xi0);
-        AD                 n0[2], n1[2];
-        if (smooth)
-          {
-            vertex_normal(0, n0);
-            vertex_normal(1, n1);
-          }
-        const AD d[2] = {xs.x[0] - xm.x[0], xs.x[1] - xm.x[1]};
-        AD       dxi  = 0;
-        if (!projection.clamped && !projection.at_vertex && current)
-          {
-            if (smooth)
-              {
-                const AD m[2]  = {(1 - xi0) * n0[0] + xi0 * n1[0],
-                                  (1 - xi0) * n0[1] + xi0 * n1[1]};
-                const AD f     = d[0] * m[1] - d[1] * m[0];
-                const AD slope = -(xm.dx[0] * m[1] - xm.dx[1] * m[0]) +
-                                 d[0] * (n1[1] - n0[1]) -
-                                 d[1] * (n1[0] - n0[0]);
-                dxi = -f / slope;
-              }
-            else
-              {
-                const AD r     = d[0] * xm.dx[0] + d[1] * xm.dx[1];
-                const AD slope = -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
-                                 d[0] * xm.ddx[0] + d[1] * xm.ddx[1];
-                dxi = -r / slope;
-              }
-          }
-        AD x_m[2], normal[2];
-        for (unsigned int dim = 0; dim < 2; ++dim)
-          x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
-        if (smooth)
-          {
-            const AD xi = xi0 + dxi;
-            normal[0]   = (1 - xi) * n0[0] + xi * n1[0];
-            normal[1]   = (1 - xi) * n0[1] + xi * n1[1];
-          }
-        else
-          {
-            if (projection.at_vertex) // xi0 is the vertex's end, 0 or 1
-              vertex_normal(static_cast<unsigned int>(xi0), normal);
-            else
-              {
-                // Outward normal scaled by |x_m'| (normalised below).
-                const double o = m_seg.orientation;
-                normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
-                normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
-              }
-          }
-        {
-          const AD length =
-            std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
-          normal[0] /= length;
-          normal[1] /= length;
-        }
-        const AD gap =
-          (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
-
-        // Residual: contact virtual work and weighted gap rows.
-        std::vector<AD> residual(n, AD(0.0));
-        for (unsigned int i = 0; i < ns; ++i)
-          for (unsigned int dim = 0; dim < 2; ++dim)
-            residual[dim * ns + i] =
-              -lambda * (N[i] + dN[i] * d_eta) * normal[dim] * ds;
-        const unsigned int nm = m_seg.dofs_x.size();
-        const unsigned int mo = offset_of[projection.segment];
-        for (unsigned int i = 0; i < nm; ++i)
-          {
-            const AD Nm_xi = Nm[i] + dNm[i] * dxi;
-            for (unsigned int dim = 0; dim < 2; ++dim)
-              residual[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
-          }
-        for (unsigned int k = 0; k < nl; ++k)
-          if (active[multiplier_index.at(s_seg.multiplier_dofs[k])])
-            residual[lambda_offset + k] = c * Phi_eta[k] * gap * ds;
-
-        turn_copies(residual, true);
-
-        // A vertex shared by the partner and its neighbour appears twice in
-        // the local unknowns: sum the two copies (rows and columns) into one
-        // before handing the element to the global system.
-        unique_dofs = local_dofs;
-        std::sort(unique_dofs.begin(), unique_dofs.end());
-        unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
-                          unique_dofs.end());
-        std::vector<unsigned int> to_unique(n);
-        for (unsigned int i = 0; i < n; ++i)
-          to_unique[i] = std::lower_bound(unique_dofs.begin(),
-                                          unique_dofs.end(),
-                                          local_dofs[i]) -
-                         unique_dofs.begin();
-        local_matrix.reinit(unique_dofs.size(), unique_dofs.size());
-        local_rhs.reinit(unique_dofs.size());
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            local_rhs(to_unique[i]) -= residual[i].val();
-            for (unsigned int j = 0; j < n; ++j)
-              local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
-          }
-        constraints.distribute_local_to_global(
-          local_matrix, local_rhs, unique_dofs, matrix, rhs);
+        ContactElement element(
+          slave, master, point, !geometrically_linear, segment_based);
+        element.gather_unknowns(solution);
+        element.evaluate_slave_point();
+        element.evaluate_partner_and_normal();
+        std::vector<AD> residual =
+          element.residual(complementarity_constant, is_active);
+        element.scatter(residual, constraints, matrix, rhs);
       }
 
     // Open nodes: w_k lambda_k = 0.
@@ -380,5 +491,4 @@ namespace RingContact
           rhs(dof) -= reference_weight[k] * solution(dof);
         }
   }
-
 } // namespace RingContact
