@@ -381,7 +381,8 @@ namespace RingContact
                         "the circles come from the polar geometry, and "
                         "quadratic nodes on the circles are checked to lie "
                         "on them. A relative path is taken from the folder "
-                        "of the .prm file.");
+                        "of the .prm file that sets it (an included file's "
+                        "own folder).");
       prm.declare_entry("Geo parameters",
                         "",
                         Patterns::Anything(),
@@ -1189,7 +1190,19 @@ namespace RingContact
     const std::string name = path.stem().string();
     try
       {
-        mesh.parse_parameters(prm, folder);
+        // A relative mesh path is taken from the folder of the file that
+        // sets it (an included file's own folder), not the top file's.
+        std::string mesh_folder = folder;
+        {
+          const auto origin = origins.find(entry_key("Mesh", "Mesh file"));
+          if (origin != origins.end())
+            {
+              const std::filesystem::path set_in(origin->second.file);
+              mesh_folder =
+                set_in.has_parent_path() ? set_in.parent_path().string() : ".";
+            }
+        }
+        mesh.parse_parameters(prm, mesh_folder);
         materials.parse_parameters(prm);
         finite_elements.parse_parameters(prm);
         contact.parse_parameters(prm);
