@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ring_contact/contact_interface.h>
+#include <ring_contact/surface_kernel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,16 +19,14 @@ namespace RingContact
   {
     using AD = Sacado::Fad::DFad<double>;
 
+    using ADPoint  = SurfaceKernel::CurvePoint<AD>;
+    using ADVector = Tensor<1, 2, AD>;
+
     // A point of a segment in the current configuration with AD
     // coordinates: reference geometry (double) plus interpolated
     // displacement (AD); `with_displacement` = false keeps the reference
     // tangent (small strain).
-    struct ADCurvePoint
-    {
-      AD x[2], dx[2], ddx[2];
-    };
-
-    ADCurvePoint
+    ADPoint
     ad_curve_point(const CurvePoint          &reference,
                    const std::vector<double> &N,
                    const std::vector<double> &dN,
@@ -36,24 +35,25 @@ namespace RingContact
                    const AD                  *u_y,
                    const bool                 with_displacement)
     {
-      ADCurvePoint p;
+      ADPoint p;
       for (unsigned int d = 0; d < 2; ++d)
         {
           p.x[d]   = reference.x[d];
           p.dx[d]  = reference.dx[d];
           p.ddx[d] = reference.ddx[d];
         }
-      for (unsigned int i = 0; i < N.size(); ++i)
-        {
-          p.x[0] += N[i] * u_x[i];
-          p.x[1] += N[i] * u_y[i];
-          if (!with_displacement)
-            continue;
-          p.dx[0] += dN[i] * u_x[i];
-          p.dx[1] += dN[i] * u_y[i];
-          p.ddx[0] += ddN[i] * u_x[i];
-          p.ddx[1] += ddN[i] * u_y[i];
-        }
+      SurfaceKernel::add_interpolation(
+        p,
+        N.size(),
+        N.data(),
+        with_displacement ? dN.data() : nullptr,
+        with_displacement ? ddN.data() : nullptr,
+        [&](const unsigned int i) {
+          ADVector v;
+          v[0] = u_x[i];
+          v[1] = u_y[i];
+          return v;
+        });
       return p;
     }
 
@@ -98,12 +98,12 @@ namespace RingContact
               Vector<double>                  &rhs);
 
     private:
-      ADCurvePoint
+      ADPoint
       master_point(const unsigned int m, const double t) const;
-      void
-      scaled_normal(const unsigned int m, const double t, AD *normal_out) const;
-      void
-      vertex_normal(const unsigned int end, AD *n_out) const;
+      ADVector
+      scaled_normal(const unsigned int m, const double t) const;
+      ADVector
+      vertex_normal(const unsigned int end) const;
       void
       turn_copies(std::vector<AD> &v, const bool back) const;
 
@@ -129,13 +129,13 @@ namespace RingContact
       // The slave point.
       std::vector<double> N, dN, ddN, Phi, dPhi, ddPhi;
       AD                  d_eta, ds, lambda;
-      ADCurvePoint        xs;
+      ADPoint             xs;
       std::vector<AD>     Phi_eta;
 
       // The partner and the normal.
       std::vector<double> Nm, dNm, ddNm;
       AD                  dxi, gap;
-      AD                  normal[2];
+      ADVector            normal;
     };
 
     // Local layout. Master segments whose displacement enters: the
@@ -210,7 +210,7 @@ namespace RingContact
     }
 
     // A point of a master segment in AD numbers.
-    ADCurvePoint
+    ADPoint
     ContactElement::master_point(const unsigned int m, const double t) const
     {
       std::vector<double> Nb, dNb, ddNb;
@@ -226,33 +226,23 @@ namespace RingContact
     }
 
     // Outward normal scaled by |x'| of a master segment at t.
-    void
-    ContactElement::scaled_normal(const unsigned int m,
-                                  const double       t,
-                                  AD                *normal_out) const
+    ADVector
+    ContactElement::scaled_normal(const unsigned int m, const double t) const
     {
-      const ADCurvePoint p = master_point(m, t);
-      const double       o = master.segments()[m].orientation;
-      normal_out[0]        = o * p.dx[1];
-      normal_out[1]        = -o * p.dx[0];
+      return SurfaceKernel::scaled_normal(master_point(m, t).dx,
+                                          master.segments()[m].orientation);
     }
 
     // Unit vertex normal at the end `end` of the partner segment.
-    void
-    ContactElement::vertex_normal(const unsigned int end, AD *n_out) const
+    ADVector
+    ContactElement::vertex_normal(const unsigned int end) const
     {
-      scaled_normal(projection.segment, end, n_out);
-      const unsigned int b = m_seg.neighbours[end];
-      if (b != numbers::invalid_unsigned_int)
-        {
-          AD other[2];
-          scaled_normal(b, m_seg.neighbour_t[end], other);
-          n_out[0] += other[0];
-          n_out[1] += other[1];
-        }
-      const AD length = std::sqrt(n_out[0] * n_out[0] + n_out[1] * n_out[1]);
-      n_out[0] /= length;
-      n_out[1] /= length;
+      const unsigned int b            = m_seg.neighbours[end];
+      const bool         has_neighbour = b != numbers::invalid_unsigned_int;
+      return SurfaceKernel::vertex_normal(
+        scaled_normal(projection.segment, end),
+        has_neighbour ? scaled_normal(b, m_seg.neighbour_t[end]) : ADVector(),
+        has_neighbour);
     }
 
     // The slave point. Its parameter: fixed, or (segment-based) moving with
@@ -274,22 +264,20 @@ namespace RingContact
             {
               const double   eta0 = point.piece[side];
               const unsigned end  = point.piece_end[side];
-              slave.geometry_basis().evaluate(eta0, G, dG, ddG);
               slave.displacement_basis().evaluate(eta0, N, dN, ddN);
-              CurvePoint X;
-              for (unsigned int j = 0; j < G.size(); ++j)
-                {
-                  X.x += G[j] * s_seg.reference_nodes[j];
-                  X.dx += dG[j] * s_seg.reference_nodes[j];
-                }
-              const ADCurvePoint xe =
-                ad_curve_point(X, N, dN, ddN, us_x, us_y, true);
-              const ADCurvePoint xv = master_point(projection.segment, end);
-              AD                 nv[2];
-              vertex_normal(end, nv);
-              const AD h =
-                (xe.x[0] - xv.x[0]) * nv[1] - (xe.x[1] - xv.x[1]) * nv[0];
-              const AD slope   = xe.dx[0] * nv[1] - xe.dx[1] * nv[0];
+              const ADPoint xe =
+                ad_curve_point(slave.reference_point(point.slave_segment, eta0),
+                               N,
+                               dN,
+                               ddN,
+                               us_x,
+                               us_y,
+                               true);
+              const ADPoint xv            = master_point(projection.segment, end);
+              const auto [h, slope]       = SurfaceKernel::piece_end_residual(
+                SurfaceKernel::difference<AD>(xe.x, xv.x),
+                xe.dx,
+                vertex_normal(end));
               eta_of_end[side] = eta0 - h / slope;
             }
       const AD piece_length = eta_of_end[1] - eta_of_end[0];
@@ -298,30 +286,32 @@ namespace RingContact
       slave.geometry_basis().evaluate(point.eta, G, dG, ddG);
       slave.displacement_basis().evaluate(point.eta, N, dN, ddN);
       slave.multiplier_basis().evaluate(point.eta, Phi, dPhi, ddPhi);
-      for (unsigned int dim = 0; dim < 2; ++dim)
-        {
-          xs.x[dim]  = 0;
-          xs.dx[dim] = 0;
-          for (unsigned int j = 0; j < G.size(); ++j)
-            {
-              xs.x[dim] +=
-                (G[j] + dG[j] * d_eta) * s_seg.reference_nodes[j][dim];
-              xs.dx[dim] +=
-                (dG[j] + ddG[j] * d_eta) * s_seg.reference_nodes[j][dim];
-            }
-        }
-      for (unsigned int i = 0; i < ns; ++i)
-        {
-          const AD Ni  = N[i] + dN[i] * d_eta;
-          const AD dNi = dN[i] + ddN[i] * d_eta;
-          xs.x[0] += Ni * us_x[i];
-          xs.x[1] += Ni * us_y[i];
-          if (current)
-            {
-              xs.dx[0] += dNi * us_x[i];
-              xs.dx[1] += dNi * us_y[i];
-            }
-        }
+      // The bases expanded around eta0: phi(eta0 + d eta) = phi + phi' d eta.
+      const auto expanded = [&](const std::vector<double> &phi,
+                                const std::vector<double> &dphi) {
+        std::vector<AD> values(phi.size());
+        for (unsigned int i = 0; i < phi.size(); ++i)
+          values[i] = phi[i] + dphi[i] * d_eta;
+        return values;
+      };
+      const std::vector<AD> G_eta = expanded(G, dG), dG_eta = expanded(dG, ddG);
+      const std::vector<AD> N_eta = expanded(N, dN), dN_eta = expanded(dN, ddN);
+      xs = ADPoint();
+      SurfaceKernel::add_interpolation(
+        xs, G.size(), G_eta.data(), dG_eta.data(), (AD *)nullptr,
+        [&](const unsigned int j) { return s_seg.reference_nodes[j]; });
+      SurfaceKernel::add_interpolation(
+        xs,
+        ns,
+        N_eta.data(),
+        current ? dN_eta.data() : nullptr,
+        (AD *)nullptr,
+        [&](const unsigned int i) {
+          ADVector v;
+          v[0] = us_x[i];
+          v[1] = us_y[i];
+          return v;
+        });
       ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
            piece_length * point.w;
       const AD *lambda_k = &u[lambda_offset];
@@ -346,60 +336,36 @@ namespace RingContact
     {
       const double xi0 = projection.t;
       master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
-      const ADCurvePoint xm = master_point(projection.segment, xi0);
-      AD                 n0[2], n1[2];
-      if (smooth)
-        {
-          vertex_normal(0, n0);
-          vertex_normal(1, n1);
-        }
-      const AD d[2] = {xs.x[0] - xm.x[0], xs.x[1] - xm.x[1]};
-      dxi           = 0;
+      const ADPoint  xm = master_point(projection.segment, xi0);
+      const ADVector n0 = smooth ? vertex_normal(0) : ADVector();
+      const ADVector n1 = smooth ? vertex_normal(1) : ADVector();
+      const ADVector d  = SurfaceKernel::difference<AD>(xs.x, xm.x);
+      dxi               = 0;
       if (!projection.clamped && !projection.at_vertex && current)
         {
-          if (smooth)
-            {
-              const AD m[2]  = {(1 - xi0) * n0[0] + xi0 * n1[0],
-                                (1 - xi0) * n0[1] + xi0 * n1[1]};
-              const AD f     = d[0] * m[1] - d[1] * m[0];
-              const AD slope = -(xm.dx[0] * m[1] - xm.dx[1] * m[0]) +
-                               d[0] * (n1[1] - n0[1]) - d[1] * (n1[0] - n0[0]);
-              dxi            = -f / slope;
-            }
-          else
-            {
-              const AD r     = d[0] * xm.dx[0] + d[1] * xm.dx[1];
-              const AD slope = -(xm.dx[0] * xm.dx[0] + xm.dx[1] * xm.dx[1]) +
-                               d[0] * xm.ddx[0] + d[1] * xm.ddx[1];
-              dxi            = -r / slope;
-            }
+          const auto [r, slope] =
+            smooth ?
+              SurfaceKernel::smoothed_normal_residual(d, xm, n0, n1, xi0) :
+              SurfaceKernel::closest_point_residual(d, xm);
+          dxi = -r / slope;
         }
-      AD x_m[2];
+      ADVector x_m;
       for (unsigned int dim = 0; dim < 2; ++dim)
         x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
       if (smooth)
-        {
-          const AD xi = xi0 + dxi;
-          normal[0]   = (1 - xi) * n0[0] + xi * n1[0];
-          normal[1]   = (1 - xi) * n0[1] + xi * n1[1];
-        }
+        normal = SurfaceKernel::smoothed_direction(n0, n1, AD(xi0 + dxi));
+      else if (projection.at_vertex) // xi0 is the vertex's end, 0 or 1
+        normal = vertex_normal(static_cast<unsigned int>(xi0));
       else
+        // Outward normal scaled by |x_m'| (normalised below).
         {
-          if (projection.at_vertex) // xi0 is the vertex's end, 0 or 1
-            vertex_normal(static_cast<unsigned int>(xi0), normal);
-          else
-            {
-              // Outward normal scaled by |x_m'| (normalised below).
-              const double o = m_seg.orientation;
-              normal[0]      = o * (xm.dx[1] + xm.ddx[1] * dxi);
-              normal[1]      = -o * (xm.dx[0] + xm.ddx[0] * dxi);
-            }
+          ADVector dx;
+          for (unsigned int dim = 0; dim < 2; ++dim)
+            dx[dim] = xm.dx[dim] + xm.ddx[dim] * dxi;
+          normal = SurfaceKernel::scaled_normal(dx, m_seg.orientation);
         }
-      const AD length =
-        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
-      normal[0] /= length;
-      normal[1] /= length;
-      gap = (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
+      normal = SurfaceKernel::unit(normal);
+      gap    = (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
     }
 
     // The residual: the contact virtual work on the slave and the master

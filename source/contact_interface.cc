@@ -217,9 +217,6 @@ namespace RingContact
     // line through a master vertex along the vertex normal crosses it. On
     // each piece the partner is one master segment, the integrand is
     // smooth, and Gauss points integrate it to the accuracy of the rule.
-    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
-      return a[0] * b[1] - a[1] * b[0];
-    };
     std::vector<ContactPoint> new_points;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       {
@@ -245,9 +242,9 @@ namespace RingContact
               double             eta = 0.5;
               for (unsigned int it = 0; it < 20; ++it)
                 {
-                  const CurvePoint p     = slave.current_point(s, eta);
-                  const double     h     = cross(p.x - xv, nv);
-                  const double     slope = cross(p.dx, nv);
+                  const CurvePoint p = slave.current_point(s, eta);
+                  const auto [h, slope] =
+                    SurfaceKernel::piece_end_residual(p.x - xv, p.dx, nv);
                   if (slope == 0)
                     break;
                   const double d = -h / slope;
@@ -372,14 +369,15 @@ namespace RingContact
                                      const double          t) {
       std::vector<double> N;
       surface.displacement_basis().evaluate(t, N);
-      const auto  &seg = surface.segments()[segment];
-      Tensor<1, 2> u;
-      for (unsigned int i = 0; i < N.size(); ++i)
-        {
-          u[0] += N[i] * solution(seg.dofs_x[i]);
-          u[1] += N[i] * solution(seg.dofs_y[i]);
-        }
-      return Tensor<1, 2>(seg.rotation * u);
+      const auto &seg = surface.segments()[segment];
+      CurvePoint  u; // the displacement alone
+      SurfaceKernel::add_interpolation(
+        u, N.size(), N.data(), (double *)nullptr, (double *)nullptr,
+        [&](const unsigned int i) {
+          return Tensor<1, 2>(
+            {solution(seg.dofs_x[i]), solution(seg.dofs_y[i])});
+        });
+      return Tensor<1, 2>(seg.rotation * Tensor<1, 2>(u.x));
     };
     const Tensor<1, 2> jump =
       displacement_at(slave, slave_segment, t) -

@@ -194,8 +194,9 @@ namespace RingContact
             segment_list.push_back(segment);
             const CurvePoint mid =
               reference_point(segment_list.size() - 1, 0.5);
-            const Tensor<1, 2> rotated({mid.dx[1], -mid.dx[0]});
-            if (rotated * (mid.x - cell->center()) < 0)
+            if (SurfaceKernel::scaled_normal(mid.dx, 1.0) *
+                  (mid.x - cell->center()) <
+                0)
               segment_list.back().orientation = -1.0;
           }
     AssertThrow(displacement_nodes.size() <= LagrangeBasis1D::max_size,
@@ -336,12 +337,10 @@ namespace RingContact
     geometry.evaluate(t, N, dN, ddN);
     const auto &nodes = segment_list[segment].reference_nodes;
     CurvePoint  p;
-    for (unsigned int j = 0; j < nodes.size(); ++j)
-      {
-        p.x += N[j] * nodes[j];
-        p.dx += dN[j] * nodes[j];
-        p.ddx += ddN[j] * nodes[j];
-      }
+    SurfaceKernel::add_interpolation(
+      p, nodes.size(), N, dN, ddN, [&](const unsigned int j) {
+        return nodes[j];
+      });
     return p;
   }
 
@@ -354,12 +353,8 @@ namespace RingContact
       ddN[LagrangeBasis1D::max_size];
     displacement.evaluate(t, N, dN, ddN);
     const auto &u = segment_list[segment].nodal_displacements;
-    for (unsigned int i = 0; i < u.size(); ++i)
-      {
-        p.x += N[i] * u[i];
-        p.dx += dN[i] * u[i];
-        p.ddx += ddN[i] * u[i];
-      }
+    SurfaceKernel::add_interpolation(
+      p, u.size(), N, dN, ddN, [&](const unsigned int i) { return u[i]; });
     return p;
   }
 
@@ -367,16 +362,16 @@ namespace RingContact
   ContactSurface::normal(const unsigned int segment,
                          const CurvePoint  &point) const
   {
-    const Tensor<1, 2> n({point.dx[1], -point.dx[0]});
-    return segment_list[segment].orientation * n / n.norm();
+    return SurfaceKernel::unit(
+      SurfaceKernel::scaled_normal(point.dx, segment_list[segment].orientation));
   }
 
   Tensor<1, 2>
   ContactSurface::scaled_normal(const unsigned int segment,
                                 const double       t) const
   {
-    const Tensor<1, 2> dx = current_point(segment, t).dx;
-    return segment_list[segment].orientation * Tensor<1, 2>({dx[1], -dx[0]});
+    return SurfaceKernel::scaled_normal(current_point(segment, t).dx,
+                                        segment_list[segment].orientation);
   }
 
   Tensor<1, 2>
@@ -390,7 +385,9 @@ namespace RingContact
   ContactSurface::smoothed_normal_direction(const unsigned int segment,
                                             const double       t) const
   {
-    return (1 - t) * vertex_normal(segment, 0) + t * vertex_normal(segment, 1);
+    return SurfaceKernel::smoothed_direction(vertex_normal(segment, 0),
+                                             vertex_normal(segment, 1),
+                                             t);
   }
 
   Tensor<1, 2>
@@ -398,9 +395,8 @@ namespace RingContact
   {
     if (smooth_normals)
       {
-        const Tensor<1, 2> m =
-          smoothed_normal_direction(projection.segment, projection.t);
-        return m / m.norm();
+        return SurfaceKernel::unit(
+          smoothed_normal_direction(projection.segment, projection.t));
       }
     if (!projection.at_vertex)
       return normal(projection.segment,
@@ -418,15 +414,10 @@ namespace RingContact
     // from the orthogonal projection.
     const Tensor<1, 2> n0 = vertex_normal(segment, 0);
     const Tensor<1, 2> n1 = vertex_normal(segment, 1);
-    const auto cross      = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
-      return a[0] * b[1] - a[1] * b[0];
-    };
-    const double t = solve_on_segment(
+    const double       t  = solve_on_segment(
       project_onto_segment(x, segment, 1.0).t, [&](const double t) {
-        const CurvePoint   p = current_point(segment, t);
-        const Tensor<1, 2> m = (1 - t) * n0 + t * n1;
-        return std::make_pair(cross(x - p.x, m),
-                              -cross(p.dx, m) + cross(x - p.x, n1 - n0));
+        const CurvePoint p = current_point(segment, t);
+        return SurfaceKernel::smoothed_normal_residual(x - p.x, p, n0, n1, t);
       });
     return finish_projection(x, segment, t, extension);
   }
@@ -461,11 +452,14 @@ namespace RingContact
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (unsigned int end = 0; end < 2; ++end)
         {
-          Tensor<1, 2>       n         = scaled_normal(s, end);
           const unsigned int neighbour = segment_list[s].neighbours[end];
-          if (neighbour != numbers::invalid_unsigned_int)
-            n += scaled_normal(neighbour, segment_list[s].neighbour_t[end]);
-          vertex_normals[s][end] = n / n.norm();
+          const bool has_neighbour = neighbour != numbers::invalid_unsigned_int;
+          vertex_normals[s][end]   = SurfaceKernel::vertex_normal(
+            scaled_normal(s, end),
+            has_neighbour ?
+                scaled_normal(neighbour, segment_list[s].neighbour_t[end]) :
+                Tensor<1, 2>(),
+            has_neighbour);
         }
   }
 
@@ -480,8 +474,7 @@ namespace RingContact
     const double   t = solve_on_segment(
       ((x - a) * (b - a)) / (b - a).norm_square(), [&](const double t) {
         const CurvePoint p = current_point(segment, t);
-        return std::make_pair((x - p.x) * p.dx,
-                              -p.dx * p.dx + (x - p.x) * p.ddx);
+        return SurfaceKernel::closest_point_residual(x - p.x, p);
       });
     return finish_projection(x, segment, t, extension);
   }

@@ -19,6 +19,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <ring_contact/parameters.h>
+#include <ring_contact/surface_kernel.h>
 
 #include <array>
 #include <map>
@@ -67,13 +68,8 @@ namespace RingContact
     std::vector<Polynomials::Polynomial<double>> polynomials;
   };
 
-  /// Position and derivatives of a point of a segment.
-  struct CurvePoint
-  {
-    Point<2>     x;   ///< position
-    Tensor<1, 2> dx;  ///< dx/dt
-    Tensor<1, 2> ddx; ///< d2x/dt2
-  };
+  /// Position and derivatives of a point of a segment (surface_kernel.h).
+  using CurvePoint = SurfaceKernel::CurvePoint<double>;
 
   /// One boundary face of a contact surface.
   struct SurfaceSegment
