@@ -42,18 +42,17 @@ namespace RingContact
           p.dx[d]  = reference.dx[d];
           p.ddx[d] = reference.ddx[d];
         }
-      SurfaceKernel::add_interpolation(
-        p,
-        N.size(),
-        N.data(),
-        with_displacement ? dN.data() : nullptr,
-        with_displacement ? ddN.data() : nullptr,
-        [&](const unsigned int i) {
-          ADVector v;
-          v[0] = u_x[i];
-          v[1] = u_y[i];
-          return v;
-        });
+      SurfaceKernel::add_interpolation(p,
+                                       N.size(),
+                                       N.data(),
+                                       with_displacement ? dN.data() : nullptr,
+                                       with_displacement ? ddN.data() : nullptr,
+                                       [&](const unsigned int i) {
+                                         ADVector v;
+                                         v[0] = u_x[i];
+                                         v[1] = u_y[i];
+                                         return v;
+                                       });
       return p;
     }
 
@@ -88,11 +87,11 @@ namespace RingContact
       void
       evaluate_partner_and_normal();
       std::vector<AD>
-      residual(const double                                          c,
-               const std::function<bool(types::global_dof_index)> &active)
-        const;
+      residual(
+        const double                                        c,
+        const std::function<bool(types::global_dof_index)> &active) const;
       void
-      scatter(std::vector<AD>                  &residual,
+      scatter(std::vector<AD>                 &residual,
               const AffineConstraints<double> &constraints,
               SparseMatrix<double>            &matrix,
               Vector<double>                  &rhs);
@@ -237,7 +236,7 @@ namespace RingContact
     ADVector
     ContactElement::vertex_normal(const unsigned int end) const
     {
-      const unsigned int b            = m_seg.neighbours[end];
+      const unsigned int b             = m_seg.neighbours[end];
       const bool         has_neighbour = b != numbers::invalid_unsigned_int;
       return SurfaceKernel::vertex_normal(
         scaled_normal(projection.segment, end),
@@ -255,9 +254,9 @@ namespace RingContact
     void
     ContactElement::evaluate_slave_point()
     {
-      const AD *us_x = &u[0], *us_y = &u[ns];
+      const AD           *us_x = &u[0], *us_y = &u[ns];
       std::vector<double> G, dG, ddG;
-      AD eta_of_end[2] = {point.piece[0], point.piece[1]};
+      AD                  eta_of_end[2] = {point.piece[0], point.piece[1]};
       if (current)
         for (unsigned int side = 0; side < 2; ++side)
           if (point.piece_end[side] >= 0)
@@ -273,8 +272,8 @@ namespace RingContact
                                us_x,
                                us_y,
                                true);
-              const ADPoint xv            = master_point(projection.segment, end);
-              const auto [h, slope]       = SurfaceKernel::piece_end_residual(
+              const ADPoint xv      = master_point(projection.segment, end);
+              const auto [h, slope] = SurfaceKernel::piece_end_residual(
                 SurfaceKernel::difference<AD>(xe.x, xv.x),
                 xe.dx,
                 vertex_normal(end));
@@ -297,23 +296,27 @@ namespace RingContact
       const std::vector<AD> G_eta = expanded(G, dG), dG_eta = expanded(dG, ddG);
       const std::vector<AD> N_eta = expanded(N, dN), dN_eta = expanded(dN, ddN);
       xs = ADPoint();
-      SurfaceKernel::add_interpolation(
-        xs, G.size(), G_eta.data(), dG_eta.data(), (AD *)nullptr,
-        [&](const unsigned int j) { return s_seg.reference_nodes[j]; });
-      SurfaceKernel::add_interpolation(
-        xs,
-        ns,
-        N_eta.data(),
-        current ? dN_eta.data() : nullptr,
-        (AD *)nullptr,
-        [&](const unsigned int i) {
-          ADVector v;
-          v[0] = us_x[i];
-          v[1] = us_y[i];
-          return v;
-        });
-      ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) *
-           piece_length * point.w;
+      SurfaceKernel::add_interpolation(xs,
+                                       G.size(),
+                                       G_eta.data(),
+                                       dG_eta.data(),
+                                       (AD *)nullptr,
+                                       [&](const unsigned int j) {
+                                         return s_seg.reference_nodes[j];
+                                       });
+      SurfaceKernel::add_interpolation(xs,
+                                       ns,
+                                       N_eta.data(),
+                                       current ? dN_eta.data() : nullptr,
+                                       (AD *)nullptr,
+                                       [&](const unsigned int i) {
+                                         ADVector v;
+                                         v[0] = us_x[i];
+                                         v[1] = us_y[i];
+                                         return v;
+                                       });
+      ds = std::sqrt(xs.dx[0] * xs.dx[0] + xs.dx[1] * xs.dx[1]) * piece_length *
+           point.w;
       const AD *lambda_k = &u[lambda_offset];
       Phi_eta.resize(nl);
       lambda = 0;
@@ -372,7 +375,7 @@ namespace RingContact
     // rows, and the weighted gap on the rows of the active multipliers.
     std::vector<AD>
     ContactElement::residual(
-      const double                                          c,
+      const double                                        c,
       const std::function<bool(types::global_dof_index)> &active) const
     {
       std::vector<AD> r(local_dofs.size(), AD(0.0));
@@ -398,7 +401,7 @@ namespace RingContact
     // local unknowns: the two copies (rows and columns) are summed into one
     // first.
     void
-    ContactElement::scatter(std::vector<AD>                  &residual,
+    ContactElement::scatter(std::vector<AD>                 &residual,
                             const AffineConstraints<double> &constraints,
                             SparseMatrix<double>            &matrix,
                             Vector<double>                  &rhs)
@@ -411,9 +414,10 @@ namespace RingContact
                         unique_dofs.end());
       std::vector<unsigned int> to_unique(n);
       for (unsigned int i = 0; i < n; ++i)
-        to_unique[i] =
-          std::lower_bound(unique_dofs.begin(), unique_dofs.end(), local_dofs[i]) -
-          unique_dofs.begin();
+        to_unique[i] = std::lower_bound(unique_dofs.begin(),
+                                        unique_dofs.end(),
+                                        local_dofs[i]) -
+                       unique_dofs.begin();
       FullMatrix<double> local_matrix(unique_dofs.size(), unique_dofs.size());
       Vector<double>     local_rhs(unique_dofs.size());
       for (unsigned int i = 0; i < n; ++i)

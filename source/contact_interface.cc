@@ -371,12 +371,16 @@ namespace RingContact
       surface.displacement_basis().evaluate(t, N);
       const auto &seg = surface.segments()[segment];
       CurvePoint  u; // the displacement alone
-      SurfaceKernel::add_interpolation(
-        u, N.size(), N.data(), (double *)nullptr, (double *)nullptr,
-        [&](const unsigned int i) {
-          return Tensor<1, 2>(
-            {solution(seg.dofs_x[i]), solution(seg.dofs_y[i])});
-        });
+      SurfaceKernel::add_interpolation(u,
+                                       N.size(),
+                                       N.data(),
+                                       (double *)nullptr,
+                                       (double *)nullptr,
+                                       [&](const unsigned int i) {
+                                         return Tensor<1, 2>(
+                                           {solution(seg.dofs_x[i]),
+                                            solution(seg.dofs_y[i])});
+                                       });
       return Tensor<1, 2>(seg.rotation * Tensor<1, 2>(u.x));
     };
     const Tensor<1, 2> jump =

@@ -363,7 +363,8 @@ namespace RingContact
                          const CurvePoint  &point) const
   {
     return SurfaceKernel::unit(
-      SurfaceKernel::scaled_normal(point.dx, segment_list[segment].orientation));
+      SurfaceKernel::scaled_normal(point.dx,
+                                   segment_list[segment].orientation));
   }
 
   Tensor<1, 2>

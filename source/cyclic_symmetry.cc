@@ -56,8 +56,8 @@ namespace RingContact
       // The nodes of each side: position, ring, and dof per component.
       struct Node
       {
-        Point<2>                               position;
-        types::material_id                     ring;
+        Point<2>                                                      position;
+        types::material_id                                            ring;
         std::array<types::global_dof_index, Components::n_components> dofs;
       };
       std::array<std::vector<Node>, 2> side_nodes; // start, end
@@ -136,7 +136,8 @@ namespace RingContact
       std::map<types::global_dof_index, types::global_dof_index> twins;
       for (const auto &pair : pairs)
         if (pair.end[Components::multiplier] != numbers::invalid_dof_index)
-          twins[pair.end[Components::multiplier]] = pair.start[Components::multiplier];
+          twins[pair.end[Components::multiplier]] =
+            pair.start[Components::multiplier];
       return twins;
     }
 
@@ -161,7 +162,9 @@ namespace RingContact
               !constraints.is_constrained(pair.end[Components::multiplier]))
             {
               constraints.add_line(pair.end[Components::multiplier]);
-              constraints.add_entry(pair.end[Components::multiplier], pair.start[Components::multiplier], 1.0);
+              constraints.add_entry(pair.end[Components::multiplier],
+                                    pair.start[Components::multiplier],
+                                    1.0);
             }
         }
     }

@@ -215,12 +215,11 @@ namespace RingContact
               lines.boundary_lines.push_back(segment);
               if (element.type == 8)
                 {
-                  const Point<2> mid = mesh.nodes.at(n[2]),
-                                 end = mesh.nodes.at(n[0]),
+                  const Point<2> mid   = mesh.nodes.at(n[2]),
+                                 end   = mesh.nodes.at(n[0]),
                                  other = mesh.nodes.at(n[1]);
-                  if (!on_circles &&
-                      mid.distance(0.5 * (end + other)) >
-                        1e-8 * end.distance(other))
+                  if (!on_circles && mid.distance(0.5 * (end + other)) >
+                                       1e-8 * end.distance(other))
                     throw std::runtime_error(
                       "mesh file '" + mesh.filename + "', element " +
                       std::to_string(element.tag) +
@@ -328,7 +327,7 @@ namespace RingContact
                    parameters.problem.bodies[1].degree) :
           std::max(parameters.finite_elements.degree_outer,
                    parameters.finite_elements.degree_inner);
-      const double       cells = static_cast<double>(n_coarse_cells) *
+      const double cells = static_cast<double>(n_coarse_cells) *
                            std::pow(4.0, parameters.mesh.global_refinements);
       const double unknowns = cells * 3 * p * p;
       // Bytes per unknown: the matrix, the vectors, the mesh and the direct
@@ -356,13 +355,13 @@ namespace RingContact
     check_bodies(const Triangulation<2> &triangulation,
                  const Parameters       &parameters)
     {
-      const std::string name = "mesh '" + parameters.mesh.mesh_file + "'";
+      const std::string name    = "mesh '" + parameters.mesh.mesh_file + "'";
       const auto       &problem = parameters.problem;
       std::map<types::material_id, unsigned int> body_of;
       for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
         body_of[problem.bodies[b].material_id] = b;
 
-      std::set<types::material_id> materials;
+      std::set<types::material_id>                               materials;
       std::map<types::boundary_id, std::set<types::material_id>> bodies_of;
       for (const auto &cell : triangulation.active_cell_iterators())
         {

@@ -32,9 +32,8 @@ namespace RingContact
           for (unsigned int J = 0; J < 2; ++J)
             for (unsigned int k = 0; k < 2; ++k)
               for (unsigned int L = 0; L < 2; ++L)
-                A[i][J][k][L] =
-                  c.lambda * I[i][J] * I[k][L] +
-                  c.mu * (I[i][k] * I[J][L] + I[i][L] * I[J][k]);
+                A[i][J][k][L] = c.lambda * I[i][J] * I[k][L] +
+                                c.mu * (I[i][k] * I[J][L] + I[i][L] * I[J][k]);
       }
 
       Tensor<2, 2>

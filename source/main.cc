@@ -161,8 +161,9 @@ main(int argc, char **argv)
               std::vector<std::string> columns;
               for (const auto &check : parameters.problem.checks)
                 columns.push_back(check.column());
-              history_file = std::make_unique<HistoryFile>(
-                output.directory + "/history.csv", columns);
+              history_file =
+                std::make_unique<HistoryFile>(output.directory + "/history.csv",
+                                              columns);
             }
         }
 
@@ -193,13 +194,15 @@ main(int argc, char **argv)
                         << " of scheme " << scheme.name() << '\n';
               break;
             }
-          const auto v =
-            parameters.general() ?
-              evaluate_checks(parameters.problem,
-                              scheme.name(),
-                              history,
-                              n_steps) :
-              evaluate_checks(parameters.checks, scheme.name(), history, n_steps);
+          const auto v = parameters.general() ?
+                           evaluate_checks(parameters.problem,
+                                           scheme.name(),
+                                           history,
+                                           n_steps) :
+                           evaluate_checks(parameters.checks,
+                                           scheme.name(),
+                                           history,
+                                           n_steps);
           verdicts.insert(verdicts.end(), v.begin(), v.end());
           if (output.write_history)
             write_verdicts(output.directory + "/verdicts.csv", verdicts);

@@ -284,8 +284,9 @@ namespace RingContact
     // The name in lower case, a hyphen for the space: "gauss-3".
     std::string tag = name();
     for (char &c : tag)
-      c = c == ' ' ? '-' :
-                     static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      c = c == ' ' ?
+            '-' :
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return tag;
   }
 
@@ -788,8 +789,8 @@ namespace RingContact
       reported_pressure = prm.get("Reported pressure") == "Cauchy" ?
                             PressureMeasure::cauchy :
                             PressureMeasure::nominal;
-      const auto xy = get_point(prm, "Contact", "Probe point");
-      probe_point   = Point<2>(xy[0], xy[1]);
+      const auto xy     = get_point(prm, "Contact", "Probe point");
+      probe_point       = Point<2>(xy[0], xy[1]);
     }
     prm.leave_subsection();
   }
@@ -1433,7 +1434,8 @@ namespace RingContact
                   condition.name,
                   "Boundary id",
                   "= " + std::to_string(condition.boundary_id) +
-                    " has two loads (" + other.name + " too): give their sum "
+                    " has two loads (" + other.name +
+                    " too): give their sum "
                     "in one");
       }
   }

@@ -98,10 +98,10 @@ namespace RingContact
     for (unsigned int k = 0; k < problem.checks.size(); ++k)
       {
         const ProblemCheckParameters &check = problem.checks[k];
-        const auto reference = make_expression({check.reference},
+        const auto reference                = make_expression({check.reference},
                                                problem.constants,
                                                check.name + "/Reference");
-        const auto check_row = [&](const HistoryRow &row) {
+        const auto check_row                = [&](const HistoryRow &row) {
           Verdict v;
           v.scheme    = row.scheme;
           v.quantity  = check.description();
@@ -279,8 +279,9 @@ namespace RingContact
             const Tensor<2, 2> s = material.cauchy_stress(H);
             for (unsigned int i = 0; i < 2; ++i)
               for (unsigned int j = 0; j < 2; ++j)
-                computed_quantities[q][Tensor<2, 2>::component_to_unrolled_index(
-                  TableIndices<2>(i, j))] = s[i][j];
+                computed_quantities[q]
+                                   [Tensor<2, 2>::component_to_unrolled_index(
+                                     TableIndices<2>(i, j))] = s[i][j];
             computed_quantities[q][4] = material.von_mises_stress(H);
           }
       }

@@ -7,9 +7,9 @@
 #include <ring_contact/utilities.h>
 
 #include <cctype>
-#include <iostream>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace RingContact
@@ -93,8 +93,8 @@ namespace RingContact
                  "', which every expression already has (x, y: the point, "
                  "t: the pseudo-time, pi)");
           // A constant may use the constants before it: 'a = 0.1, P = a*a'.
-          double               number = 0;
-          std::string          problem;
+          double      number = 0;
+          std::string problem;
           {
             CaptureStandardError capture;
             try
@@ -129,19 +129,19 @@ namespace RingContact
                      bool                &polar,
                      std::array<bool, 2> &components)
     {
-      components = {{false, false}};
+      components     = {{false, false}};
       bool cartesian = false;
       polar          = false;
       for (const auto &word : Utilities::split_string_list(text))
         {
           if (word == "x" || word == "y")
             {
-              cartesian                      = true;
+              cartesian                       = true;
               components[word == "x" ? 0 : 1] = true;
             }
           else if (word == "r" || word == "theta")
             {
-              polar                          = true;
+              polar                           = true;
               components[word == "r" ? 0 : 1] = true;
             }
           else
@@ -219,10 +219,7 @@ namespace RingContact
                       Patterns::Integer(0),
                       "Scenario = general: the tag of the mesh's physical "
                       "group (material id) that is this body.");
-    prm.declare_entry("Young's modulus",
-                      "1e9",
-                      Patterns::Double(),
-                      "E [Pa].");
+    prm.declare_entry("Young's modulus", "1e9", Patterns::Double(), "E [Pa].");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
                       Patterns::Double(),
@@ -237,8 +234,8 @@ namespace RingContact
   BodyParameters::parse_parameters(ParameterHandler  &prm,
                                    const std::string &subsection)
   {
-    material_id =
-      get_count(prm, subsection, "Material id", 0, numbers::invalid_material_id - 1);
+    material_id = get_count(
+      prm, subsection, "Material id", 0, numbers::invalid_material_id - 1);
     youngs_modulus = get_double(prm, subsection, "Young's modulus");
     require(youngs_modulus > 0,
             subsection,
@@ -299,10 +296,10 @@ namespace RingContact
   {
     name                   = subsection;
     const std::string kind = prm.get("Type");
-    type = kind == "none"         ? BoundaryConditionType::none :
-           kind == "displacement" ? BoundaryConditionType::displacement :
-           kind == "traction"     ? BoundaryConditionType::traction :
-                                    BoundaryConditionType::pressure;
+    type                   = kind == "none" ? BoundaryConditionType::none :
+                             kind == "displacement" ? BoundaryConditionType::displacement :
+                             kind == "traction" ? BoundaryConditionType::traction :
+                                                  BoundaryConditionType::pressure;
     boundary_id = get_count(prm, subsection, "Boundary id", 0, 1000000000);
     if (type == BoundaryConditionType::none)
       return;
@@ -368,8 +365,9 @@ namespace RingContact
     // "Check 2" -> "check_2_"
     std::string prefix = name;
     for (char &c : prefix)
-      c = c == ' ' ? '_' :
-                     static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      c = c == ' ' ?
+            '_' :
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     switch (quantity)
       {
         case ProblemQuantity::contact_pressure:
@@ -544,7 +542,8 @@ namespace RingContact
     boundary_conditions.clear();
     for (unsigned int k = 1; k <= max_boundary_conditions; ++k)
       {
-        const std::string subsection = "Boundary condition " + std::to_string(k);
+        const std::string subsection =
+          "Boundary condition " + std::to_string(k);
         prm.enter_subsection(subsection);
         BoundaryConditionParameters condition;
         condition.parse_parameters(prm, subsection, constants);

@@ -11,8 +11,8 @@
 
 #include <algorithm>
 
-#include <ring_contact/components.h>
 #include <ring_contact/boundary_motion.h>
+#include <ring_contact/components.h>
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
 
@@ -151,10 +151,8 @@ namespace RingContact
   RingContactProblem::make_constraints()
   {
     imposed_dofs.clear();
-    for (const auto &[dof, value] :
-         scenario->imposed_displacements(dof_handler,
-                                         mapping_collection,
-                                         LoadState{0, 0, 0}))
+    for (const auto &[dof, value] : scenario->imposed_displacements(
+           dof_handler, mapping_collection, LoadState{0, 0, 0}))
       imposed_dofs.push_back(dof);
     add_constraints(constraints, {}, &is_dirichlet);
     const IndexSet all_multipliers =
@@ -457,11 +455,11 @@ namespace RingContact
               cell->face(f)->boundary_id() == load.boundary_id)
             {
               hp_face_values.reinit(cell, f);
-              const FEFaceValues<2> &fv = hp_face_values.get_present_fe_values();
-              const FiniteElement<2> &fe       = cell->get_fe();
-              const unsigned int      n        = fe.n_dofs_per_cell();
-              const bool              pressure = load.type ==
-                                    BoundaryLoad::Type::pressure;
+              const FEFaceValues<2> &fv =
+                hp_face_values.get_present_fe_values();
+              const FiniteElement<2> &fe = cell->get_fe();
+              const unsigned int      n  = fe.n_dofs_per_cell();
+              const bool pressure = load.type == BoundaryLoad::Type::pressure;
               dofs.resize(n);
               cell->get_dof_indices(dofs);
               face_matrix.reinit(n, n);
@@ -478,13 +476,13 @@ namespace RingContact
                   // The force per unit of the face's measure, times dA.
                   const Tensor<1, 2> force =
                     pressure ?
-                      Tensor<1, 2>(-p *
-                                   ((follower ?
-                                       cofactor(unit_symmetric_tensor<2>() +
-                                                grad_u[q]) :
-                                       Tensor<2, 2>(unit_symmetric_tensor<2>())) *
-                                    N) *
-                                   dA) :
+                      Tensor<1, 2>(
+                        -p *
+                        ((follower ?
+                            cofactor(unit_symmetric_tensor<2>() + grad_u[q]) :
+                            Tensor<2, 2>(unit_symmetric_tensor<2>())) *
+                         N) *
+                        dA) :
                       Tensor<1, 2>(value * dA);
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -864,8 +862,7 @@ namespace RingContact
   }
 
   double
-  RingContactProblem::reported_pressure(
-    const types::global_dof_index dof) const
+  RingContactProblem::reported_pressure(const types::global_dof_index dof) const
   {
     const double lambda = solution(dof);
     return parameters.contact.reported_pressure == PressureMeasure::cauchy ?
@@ -970,8 +967,8 @@ namespace RingContact
           // to half a node spacing.
         case ProblemQuantity::contact_half_width:
           {
-            double             width = 0;
-            const auto        &nodes = slave.multiplier_nodes();
+            double              width = 0;
+            const auto         &nodes = slave.multiplier_nodes();
             std::vector<double> t(nodes.begin(), nodes.end());
             std::sort(t.begin(), t.end());
             for (unsigned int s = 0; s < slave.segments().size(); ++s)
@@ -1014,16 +1011,16 @@ namespace RingContact
         case ProblemQuantity::resultant_force_y:
           {
             const unsigned int component =
-              check.quantity == ProblemQuantity::resultant_force_x ? Components::ux :
-                                                             Components::uy;
+              check.quantity == ProblemQuantity::resultant_force_x ?
+                Components::ux :
+                Components::uy;
             const ComponentMask mask =
               Components::displacement_mask(component == Components::ux,
                                             component == Components::uy);
-            const IndexSet dofs =
-              DoFTools::extract_boundary_dofs(dof_handler,
-                                              mask,
-                                              {static_cast<types::boundary_id>(
-                                                check.boundary_id)});
+            const IndexSet dofs = DoFTools::extract_boundary_dofs(
+              dof_handler,
+              mask,
+              {static_cast<types::boundary_id>(check.boundary_id)});
             double force = 0;
             for (const auto i : dofs)
               force += internal_force(i);
@@ -1036,8 +1033,11 @@ namespace RingContact
             Vector<double> value(Components::n_components);
             try
               {
-                VectorTools::point_value(
-                  mapping_collection, dof_handler, solution, check.point, value);
+                VectorTools::point_value(mapping_collection,
+                                         dof_handler,
+                                         solution,
+                                         check.point,
+                                         value);
               }
             catch (...)
               {

@@ -55,10 +55,9 @@ namespace RingContact
           for (unsigned int J = 0; J < 2; ++J)
             for (unsigned int k = 0; k < 2; ++k)
               for (unsigned int L = 0; L < 2; ++L)
-                A[i][J][k][L] = I[i][k] * S[L][J] +
-                                c.lambda * F[i][J] * F[k][L] +
-                                c.mu * F[i][L] * F[k][J] +
-                                c.mu * FFt[i][k] * I[J][L];
+                A[i][J][k][L] =
+                  I[i][k] * S[L][J] + c.lambda * F[i][J] * F[k][L] +
+                  c.mu * F[i][L] * F[k][J] + c.mu * FFt[i][k] * I[J][L];
       }
 
       // sigma = P F^T / det(F), det F including the thickness stretch in
@@ -90,8 +89,7 @@ namespace RingContact
         // S33 = 0: E33 = -lambda/(lambda + 2 mu) (E11 + E22),
         // F33^2 = 1 + 2 E33.
         const Tensor<2, 2> E = green_lagrange(H);
-        const double       E33 =
-          -c.lambda_3d / (c.lambda_3d + 2 * c.mu) * trace(E);
+        const double E33 = -c.lambda_3d / (c.lambda_3d + 2 * c.mu) * trace(E);
         return std::sqrt(1 + 2 * E33);
       }
 

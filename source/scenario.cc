@@ -89,11 +89,12 @@ namespace RingContact
                                    Components::n_components);
         const std::map<types::boundary_id, const Function<2> *> motion = {
           {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 motion,
-                                                 values,
-                                                 Components::displacement_mask());
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          motion,
+          values,
+          Components::displacement_mask());
         return values;
       }
 
@@ -196,15 +197,15 @@ namespace RingContact
           (0.5 / modulus(m.youngs_modulus_outer, m.poissons_ratio_outer) +
            0.5 / modulus(m.youngs_modulus_inner, m.poissons_ratio_inner));
         std::map<types::global_dof_index, double> values;
-        const ComponentMask vertical =
+        const ComponentMask                       vertical =
           Components::displacement_mask(false, true);
-        VectorTools::interpolate_boundary_values(
-          mapping,
-          dof_handler,
-          Ids::outer_boundary,
-          Functions::ZeroFunction<2>(Components::n_components),
-          values,
-          vertical);
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 Ids::outer_boundary,
+                                                 Functions::ZeroFunction<2>(
+                                                   Components::n_components),
+                                                 values,
+                                                 vertical);
         VectorTools::interpolate_boundary_values(
           mapping,
           dof_handler,
@@ -217,10 +218,8 @@ namespace RingContact
           for (const unsigned int v : cell->vertex_indices())
             if (std::abs(cell->vertex(v)[0]) < 1e-12 &&
                 std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
-              values[cell->vertex_dof_index(v,
-                                            Components::ux,
-                                            cell->active_fe_index())] =
-                0;
+              values[cell->vertex_dof_index(
+                v, Components::ux, cell->active_fe_index())] = 0;
         return values;
       }
 
@@ -246,9 +245,8 @@ namespace RingContact
                           const double                         time)
           : Function<2>(Components::n_components, time)
           , polar(condition.polar)
-          , expression(make_expression(condition.expressions,
-                                       constants,
-                                       condition.name))
+          , expression(
+              make_expression(condition.expressions, constants, condition.name))
       {
         expression->set_time(time);
       }
@@ -329,7 +327,7 @@ namespace RingContact
         for (const auto &condition : parameters.problem.boundary_conditions)
           if (condition.type == BoundaryConditionType::displacement)
             {
-              const ImposedDisplacement motion(condition,
+              const ImposedDisplacement                 motion(condition,
                                                parameters.problem.constants,
                                                load.time);
               std::map<types::global_dof_index, double> these;

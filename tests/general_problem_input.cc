@@ -37,15 +37,13 @@ namespace
     // without the folder.
     const auto  shown = last.find("error:");
     std::string text  = shown == std::string::npos ? last : last.substr(shown);
-    for (const std::string folder :
-         {std::string(SOURCE_DIR "/../"),
-          std::string(RING_CONTACT_SOURCE_DIR "/")})
+    for (const std::string folder : {std::string(SOURCE_DIR "/../"),
+                                     std::string(RING_CONTACT_SOURCE_DIR "/")})
       for (auto at = text.find(folder); at != std::string::npos;
            at      = text.find(folder))
         text.erase(at, folder.size());
-    RingContactTests::deallog_file << name << ": exit code "
-                                   << result.exit_code << ": " << text
-                                   << std::endl;
+    RingContactTests::deallog_file << name << ": exit code " << result.exit_code
+                                   << ": " << text << std::endl;
     check(result.signal == 0 && result.exit_code == 1,
           name + ": the program must fail with exit code 1");
     check(shown != std::string::npos &&

@@ -8,8 +8,8 @@
 #include "run_program.h"
 
 #include <cmath>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using RingContactTests::check;

@@ -91,7 +91,7 @@ namespace RingContact
 
   enum class LoadProgramType
   {
-    ramp,    ///< p(t) = p0 10^(t - 1.1), no rotation (modelisations A, B, H)
+    ramp,     ///< p(t) = p0 10^(t - 1.1), no rotation (modelisations A, B, H)
     rotation, ///< p fixed, inner boundary turned through s elements (C-G)
     steps     ///< given pseudo-times (Scenario = general)
   };

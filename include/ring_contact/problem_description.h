@@ -140,15 +140,15 @@ namespace RingContact
   /// Subsections Problem, Body 1/2, Boundary condition 1..n, Check 1..n.
   struct ProblemParameters
   {
-    static constexpr unsigned int n_bodies              = 2;
+    static constexpr unsigned int n_bodies                = 2;
     static constexpr unsigned int max_boundary_conditions = 12;
     static constexpr unsigned int max_checks              = 12;
 
-    ScenarioType                                scenario;
-    std::map<std::string, double>               constants;
-    std::array<BodyParameters, n_bodies>        bodies;
-    std::vector<BoundaryConditionParameters>    boundary_conditions;
-    std::vector<ProblemCheckParameters>         checks;
+    ScenarioType                             scenario;
+    std::map<std::string, double>            constants;
+    std::array<BodyParameters, n_bodies>     bodies;
+    std::vector<BoundaryConditionParameters> boundary_conditions;
+    std::vector<ProblemCheckParameters>      checks;
 
     static void
     declare_parameters(ParameterHandler &prm);

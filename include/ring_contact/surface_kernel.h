@@ -46,12 +46,12 @@ namespace RingContact
     /// v_i (a Point, a Tensor, of double or of Number).
     template <typename Number, typename BasisNumber, typename Nodal>
     void
-    add_interpolation(CurvePoint<Number>  &p,
-                      const unsigned int   n,
-                      const BasisNumber   *phi,
-                      const BasisNumber   *dphi,
-                      const BasisNumber   *ddphi,
-                      const Nodal         &nodal)
+    add_interpolation(CurvePoint<Number> &p,
+                      const unsigned int  n,
+                      const BasisNumber  *phi,
+                      const BasisNumber  *dphi,
+                      const BasisNumber  *ddphi,
+                      const Nodal        &nodal)
     {
       for (unsigned int i = 0; i < n; ++i)
         {
