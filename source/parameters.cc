@@ -107,6 +107,47 @@ namespace RingContact
       return static_cast<unsigned int>(value);
     }
 
+    std::vector<std::pair<std::string, std::string>>
+    get_assignments(const std::string &text,
+                    const std::string &subsection,
+                    const std::string &entry,
+                    const std::string &example,
+                    const std::string &kind_of_name,
+                    const bool         leading_letter)
+    {
+      std::vector<std::pair<std::string, std::string>> items;
+      if (Utilities::trim(text).empty())
+        return items;
+      const auto fail = [&](const std::string &what) {
+        require(false, subsection, entry, what);
+      };
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const std::size_t equal = item.find('=');
+          if (equal == std::string::npos)
+            fail("holds '" + printable(item) + "', not 'name = value' (e.g. '" +
+                 example + "')");
+          const std::string   name  = Utilities::trim(item.substr(0, equal));
+          const std::string   value = Utilities::trim(item.substr(equal + 1));
+          const unsigned char first =
+            name.empty() ? '0' : static_cast<unsigned char>(name[0]);
+          bool identifier = leading_letter ? std::isalpha(first) != 0 :
+                                             std::isdigit(first) == 0;
+          for (const char c : name)
+            identifier =
+              identifier &&
+              (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+          if (!identifier)
+            fail("holds the name '" + printable(name) + "', which is not " +
+                 kind_of_name);
+          for (const auto &earlier : items)
+            if (earlier.first == name)
+              fail("gives '" + name + "' twice");
+          items.emplace_back(name, value);
+        }
+      return items;
+    }
+
     void
     get_steps(ParameterHandler          &prm,
               const std::string         &subsection,
@@ -197,39 +238,24 @@ namespace RingContact
     parse_geo_numbers(const std::string &text)
     {
       std::vector<std::pair<std::string, double>> numbers;
-      if (Utilities::trim(text).empty())
-        return numbers;
-      const auto fail = [](const std::string &what) {
-        require(false, "Mesh", "Geo parameters", what);
-      };
-      for (const std::string &item : Utilities::split_string_list(text, ','))
+      for (const auto &[name, value] :
+           get_assignments(text,
+                           "Mesh",
+                           "Geo parameters",
+                           "Ne = 80, Nr1 = 6",
+                           "a gmsh variable name (letters, digits and _, not "
+                           "starting with a digit)",
+                           false))
         {
-          const std::size_t equal = item.find('=');
-          if (equal == std::string::npos)
-            fail("holds '" + printable(item) +
-                 "', not 'name = value' (e.g. 'Ne = 80, Nr1 = 6')");
-          const std::string name  = Utilities::trim(item.substr(0, equal));
-          const std::string value = Utilities::trim(item.substr(equal + 1));
-          bool              identifier =
-            !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
-          for (const char c : name)
-            identifier =
-              identifier &&
-              (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-          if (!identifier)
-            fail("holds the name '" + printable(name) +
-                 "', which is not a gmsh variable name (letters, digits and "
-                 "_, not starting with a digit)");
           char        *end    = nullptr;
           const double number = std::strtod(value.c_str(), &end);
-          if (value.empty() || *end != '\0' || !std::isfinite(number) ||
-              (number != 0 &&
-               (std::abs(number) < 1e-300 || std::abs(number) > 1e300)))
-            fail("gives '" + name + "' the value '" + printable(value) +
-                 "', which is not a usable number");
-          for (const auto &earlier : numbers)
-            if (earlier.first == name)
-              fail("gives '" + name + "' twice");
+          require(!value.empty() && *end == '\0' && std::isfinite(number) &&
+                    (number == 0 ||
+                     (std::abs(number) >= 1e-300 && std::abs(number) <= 1e300)),
+                  "Mesh",
+                  "Geo parameters",
+                  "gives '" + name + "' the value '" + printable(value) +
+                    "', which is not a usable number");
           numbers.emplace_back(name, number);
         }
       return numbers;

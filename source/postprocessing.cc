@@ -17,6 +17,46 @@
 
 namespace RingContact
 {
+  namespace
+  {
+    // The rows a check takes: every row, and a failing 'step not reached'
+    // after the last one when the run stopped early; or the rows of the
+    // listed steps (invalid_unsigned_int: the load program's last), a
+    // listed step never reached failing.
+    template <typename CheckRow, typename NotReached>
+    void
+    for_checked_rows(const bool                       every_step,
+                     const std::vector<unsigned int> &steps,
+                     const std::vector<HistoryRow>   &history,
+                     const unsigned int               n_steps,
+                     const CheckRow                  &check_row,
+                     const NotReached                &not_reached)
+    {
+      if (every_step)
+        {
+          for (const auto &row : history)
+            check_row(row);
+          if (history.empty() || history.back().step < n_steps)
+            not_reached(history.empty() ? 1 : history.back().step + 1);
+          return;
+        }
+      for (const unsigned int step : steps)
+        {
+          const unsigned int wanted =
+            step == numbers::invalid_unsigned_int ? n_steps : step;
+          bool found = false;
+          for (const auto &row : history)
+            if (row.step == wanted)
+              {
+                check_row(row);
+                found = true;
+              }
+          if (!found)
+            not_reached(wanted);
+        }
+    }
+  } // namespace
+
   std::vector<Verdict>
   evaluate_checks(const CheckParameters         &checks,
                   const std::string             &scheme,
@@ -63,28 +103,12 @@ namespace RingContact
                                  checks.tolerance,
                                  false});
     };
-    if (checks.every_step)
-      {
-        for (const auto &row : history)
-          check_row(row);
-        if (history.empty() || history.back().step < n_steps)
-          not_reached(history.empty() ? 1 : history.back().step + 1);
-      }
-    else
-      for (const unsigned int step : checks.steps)
-        {
-          const unsigned int wanted =
-            step == numbers::invalid_unsigned_int ? n_steps : step;
-          bool found = false;
-          for (const auto &row : history)
-            if (row.step == wanted)
-              {
-                check_row(row);
-                found = true;
-              }
-          if (!found) // a checked step that was never reached fails
-            not_reached(wanted);
-        }
+    for_checked_rows(checks.every_step,
+                     checks.steps,
+                     history,
+                     n_steps,
+                     check_row,
+                     not_reached);
     return verdicts;
   }
 
@@ -126,28 +150,12 @@ namespace RingContact
                                      check.tolerance,
                                      false});
         };
-        if (check.every_step)
-          {
-            for (const auto &row : history)
-              check_row(row);
-            if (history.empty() || history.back().step < n_steps)
-              not_reached(history.empty() ? 1 : history.back().step + 1);
-          }
-        else
-          for (const unsigned int step : check.steps)
-            {
-              const unsigned int wanted =
-                step == numbers::invalid_unsigned_int ? n_steps : step;
-              bool found = false;
-              for (const auto &row : history)
-                if (row.step == wanted)
-                  {
-                    check_row(row);
-                    found = true;
-                  }
-              if (!found)
-                not_reached(wanted);
-            }
+        for_checked_rows(check.every_step,
+                         check.steps,
+                         history,
+                         n_steps,
+                         check_row,
+                         not_reached);
       }
     return verdicts;
   }

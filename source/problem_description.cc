@@ -64,34 +64,22 @@ namespace RingContact
     parse_constants(const std::string &text)
     {
       std::map<std::string, double> constants;
-      const auto                    fail = [](const std::string &what) {
-        require(false, "Problem", "Constants", what);
-      };
-      if (Utilities::trim(text).empty())
-        return constants;
-      for (const std::string &item : Utilities::split_string_list(text, ','))
+      for (const auto &[name, value] :
+           get_assignments(text,
+                           "Problem",
+                           "Constants",
+                           "R = 1, q = 1e6",
+                           "a name (letters, digits and _, starting with a "
+                           "letter)",
+                           true))
         {
-          const std::size_t equal = item.find('=');
-          if (equal == std::string::npos)
-            fail("holds '" + printable(item) +
-                 "', not 'name = value' (e.g. 'R = 1, q = 1e6')");
-          const std::string name  = Utilities::trim(item.substr(0, equal));
-          const std::string value = Utilities::trim(item.substr(equal + 1));
-          bool              identifier =
-            !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
-          for (const char c : name)
-            identifier =
-              identifier &&
-              (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-          if (!identifier)
-            fail("holds the name '" + printable(name) +
-                 "', which is not a name (letters, digits and _, starting "
-                 "with a letter)");
-          if (name == "x" || name == "y" || name == "t" || name == "pi" ||
-              name == "_pi" || name == "_e" || name == "unused")
-            fail("gives a value to '" + name +
-                 "', which every expression already has (x, y: the point, "
-                 "t: the pseudo-time, pi)");
+          require(name != "x" && name != "y" && name != "t" && name != "pi" &&
+                    name != "unused",
+                  "Problem",
+                  "Constants",
+                  "gives a value to '" + name +
+                    "', which every expression already has (x, y: the point, "
+                    "t: the pseudo-time, pi)");
           // A constant may use the constants before it: 'a = 0.1, P = a*a'.
           double      number = 0;
           std::string problem;
@@ -109,14 +97,14 @@ namespace RingContact
                 problem = capture.message();
               }
           }
-          if (value.empty() || !std::isfinite(number))
-            fail("gives '" + name + "' the value '" + printable(value) +
-                 "', which is not a number nor an expression of the "
-                 "constants before it" +
-                 (problem.empty() ? std::string() :
-                                    " (" + printable(problem, 100) + ")"));
-          if (constants.count(name) != 0)
-            fail("gives '" + name + "' twice");
+          require(!value.empty() && std::isfinite(number),
+                  "Problem",
+                  "Constants",
+                  "gives '" + name + "' the value '" + printable(value) +
+                    "', which is not a number nor an expression of the "
+                    "constants before it" +
+                    (problem.empty() ? std::string() :
+                                       " (" + printable(problem, 100) + ")"));
           constants[name] = number;
         }
       return constants;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RingContact
@@ -50,6 +51,19 @@ namespace RingContact
               const std::string         &entry,
               bool                      &every_step,
               std::vector<unsigned int> &steps);
+
+    /// The items 'name = value, name = value' of an entry (empty: none),
+    /// each name given once and made of letters, digits and _, starting
+    /// with a letter (`leading_letter`) or with anything but a digit;
+    /// `example` and `kind_of_name` make the messages ("e.g. 'Ne = 80'",
+    /// "a gmsh variable name"). Returns the names and the values' text.
+    std::vector<std::pair<std::string, std::string>>
+    get_assignments(const std::string &text,
+                    const std::string &subsection,
+                    const std::string &entry,
+                    const std::string &example,
+                    const std::string &kind_of_name,
+                    const bool         leading_letter);
 
     /// An entry of two coordinates 'x, y'.
     std::array<double, 2>
