@@ -23,15 +23,27 @@ namespace RingContact
     // after the last one when the run stopped early; or the rows of the
     // listed steps (invalid_unsigned_int: the load program's last), a
     // listed step never reached failing.
-    template <typename CheckRow, typename NotReached>
+    template <typename CheckRow>
     void
     for_checked_rows(const bool                       every_step,
                      const std::vector<unsigned int> &steps,
                      const std::vector<HistoryRow>   &history,
                      const unsigned int               n_steps,
                      const CheckRow                  &check_row,
-                     const NotReached                &not_reached)
+                     const std::string               &scheme,
+                     const double                     tolerance,
+                     std::vector<Verdict>            &verdicts)
     {
+      const auto not_reached = [&](const unsigned int step) {
+        verdicts.push_back(Verdict{scheme,
+                                   "step not reached",
+                                   step,
+                                   std::nan(""),
+                                   0,
+                                   std::nan(""),
+                                   tolerance,
+                                   false});
+      };
       if (every_step)
         {
           for (const auto &row : history)
@@ -93,22 +105,14 @@ namespace RingContact
       v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
       verdicts.push_back(v);
     };
-    const auto not_reached = [&](const unsigned int step) {
-      verdicts.push_back(Verdict{scheme,
-                                 "step not reached",
-                                 step,
-                                 std::nan(""),
-                                 0,
-                                 std::nan(""),
-                                 checks.tolerance,
-                                 false});
-    };
     for_checked_rows(checks.every_step,
                      checks.steps,
                      history,
                      n_steps,
                      check_row,
-                     not_reached);
+                     scheme,
+                     checks.tolerance,
+                     verdicts);
     return verdicts;
   }
 
@@ -140,22 +144,14 @@ namespace RingContact
           v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
           verdicts.push_back(v);
         };
-        const auto not_reached = [&](const unsigned int step) {
-          verdicts.push_back(Verdict{scheme,
-                                     "step not reached",
-                                     step,
-                                     std::nan(""),
-                                     0,
-                                     std::nan(""),
-                                     check.tolerance,
-                                     false});
-        };
         for_checked_rows(check.every_step,
                          check.steps,
                          history,
                          n_steps,
                          check_row,
-                         not_reached);
+                         scheme,
+                         check.tolerance,
+                         verdicts);
       }
     return verdicts;
   }
