@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
@@ -15,12 +16,14 @@
 #include <ring_contact/components.h>
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/utilities.h>
 
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace RingContact
@@ -200,6 +203,98 @@ namespace RingContact
                                       parameters.mesh.sector_angle(),
                                       target);
     target.close();
+  }
+
+  // Which rigid-body motions of each body the imposed displacements leave
+  // free (u = a + w e_z x (X - X_c) with a, w not all zero and u = 0 in
+  // every imposed component): only the contact can hold a body there, and a
+  // frictionless contact holds it along the contact normal only. Said once
+  // per run, so that a body left free by mistake (a support forgotten) is
+  // named, not only a Newton iteration that fails.
+  void
+  RingContactProblem::report_rigid_body_modes() const
+  {
+    std::map<types::global_dof_index, Point<2>> support_points;
+    DoFTools::map_dofs_to_support_points(mapping_collection,
+                                         dof_handler,
+                                         support_points,
+                                         Components::displacement_mask());
+    const std::set<types::global_dof_index> imposed(imposed_dofs.begin(),
+                                                    imposed_dofs.end());
+    for (const Body &body : bodies)
+      {
+        // The body's extent and centre, to scale the rotation.
+        Point<2>                                       lower, upper;
+        bool                                           first = true;
+        std::vector<std::pair<Point<2>, unsigned int>> fixed;
+        std::vector<types::global_dof_index>           dofs;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->material_id() == body.material_id)
+            {
+              for (const unsigned int v : cell->vertex_indices())
+                for (unsigned int d = 0; d < 2; ++d)
+                  {
+                    const double x = cell->vertex(v)[d];
+                    lower[d]       = first ? x : std::min(lower[d], x);
+                    upper[d]       = first ? x : std::max(upper[d], x);
+                    first          = first && d == 0;
+                  }
+              dofs.resize(cell->get_fe().n_dofs_per_cell());
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                {
+                  const unsigned int c =
+                    cell->get_fe().system_to_component_index(i).first;
+                  if (Components::is_displacement(c) && imposed.count(dofs[i]))
+                    fixed.emplace_back(support_points.at(dofs[i]), c);
+                }
+            }
+        if (first)
+          continue;
+        const Point<2> centre = 0.5 * (lower + upper);
+        const double   size =
+          std::max(upper[0] - lower[0], upper[1] - lower[1]);
+        // G = M^T M, M the rigid modes (translation x, y, rotation scaled by
+        // the body's size) at the imposed components: its null space is the
+        // free motions.
+        SymmetricTensor<2, 3> G;
+        for (const auto &[X, c] : fixed)
+          {
+            const Tensor<1, 2> r = X - centre;
+            const double row[3] = {c == Components::ux ? 1.0 : 0.0,
+                                   c == Components::uy ? 1.0 : 0.0,
+                                   (c == Components::ux ? -r[1] : r[0]) / size};
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = i; j < 3; ++j)
+                G[i][j] += row[i] * row[j];
+          }
+        const auto modes = eigenvectors(G);
+        const double largest = std::max(modes[0].first, 1e-300);
+        for (const auto &[value, mode] : modes)
+          if (value <= 1e-10 * largest || fixed.empty())
+            {
+              std::ostringstream what;
+              what << std::setprecision(3);
+              const double sign =
+                mode[0] < -1e-12 || (mode[0] <= 1e-12 && mode[1] < 0) ? -1 : 1;
+              if (std::abs(mode[2]) < 1e-6)
+                {
+                  // Whole numbers for the axes, no "-0".
+                  const auto shown = [&](const double v) {
+                    return std::abs(v) < 1e-12 ? 0.0 : sign * v;
+                  };
+                  what << "the translation along (" << shown(mode[0]) << ", "
+                       << shown(mode[1]) << ")";
+                }
+              else
+                what << "a rotation about ("
+                     << centre[0] - mode[1] * size / mode[2] << ", "
+                     << centre[1] + mode[0] * size / mode[2] << ")";
+              log << "Note: " << body.name << " (material " << body.material_id
+                  << "): no imposed displacement fixes " << what.str()
+                  << "; only the contact holds it there\n";
+            }
+      }
   }
 
   // The first update of a load step carries the boundary increment, the
@@ -527,14 +622,50 @@ namespace RingContact
     return n_changed;
   }
 
-  void
+  // The Newton update by a direct solve. A singular tangent (UMFPACK
+  // refuses it) or a nearly singular one (the solution does not satisfy
+  // the system) is a failure of the iteration with its reason, not an
+  // exception that ends the run: usually a body that nothing holds in some
+  // direction (a missing support, or a contact that is open).
+  bool
   RingContactProblem::solve_linear_system(Vector<double> &newton_update)
   {
-    TimerOutput::Scope  t(timer, "linear solver");
-    SparseDirectUMFPACK direct;
-    direct.initialize(system_matrix);
-    direct.vmult(newton_update, system_rhs);
+    TimerOutput::Scope t(timer, "linear solver");
+    const std::string  advice =
+      ": a body may be free to move rigidly (check that its supports, "
+      "and the contact, hold it in every direction)";
+    try
+      {
+        SparseDirectUMFPACK direct;
+        direct.initialize(system_matrix);
+        direct.vmult(newton_update, system_rhs);
+      }
+    catch (const std::exception &e)
+      {
+        failure_reason = "the tangent matrix is singular (" +
+                         one_line_message(e) + ")" + advice;
+        return false;
+      }
+    // UMFPACK refines its solution iteratively: on a regular matrix,
+    // however ill-conditioned, K x - b is a round-off of b. A singular one
+    // (a body free to slide) leaves x without meaning: a residual of the
+    // order of b, or an x so large that the next state is nonsense.
+    Vector<double> residual(system_rhs.size());
+    system_matrix.vmult(residual, newton_update);
+    residual -= system_rhs;
+    const double relative_residual =
+      residual.l2_norm() / std::max(system_rhs.l2_norm(), 1e-300);
+    if (!(relative_residual <= 1e-6))
+      {
+        std::ostringstream reason;
+        reason << "the tangent matrix is singular to working precision (the "
+                  "direct solve leaves a relative residual of "
+               << std::setprecision(3) << relative_residual << ")" << advice;
+        failure_reason = reason.str();
+        return false;
+      }
     update_constraints().distribute(newton_update);
+    return true;
   }
 
   bool
@@ -710,7 +841,11 @@ namespace RingContact
         if (it + 1 == hold_pairing_after)
           keep_partners = true;
 
-        solve_linear_system(newton_update);
+        if (!solve_linear_system(newton_update))
+          {
+            final_residual = std::numeric_limits<double>::infinity();
+            return false;
+          }
         ++iterations;
         // The update that imposes the boundary increment is taken whole: a
         // fraction of it would leave the boundary short of the load state,
@@ -1091,6 +1226,7 @@ namespace RingContact
   RingContactProblem::run()
   {
     setup();
+    report_rigid_body_modes();
     log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
         << " cells, " << dof_handler.n_dofs() << " unknowns, "
         << contact->multiplier_dofs().size() << " contact pressure nodes, "

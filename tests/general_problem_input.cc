@@ -148,6 +148,39 @@ main()
                "/../meshes/ssnp152g.msh\nend\n",
                "curved quadratic mesh is refused");
 
+  // A body that nothing holds along the contact, pushed along it: the
+  // run names the free motions before it starts, and each Newton failure
+  // says that the tangent is singular and why it may be, never a crash.
+  {
+    std::ofstream prm("floating_body.prm");
+    prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+        << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+           "/../meshes/two_blocks.geo\nend\n"
+        << "subsection Output\n set VTU interval = 0\n"
+           " set Write history = false\nend\n"
+        << "subsection Newton\n set Verbose = false\nend\n"
+        << "subsection Boundary condition 1\n set Value = 0.1 * p * t; -p * "
+           "t\nend\n"
+        << "subsection Boundary condition 2\n set Type = none\nend\n";
+  }
+  {
+    const auto floating = RingContactTests::run_program("floating_body.prm");
+    check(floating.exit_code == 1 &&
+            floating.printed("Note: Body 2 (material 2): no imposed "
+                             "displacement fixes the translation along (1, "
+                             "0); only the contact holds it there") &&
+            floating.printed("the tangent matrix is singular") &&
+            floating.printed("a body may be free to move rigidly") &&
+            floating.printed("A load step could not be solved"),
+          "floating_body: the free motions named, the singular tangent "
+          "reported");
+    RingContactTests::deallog_file
+      << "floating_body: exit code 1: Body 2's translation along (1, 0) "
+         "named; the tangent matrix is singular: a body may be free "
+         "to move rigidly"
+      << std::endl;
+  }
+
   // An entry of a general problem in an SSNP152 file is refused, not
   // ignored.
   {

@@ -185,6 +185,8 @@ namespace RingContact
       std::vector<bool>                               *fixed_dofs = nullptr);
     bool
     make_lifting_constraints();
+    void
+    report_rigid_body_modes() const;
     const AffineConstraints<double> &
     update_constraints() const
     {
@@ -192,7 +194,7 @@ namespace RingContact
     }
     void
     make_sparsity_pattern();
-    void
+    bool
     solve_linear_system(Vector<double> &newton_update);
     /// The pairing at an accepted Newton iterate: the search, or, once the
     /// pairing is held, the held partners stopped at their segments' ends.
