@@ -8,6 +8,7 @@
 #include <ring_contact/surface_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -97,6 +98,8 @@ namespace RingContact
               Vector<double>                  &rhs);
 
     private:
+      std::array<AD, 2>
+      piece_ends();
       ADPoint
       master_point(const unsigned int m, const double t) const;
       ADVector
@@ -244,19 +247,16 @@ namespace RingContact
         has_neighbour);
     }
 
-    // The slave point. Its parameter: fixed, or (segment-based) moving with
-    // the ends of its piece, each the crossing of the slave curve with the
+    // The ends of the slave point's piece: fixed, or (segment-based) moving
+    // with the displacement, each the crossing of the slave curve with the
     // line through a vertex of the partner along its normal: eta_end = eta0
     // - h / h' with h = (x_s(eta) - x_v) x n_v, whose value is eta0 and
-    // whose derivative is that of the crossing. Then its position, length
-    // element and the pressure there, the basis functions expanded to first
-    // order around eta0.
-    void
-    ContactElement::evaluate_slave_point()
+    // whose derivative is that of the crossing.
+    std::array<AD, 2>
+    ContactElement::piece_ends()
     {
-      const AD           *us_x = &u[0], *us_y = &u[ns];
-      std::vector<double> G, dG, ddG;
-      AD                  eta_of_end[2] = {point.piece[0], point.piece[1]};
+      const AD         *us_x = &u[0], *us_y = &u[ns];
+      std::array<AD, 2> eta_of_end = {{point.piece[0], point.piece[1]}};
       if (current)
         for (unsigned int side = 0; side < 2; ++side)
           if (point.piece_end[side] >= 0)
@@ -279,7 +279,20 @@ namespace RingContact
                 vertex_normal(end));
               eta_of_end[side] = eta0 - h / slope;
             }
-      const AD piece_length = eta_of_end[1] - eta_of_end[0];
+      return eta_of_end;
+    }
+
+    // The slave point: its parameter eta = eta_a + (eta_b - eta_a) xi on its
+    // piece, written eta0 + d eta with d eta of value 0 and the derivative
+    // of the moving ends; its position, length element and the pressure
+    // there, the basis functions expanded to first order around eta0.
+    void
+    ContactElement::evaluate_slave_point()
+    {
+      const AD               *us_x = &u[0], *us_y = &u[ns];
+      std::vector<double>     G, dG, ddG;
+      const std::array<AD, 2> eta_of_end   = piece_ends();
+      const AD                piece_length = eta_of_end[1] - eta_of_end[0];
       d_eta = eta_of_end[0] + piece_length * point.xi - point.eta; // value 0
 
       slave.geometry_basis().evaluate(point.eta, G, dG, ddG);
