@@ -22,6 +22,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 namespace RingContact
@@ -78,6 +79,16 @@ namespace RingContact
       return n;
     }
 
+    // A note on the order of the operations below: the double and the AD
+    // paths were written separately before this kernel, with the same
+    // expressions grouped differently (a double Tensor divides by
+    // multiplying with the inverse, the AD code divided; sums were grouped
+    // differently). `exact_as_before` keeps each path's own order, so that
+    // the kernel changed no result in its last bit; both orders are the
+    // same expression.
+    template <typename Number>
+    constexpr bool exact_as_before = std::is_floating_point<Number>::value;
+
     /// v / |v|.
     template <typename Number>
     Tensor<1, 2, Number>
@@ -86,8 +97,17 @@ namespace RingContact
       using std::sqrt;
       const Number         length = sqrt(v[0] * v[0] + v[1] * v[1]);
       Tensor<1, 2, Number> u;
-      u[0] = v[0] / length;
-      u[1] = v[1] / length;
+      if constexpr (exact_as_before<Number>)
+        {
+          const Number inverse = Number(1.) / length;
+          u[0]                 = v[0] * inverse;
+          u[1]                 = v[1] * inverse;
+        }
+      else
+        {
+          u[0] = v[0] / length;
+          u[1] = v[1] / length;
+        }
       return u;
     }
 
@@ -149,9 +169,12 @@ namespace RingContact
     closest_point_residual(const Tensor<1, 2, Number> &d,
                            const CurvePoint<Number>   &p)
     {
-      return {d[0] * p.dx[0] + d[1] * p.dx[1],
-              -(p.dx[0] * p.dx[0] + p.dx[1] * p.dx[1]) + d[0] * p.ddx[0] +
-                d[1] * p.ddx[1]};
+      const Number r       = d[0] * p.dx[0] + d[1] * p.dx[1];
+      const Number tangent = -(p.dx[0] * p.dx[0] + p.dx[1] * p.dx[1]);
+      if constexpr (exact_as_before<Number>)
+        return {r, tangent + (d[0] * p.ddx[0] + d[1] * p.ddx[1])};
+      else
+        return {r, tangent + d[0] * p.ddx[0] + d[1] * p.ddx[1]};
     }
 
     /// The smoothed-normal condition r(t) = d x m(t) with d = x_s - x(t),
@@ -165,8 +188,13 @@ namespace RingContact
                              const double                t)
     {
       const Tensor<1, 2, Number> m = smoothed_direction(n0, n1, t);
-      return {cross(d, m),
-              -cross(p.dx, m) + cross(d, difference<Number>(n1, n0))};
+      if constexpr (exact_as_before<Number>)
+        return {cross(d, m),
+                -cross(p.dx, m) + cross(d, difference<Number>(n1, n0))};
+      else
+        return {cross(d, m),
+                -cross(p.dx, m) + d[0] * (n1[1] - n0[1]) -
+                  d[1] * (n1[0] - n0[0])};
     }
     /// Segment-based integration: the crossing of a slave curve x_s(eta)
     /// with the line through a master vertex x_v along its normal n_v is
