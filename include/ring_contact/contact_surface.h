@@ -287,17 +287,6 @@ namespace RingContact
     RTree<Box> search_tree;
   };
 
-  /// The quadrature rule on a slave segment (t in [0, 1]) of a scheme.
-  /// `degree` is the higher of the displacement degrees of the slave and
-  /// master surfaces: "nodal" is Gauss-Lobatto through the nodes of a
-  /// segment of that degree, i.e. the slave nodes, and also the mid-side
-  /// points when the master is quadratic (where they face its mid-side
-  /// nodes); see theory.md. Throws, with the reason, for the rules that
-  /// leave some nodes of a quadratic surface without weight (first order):
-  /// one point per segment or piece, and the trapezoid rule.
-  Quadrature<1>
-  contact_quadrature(const IntegrationScheme &scheme,
-                     const unsigned int       degree);
 } // namespace RingContact
 
 #endif

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ring_contact/contact_quadrature.h>
 #include <ring_contact/problem_description.h>
 
 #include <string>
@@ -38,34 +39,6 @@ namespace RingContact
   {
     plane_stress, ///< S33 = 0 (C_PLAN)
     plane_strain  ///< E33 = 0 (D_PLAN)
-  };
-
-  /// Where the contact integrals are evaluated on each slave segment.
-  enum class ContactIntegration
-  {
-    nodal,   ///< at the slave nodes (Gauss-Lobatto, the original's default)
-    gauss,   ///< n Gauss points per slave segment
-    simpson, ///< composite Simpson rule of order n (n sub-intervals)
-    newton_cotes, ///< closed Newton-Cotes rule with n+1 points (n = 1,2,4,6)
-    segment_based ///< slave segments cut where the master vertices project,
-                  ///< n Gauss points on each piece (mortar integration)
-  };
-
-  /// One contact integration scheme as named in the `.prm` file.
-  struct IntegrationScheme
-  {
-    ContactIntegration type;
-    unsigned int       n_points; ///< n (meaning depends on the type)
-
-    /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4", "segment-based 3".
-    std::string
-    name() const;
-    /// The name for file names: "nodal", "gauss-3", "segment-based-2".
-    std::string
-    tag() const;
-    /// Parse one of the names above; throws with a clear message otherwise.
-    static IntegrationScheme
-    parse(const std::string &text);
   };
 
   /// Which contact pressure is reported (the unknown is always the Cauchy one).

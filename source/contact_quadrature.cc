@@ -1,0 +1,157 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <ring_contact/contact_quadrature.h>
+
+#include <cctype>
+#include <sstream>
+#include <stdexcept>
+
+namespace RingContact
+{
+  std::string
+  IntegrationScheme::name() const
+  {
+    switch (type)
+      {
+        case ContactIntegration::nodal:
+          return "nodal";
+        case ContactIntegration::gauss:
+          return "Gauss " + std::to_string(n_points);
+        case ContactIntegration::simpson:
+          return "Simpson " + std::to_string(n_points);
+        case ContactIntegration::newton_cotes:
+          return "Newton-Cotes " + std::to_string(n_points);
+        case ContactIntegration::segment_based:
+          return "segment-based " + std::to_string(n_points);
+      }
+    return "";
+  }
+
+  std::string
+  IntegrationScheme::tag() const
+  {
+    // The name in lower case, a hyphen for the space: "gauss-3".
+    std::string tag = name();
+    for (char &c : tag)
+      c = c == ' ' ?
+            '-' :
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tag;
+  }
+
+  IntegrationScheme
+  IntegrationScheme::parse(const std::string &text)
+  {
+    std::istringstream in(text);
+    std::string        word;
+    in >> word;
+    std::string lower = word;
+    for (char &c : lower)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    IntegrationScheme scheme{ContactIntegration::nodal, 0};
+    int               n = -1;
+    if (lower == "nodal")
+      return scheme;
+    if (!(in >> n))
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' needs a number of points, e.g. 'Gauss 2'");
+    std::string rest;
+    if (in >> rest)
+      throw std::runtime_error("contact integration scheme '" + text +
+                               "' has trailing text '" + rest + "'");
+    if (lower == "gauss")
+      {
+        scheme.type = ContactIntegration::gauss;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Gauss needs 1 to 20 points");
+      }
+    else if (lower == "simpson")
+      {
+        scheme.type = ContactIntegration::simpson;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Simpson order must be 1 to 20");
+      }
+    else if (lower == "newton-cotes")
+      {
+        scheme.type = ContactIntegration::newton_cotes;
+        if (n != 1 && n != 2 && n != 4 && n != 6)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': Newton-Cotes order must be 1, 2, 4 "
+                                   "or 6");
+      }
+    else if (lower == "segment-based")
+      {
+        scheme.type = ContactIntegration::segment_based;
+        if (n < 1 || n > 20)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': segment-based needs 1 to 20 Gauss "
+                                   "points per piece");
+      }
+    else
+      throw std::runtime_error(
+        "unknown contact integration scheme '" + text +
+        "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n, "
+        "segment-based n)");
+    scheme.n_points = static_cast<unsigned int>(n);
+    return scheme;
+  }
+
+  Quadrature<1>
+  contact_quadrature(const IntegrationScheme &scheme, const unsigned int degree)
+  {
+    // A quadratic segment's vertex functions vanish at its midpoint and its
+    // mid-side function at its ends: a single point (Gauss 1, or one per
+    // piece, which on facing meshes is the whole segment) or the ends alone
+    // (trapezoid) give some of its nodes no contact force and leave their
+    // displacement out of the weighted gaps, an error of the order of h in
+    // the pressure (see theory.md).
+    const bool one_point = (scheme.type == ContactIntegration::gauss ||
+                            scheme.type == ContactIntegration::segment_based) &&
+                           scheme.n_points == 1;
+    const bool ends_only =
+      scheme.type == ContactIntegration::newton_cotes && scheme.n_points == 1;
+    AssertThrow(degree < 2 || !(one_point || ends_only),
+                ExcMessage("contact integration scheme '" + scheme.name() +
+                           "' is first order on a quadratic contact surface "
+                           "(" +
+                           (one_point ? "its one point per segment misses "
+                                        "the vertex nodes" :
+                                        "its segment ends miss the mid-side "
+                                        "nodes") +
+                           "); use nodal, Gauss 2 or more, Simpson, "
+                           "Newton-Cotes 2 or more, or segment-based 2 or "
+                           "more"));
+    switch (scheme.type)
+      {
+        case ContactIntegration::nodal:
+          // At the nodes, with the weights that integrate the elements'
+          // polynomials: trapezoid when both surfaces are linear, Simpson
+          // when one is quadratic. A linear slave facing a quadratic master
+          // needs the mid-side points too: with the slave vertices alone the
+          // master's mid-side nodes would get no contact force.
+          return QGaussLobatto<1>(degree + 1);
+        case ContactIntegration::gauss:
+        case ContactIntegration::segment_based: // the rule on each piece
+          return QGauss<1>(scheme.n_points);
+        case ContactIntegration::simpson:
+          return QIterated<1>(QSimpson<1>(), scheme.n_points);
+        case ContactIntegration::newton_cotes:
+          switch (scheme.n_points)
+            {
+              case 1:
+                return QTrapezoid<1>();
+              case 2:
+                return QSimpson<1>();
+              case 4:
+                return QMilne<1>();
+              case 6:
+                return QWeddle<1>();
+            }
+      }
+    AssertThrow(false, ExcMessage("unknown contact integration scheme"));
+    return Quadrature<1>();
+  }
+} // namespace RingContact
