@@ -187,13 +187,23 @@ namespace RingContact
   std::string
   verdicts_csv(const std::vector<Verdict> &verdicts)
   {
+    // A field with a comma or a quote ("pressure at (0, 0)") in quotes, its
+    // quotes doubled (RFC 4180), so that a CSV reader sees one field.
+    const auto field = [](const std::string &text) {
+      if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+      std::string quoted = "\"";
+      for (const char c : text)
+        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+      return quoted + "\"";
+    };
     std::ostringstream out;
     out << "scheme,quantity,step,value,reference,error,tolerance,verdict\n";
     out << std::setprecision(10);
     for (const auto &v : verdicts)
-      out << v.scheme << ',' << v.quantity << ',' << v.step << ',' << v.value
-          << ',' << v.reference << ',' << v.error << ',' << v.tolerance << ','
-          << (v.pass ? "PASS" : "FAIL") << '\n';
+      out << field(v.scheme) << ',' << field(v.quantity) << ',' << v.step << ','
+          << v.value << ',' << v.reference << ',' << v.error << ','
+          << v.tolerance << ',' << (v.pass ? "PASS" : "FAIL") << '\n';
     return out.str();
   }
 

@@ -48,8 +48,19 @@ def check_csv(path, n_fields):
     return rows[1:]
 
 
+def history_fields(path):
+    """The 15 fields of every run, and a general problem's checked
+    quantities after them (check_1_contact_pressure, ...)."""
+    with open(path, newline="") as f:
+        header = next(csv.reader(f), [])
+    extra = header[HISTORY_FIELDS:]
+    if any(not name.startswith("check_") for name in extra):
+        fail(f"{path}: header has unknown fields {extra}")
+    return HISTORY_FIELDS + len(extra)
+
+
 def check_history(path):
-    rows = check_csv(path, HISTORY_FIELDS)
+    rows = check_csv(path, history_fields(path))
     for i, row in enumerate(rows, start=2):
         for value in row[1:]:
             try:
@@ -213,7 +224,8 @@ def main():
         rows = check_history(history)
         if args.rows is not None and len(rows) != args.rows:
             fail(f"{history}: {len(rows)} rows, expected {args.rows}")
-        say(f"history.csv: {len(rows)} rows of {HISTORY_FIELDS} fields")
+        say(f"history.csv: {len(rows)} rows of {history_fields(history)} "
+            "fields")
     verdicts = os.path.join(folder, "verdicts.csv")
     if os.path.isfile(verdicts):
         say(f"verdicts.csv: {len(check_csv(verdicts, VERDICT_FIELDS))} rows")

@@ -61,13 +61,22 @@ main()
     prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
         << "subsection Mesh\n set Mesh file = " SOURCE_DIR
            "/../meshes/two_blocks.geo\nend\n"
-        << "subsection Output\n set VTU interval = 0\n"
-           " set Write history = false\nend\n";
+        << "subsection Output\n set VTU interval = 1\n"
+           " set Directory = results_valid\nend\n";
     prm.close();
     const auto result = RingContactTests::run_program("valid.prm");
     check(result.exit_code == 0 && result.printed("7 of 7 checks pass"),
           "two_blocks.prm must solve and pass its checks");
-    RingContactTests::deallog_file << "valid: 7 of 7 checks pass" << std::endl;
+    // Its results read back whole: history.csv with the checked
+    // quantities' columns, verdicts.csv whose quantities hold commas
+    // ("pressure at (0.3, 0)"), the VTU files of steps 0, 1 and 2.
+    check(RingContactTests::check_results(
+            "results_valid", "--quiet --all-listed --vtu-every-step --rows 2"),
+          "valid: its results read back whole");
+    RingContactTests::deallog_file
+      << "valid: 7 of 7 checks pass; history.csv (with the checks' columns), "
+         "verdicts.csv and the VTU files read back whole"
+      << std::endl;
   }
 
   expect_error("unknown_body",
