@@ -252,23 +252,22 @@ namespace RingContact
         if (first)
           continue;
         const Point<2> centre = 0.5 * (lower + upper);
-        const double   size =
-          std::max(upper[0] - lower[0], upper[1] - lower[1]);
+        const double size = std::max(upper[0] - lower[0], upper[1] - lower[1]);
         // G = M^T M, M the rigid modes (translation x, y, rotation scaled by
         // the body's size) at the imposed components: its null space is the
         // free motions.
         SymmetricTensor<2, 3> G;
         for (const auto &[X, c] : fixed)
           {
-            const Tensor<1, 2> r = X - centre;
-            const double row[3] = {c == Components::ux ? 1.0 : 0.0,
+            const Tensor<1, 2> r      = X - centre;
+            const double       row[3] = {c == Components::ux ? 1.0 : 0.0,
                                    c == Components::uy ? 1.0 : 0.0,
                                    (c == Components::ux ? -r[1] : r[0]) / size};
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int j = i; j < 3; ++j)
                 G[i][j] += row[i] * row[j];
           }
-        const auto modes = eigenvectors(G);
+        const auto   modes   = eigenvectors(G);
         const double largest = std::max(modes[0].first, 1e-300);
         for (const auto &[value, mode] : modes)
           if (value <= 1e-10 * largest || fixed.empty())
@@ -1015,17 +1014,14 @@ namespace RingContact
                                        const double       wall_time)
   {
     TimerOutput::Scope    t(timer, "postprocessing");
-    const PressureMeasure measure  = parameters.contact.reported_pressure;
-    const auto            reported = [&](const types::global_dof_index dof) {
-      return reported_pressure(dof);
-    };
-    HistoryRow row;
+    const PressureMeasure measure = parameters.contact.reported_pressure;
+    HistoryRow            row;
     row.scheme         = scheme.name();
     row.step           = step;
     row.time           = current_time;
     row.load_factor    = current_load.pressure;
     row.rotation       = current_load.rotation_elements;
-    row.pressure_A     = reported(probe_dof);
+    row.pressure_A     = reported_pressure(probe_dof);
     row.analytic       = scenario->reference_pressure(current_load);
     row.relative_error = (row.pressure_A - row.analytic) / row.analytic;
     row.l2_relative_error =
@@ -1034,8 +1030,8 @@ namespace RingContact
     row.pressure_max = -std::numeric_limits<double>::max();
     for (const auto dof : contact->multiplier_dofs())
       {
-        row.pressure_min = std::min(row.pressure_min, reported(dof));
-        row.pressure_max = std::max(row.pressure_max, reported(dof));
+        row.pressure_min = std::min(row.pressure_min, reported_pressure(dof));
+        row.pressure_max = std::max(row.pressure_max, reported_pressure(dof));
       }
     row.newton_iterations = iterations;
     row.step_cuts         = cuts;

@@ -20,7 +20,6 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/analytic_solution.h>
 #include <ring_contact/contact_interface.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/material.h>
