@@ -5,10 +5,15 @@
 // (non-matching meshes). Tags: 21 the lower block's bottom, 22 and 12 the
 // left sides (x = 0), 11 the upper block's top, 13 and 23 the right sides.
 // clockwise = 1 draws the lower block's outline clockwise, so that gmsh
-// writes its cells clockwise (the program must reorient them).
-DefineConstant[ nl = 5, nu = 7, nh = 3, clockwise = 0 ];
-Point(1) = {0, -0.5, 0}; Point(2) = {1, -0.5, 0};
-Point(3) = {1, 0, 0};    Point(4) = {0, 0, 0};
+// writes its cells clockwise (the program must reorient them). angle turns
+// both blocks about the origin by that many degrees (an inclined interface
+// and inclined supports: the interface then runs along (cos a, sin a)).
+DefineConstant[ nl = 5, nu = 7, nh = 3, clockwise = 0, angle = 0 ];
+// (Each point turned here: gmsh's Rotate would merge the blocks' coincident
+// points, and the two blocks would share their interface.)
+c = Cos(angle * Pi / 180); s = Sin(angle * Pi / 180);
+Point(1) = {0.5 * s, -0.5 * c, 0}; Point(2) = {c + 0.5 * s, s - 0.5 * c, 0};
+Point(3) = {c, s, 0};              Point(4) = {0, 0, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 If (clockwise)
   Curve Loop(1) = {-4, -3, -2, -1};
@@ -16,8 +21,8 @@ Else
   Curve Loop(1) = {1, 2, 3, 4};
 EndIf
 Plane Surface(1) = {1};
-Point(5) = {0, 0, 0};    Point(6) = {1, 0, 0};
-Point(7) = {1, 0.5, 0};  Point(8) = {0, 0.5, 0};
+Point(5) = {0, 0, 0};              Point(6) = {c, s, 0};
+Point(7) = {c - 0.5 * s, s + 0.5 * c, 0}; Point(8) = {-0.5 * s, 0.5 * c, 0};
 Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
 Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
 Transfinite Curve{1, 3} = nl + 1; Transfinite Curve{2, 4} = nh + 1;

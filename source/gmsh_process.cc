@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <iostream>
 #include <stdexcept>
 
@@ -152,6 +153,32 @@ namespace RingContact
 
       constexpr std::uint32_t end_of_answer = 0x52494e47;
 
+      // gmsh 4.8 throws some of its errors (a surface that the transfinite
+      // algorithm cannot mesh, say) from where no exception can leave:
+      // std::terminate() is called. The child then answers with gmsh's
+      // last error, so that the user reads what gmsh said, not that it
+      // crashed.
+      int answer_fd = -1;
+
+      [[noreturn]] void
+      answer_last_error()
+      {
+        std::string message;
+        try
+          {
+            gmsh::logger::getLastError(message);
+          }
+        catch (...)
+          {}
+        if (message.empty())
+          message = "gmsh stopped without a message (std::terminate)";
+        Writer out(answer_fd);
+        out.value<std::uint8_t>(1);
+        out.string(message);
+        out.value(end_of_answer);
+        _exit(0);
+      }
+
       // The child: gmsh reads (or meshes) the file and the model is
       // written to `fd`. Never returns.
       [[noreturn]] void
@@ -162,6 +189,8 @@ namespace RingContact
                  const unsigned int element_order)
       {
         Writer out(fd);
+        answer_fd = fd;
+        std::set_terminate(answer_last_error);
         try
           {
             std::vector<std::string> arguments = {"gmsh"};

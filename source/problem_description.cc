@@ -115,12 +115,28 @@ namespace RingContact
     parse_components(const std::string   &text,
                      const std::string   &subsection,
                      bool                &polar,
+                     bool                &normal,
                      std::array<bool, 2> &components)
     {
-      components     = {{false, false}};
-      bool cartesian = false;
-      polar          = false;
-      for (const auto &word : Utilities::split_string_list(text))
+      components       = {{false, false}};
+      bool cartesian   = false;
+      polar            = false;
+      normal           = false;
+      const auto words = Utilities::split_string_list(text);
+      for (const auto &word : words)
+        if (word == "n")
+          {
+            require(words.size() == 1,
+                    subsection,
+                    "Components",
+                    "= " + printable(text) +
+                      ": the normal component n is imposed alone (the "
+                      "tangential one is then free)");
+            normal     = true;
+            components = {{true, true}};
+            return;
+          }
+      for (const auto &word : words)
         {
           if (word == "x" || word == "y")
             {
@@ -137,13 +153,13 @@ namespace RingContact
                     subsection,
                     "Components",
                     "holds '" + printable(word) +
-                      "': the components are x, y (Cartesian) or r, theta "
-                      "(polar, about the origin)");
+                      "': the components are x, y (Cartesian), r, theta "
+                      "(polar, about the origin), or n (normal)");
         }
       require(components[0] || components[1],
               subsection,
               "Components",
-              "names no component (x, y, or r, theta)");
+              "names no component (x, y, r, theta, or n)");
       require(!(cartesian && polar),
               subsection,
               "Components",
@@ -216,6 +232,16 @@ namespace RingContact
                       "1",
                       Patterns::Integer(1, 4),
                       "Degree of the displacement elements (1: Q1, 2: Q2).");
+    prm.declare_entry("Kinematics",
+                      "",
+                      Patterns::Selection("|finite strain|small strain"),
+                      "The body's kinematics; empty: that of "
+                      "Materials/Kinematics. A body in small strain may "
+                      "touch one in finite strain: the contact is then "
+                      "written on the current configuration (it is "
+                      "geometrically linear only when both bodies are in "
+                      "small strain), and a pressure load on a body follows "
+                      "its surface when that body is in finite strain.");
   }
 
   void
@@ -235,6 +261,10 @@ namespace RingContact
             "Poisson's ratio",
             "must be in (-1, 0.5), got " + to_text(poissons_ratio));
     degree = get_count(prm, subsection, "Displacement degree", 1, 4);
+    const std::string kind = prm.get("Kinematics");
+    inherits_kinematics    = kind.empty();
+    kinematics             = kind == "small strain" ? Kinematics::small_strain :
+                                                      Kinematics::finite_strain;
   }
 
   // ------------------------------------------------------------------
@@ -264,15 +294,24 @@ namespace RingContact
                       "x, y",
                       Patterns::Anything(),
                       "Displacement: which components are imposed: x, y, "
-                      "'x, y', or 'r, theta' (polar about the origin: u = "
-                      "u_r e_r + u_theta e_theta).");
+                      "'x, y', 'r, theta' (polar about the origin: u = "
+                      "u_r e_r + u_theta e_theta), or n: the normal "
+                      "displacement u . N, N the outward unit normal of "
+                      "the reference boundary, the tangential displacement "
+                      "free (a roller on an inclined or a curved boundary; "
+                      "at a node the normals of the faces are averaged, "
+                      "where they are more than 60 degrees apart (a corner) "
+                      "both directions are imposed, and where a Cartesian "
+                      "or polar condition imposes a component the normal "
+                      "condition sets the other).");
     prm.declare_entry("Value",
                       "0; 0",
                       Patterns::Anything(),
                       "Expressions of x, y (reference position [m]), t "
                       "(pseudo-time) and the constants, separated by ';': "
                       "displacement: two, in the order x; y or r; theta "
-                      "(a component not imposed is not used) [m]; traction: "
+                      "(a component not imposed is not used), or one, u . N, "
+                      "for Components = n [m]; traction: "
                       "tx; ty [Pa]; pressure: p [Pa].");
   }
 
@@ -292,15 +331,17 @@ namespace RingContact
     if (type == BoundaryConditionType::none)
       return;
     if (type == BoundaryConditionType::displacement)
-      parse_components(prm.get("Components"), subsection, polar, components);
+      parse_components(
+        prm.get("Components"), subsection, polar, normal, components);
     expressions = Utilities::split_string_list(prm.get("Value"), ';');
     const unsigned int expected =
-      type == BoundaryConditionType::pressure ? 1 : 2;
+      type == BoundaryConditionType::pressure || normal ? 1 : 2;
     require(expressions.size() == expected,
             subsection,
             "Value",
             "holds " + std::to_string(expressions.size()) +
-              " expression(s) separated by ';', a " + kind + " needs " +
+              " expression(s) separated by ';', a " +
+              (normal ? std::string("normal displacement") : kind) + " needs " +
               std::to_string(expected));
     try
       {

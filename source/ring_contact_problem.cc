@@ -135,7 +135,13 @@ namespace RingContact
       master_body.mapping_degree,
       std::max(slave_body.material.youngs_modulus,
                master_body.material.youngs_modulus),
-      parameters.materials.kinematics == Kinematics::small_strain,
+      // Geometrically linear only when neither body moves to a current
+      // configuration of its own.
+      std::all_of(bodies.begin(),
+                  bodies.end(),
+                  [](const Body &body) {
+                    return body.material.kinematics == Kinematics::small_strain;
+                  }),
       sector);
     probe_dof =
       contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
@@ -157,7 +163,18 @@ namespace RingContact
     for (const auto &[dof, value] : scenario->imposed_displacements(
            dof_handler, mapping_collection, LoadState{0, 0, 0}))
       imposed_dofs.push_back(dof);
-    add_constraints(constraints, {}, &is_dirichlet);
+    normal_target = scenario->normal_displacements(dof_handler,
+                                                   mapping_collection,
+                                                   LoadState{0, 0, 0});
+    normal_component.clear();
+    for (const auto &line : normal_target)
+      {
+        const unsigned int a =
+          std::abs(line.normal[0]) >= std::abs(line.normal[1]) ? 0 : 1;
+        normal_component.push_back(a);
+        imposed_dofs.push_back(line.dofs[a]);
+      }
+    add_constraints(constraints, {}, {}, &is_dirichlet);
     const IndexSet all_multipliers =
       DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
     is_multiplier.assign(dof_handler.n_dofs(), false);
@@ -169,10 +186,13 @@ namespace RingContact
   // values of `boundary_increment` (zero where it has none): homogeneous for
   // the iterations that correct a state, inhomogeneous for the update that
   // moves the boundary to a new load state.
+  // A normal displacement N . u = g constrains the component a with the
+  // larger |N_a|: du_a = -(N_b / N_a) du_b + (its increment).
   void
   RingContactProblem::add_constraints(
     AffineConstraints<double>                       &target,
     const std::map<types::global_dof_index, double> &boundary_increment,
+    const std::vector<double>                       &normal_increment,
     std::vector<bool>                               *fixed_dofs)
   {
     target.clear();
@@ -180,6 +200,16 @@ namespace RingContact
       target.add_line(dof);
     for (const auto &[dof, increment] : boundary_increment)
       target.set_inhomogeneity(dof, increment);
+    for (unsigned int k = 0; k < normal_target.size(); ++k)
+      {
+        const auto        &line = normal_target[k];
+        const unsigned int a = normal_component[k], b = 1 - a;
+        target.add_entry(line.dofs[a],
+                         line.dofs[b],
+                         -line.normal[b] / line.normal[a]);
+        if (!normal_increment.empty())
+          target.set_inhomogeneity(line.dofs[a], normal_increment[k]);
+      }
     if (fixed_dofs)
       {
         fixed_dofs->assign(dof_handler.n_dofs(), false);
@@ -219,14 +249,22 @@ namespace RingContact
                                          dof_handler,
                                          support_points,
                                          Components::displacement_mask());
-    const std::set<types::global_dof_index> imposed(imposed_dofs.begin(),
-                                                    imposed_dofs.end());
+    // The unknowns imposed whole, and the nodes (their u_x) of the normal
+    // conditions.
+    std::set<types::global_dof_index> imposed(imposed_dofs.begin(),
+                                              imposed_dofs.end());
+    std::map<types::global_dof_index, Tensor<1, 2>> normal_at;
+    for (unsigned int k = 0; k < normal_target.size(); ++k)
+      {
+        imposed.erase(normal_target[k].dofs[normal_component[k]]);
+        normal_at[normal_target[k].dofs[0]] = normal_target[k].normal;
+      }
     for (const Body &body : bodies)
       {
         // The body's extent and centre, to scale the rotation.
         Point<2>                                       lower, upper;
         bool                                           first = true;
-        std::vector<std::pair<Point<2>, unsigned int>> fixed;
+        std::vector<std::pair<Point<2>, Tensor<1, 2>>> fixed;
         std::vector<types::global_dof_index>           dofs;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->material_id() == body.material_id)
@@ -245,8 +283,16 @@ namespace RingContact
                 {
                   const unsigned int c =
                     cell->get_fe().system_to_component_index(i).first;
-                  if (Components::is_displacement(c) && imposed.count(dofs[i]))
-                    fixed.emplace_back(support_points.at(dofs[i]), c);
+                  if (!Components::is_displacement(c))
+                    continue;
+                  // An imposed component c: e_c . u = 0 for the motion.
+                  if (imposed.count(dofs[i]))
+                    fixed.emplace_back(support_points.at(dofs[i]),
+                                       Point<2>::unit_vector(c));
+                  // A normal condition: N . u = 0.
+                  if (normal_at.count(dofs[i]))
+                    fixed.emplace_back(support_points.at(dofs[i]),
+                                       normal_at.at(dofs[i]));
                 }
             }
         if (first)
@@ -254,15 +300,15 @@ namespace RingContact
         const Point<2> centre = 0.5 * (lower + upper);
         const double size = std::max(upper[0] - lower[0], upper[1] - lower[1]);
         // G = M^T M, M the rigid modes (translation x, y, rotation scaled by
-        // the body's size) at the imposed components: its null space is the
-        // free motions.
+        // the body's size) along the imposed directions e: its null space is
+        // the free motions.
         SymmetricTensor<2, 3> G;
-        for (const auto &[X, c] : fixed)
+        for (const auto &[X, e] : fixed)
           {
             const Tensor<1, 2> r      = X - centre;
-            const double       row[3] = {c == Components::ux ? 1.0 : 0.0,
-                                   c == Components::uy ? 1.0 : 0.0,
-                                   (c == Components::ux ? -r[1] : r[0]) / size};
+            const double       row[3] = {e[0],
+                                         e[1],
+                                         (-e[0] * r[1] + e[1] * r[0]) / size};
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int j = i; j < 3; ++j)
                 G[i][j] += row[i] * row[j];
@@ -318,17 +364,49 @@ namespace RingContact
         largest_increment =
           std::max(largest_increment, std::abs(increment[dof]));
       }
+    std::vector<double> normal_increment;
+    for (unsigned int k = 0; k < normal_target.size(); ++k)
+      {
+        const auto dof = normal_target[k].dofs[normal_component[k]];
+        normal_increment.push_back(normal_constrained_value(k, solution) -
+                                   solution(dof));
+        largest_target =
+          std::max(largest_target, std::abs(normal_target[k].value));
+        largest_increment =
+          std::max(largest_increment, std::abs(normal_increment.back()));
+      }
     // The predictor hits the target up to round-off when the motion is
     // linear in the load: then there is nothing to lift.
     if (largest_increment <=
         1e3 * std::numeric_limits<double>::epsilon() * largest_target)
       {
-        for (const auto &[dof, value] : boundary_target)
-          solution(dof) = value;
+        set_boundary_target();
         return false;
       }
-    add_constraints(lifting_constraints, increment);
+    add_constraints(lifting_constraints, increment, normal_increment);
     return true;
+  }
+
+  double
+  RingContactProblem::normal_constrained_value(const unsigned int    k,
+                                               const Vector<double> &u) const
+  {
+    const auto        &line = normal_target[k];
+    const unsigned int a = normal_component[k], b = 1 - a;
+    return (line.value - line.normal[b] * u(line.dofs[b])) / line.normal[a];
+  }
+
+  // The boundary exactly at its target, not up to round-off: the imposed
+  // values, then the normal conditions (a normal condition's other unknown
+  // may be an imposed one).
+  void
+  RingContactProblem::set_boundary_target()
+  {
+    for (const auto &[dof, value] : boundary_target)
+      solution(dof) = value;
+    for (unsigned int k = 0; k < normal_target.size(); ++k)
+      solution(normal_target[k].dofs[normal_component[k]]) =
+        normal_constrained_value(k, solution);
   }
 
   // The bulk couplings, and those of the current contact pairs.
@@ -357,6 +435,8 @@ namespace RingContact
   {
     boundary_target =
       scenario->imposed_displacements(dof_handler, mapping_collection, load);
+    normal_target =
+      scenario->normal_displacements(dof_handler, mapping_collection, load);
     current_load = load;
   }
 
@@ -509,8 +589,8 @@ namespace RingContact
   // n da = cof(F) N dA (Nanson; in two dimensions the cofactor det(F) F^-T
   // is linear in F), adds int p phi_i . cof(F) N dA to the residual and,
   // F = I + Grad u, the tangent int p phi_i . cof(Grad phi_j) N dA (not
-  // symmetric). Small strain: the dead load, cof(F) = I. p is evaluated at
-  // the reference position of the quadrature point.
+  // symmetric). A body in small strain: the dead load, cof(F) = I. p is
+  // evaluated at the reference position of the quadrature point.
   // A traction t per reference length: the dead load, - int phi_i . t dA
   // in the residual, no tangent.
   void
@@ -518,8 +598,6 @@ namespace RingContact
   {
     if (boundary_loads.empty())
       return;
-    const bool follower =
-      parameters.materials.kinematics == Kinematics::finite_strain;
     const auto cofactor = [](const Tensor<2, 2> &G) {
       Tensor<2, 2> C;
       C[0][0] = G[1][1];
@@ -554,6 +632,11 @@ namespace RingContact
               const FiniteElement<2> &fe = cell->get_fe();
               const unsigned int      n  = fe.n_dofs_per_cell();
               const bool pressure = load.type == BoundaryLoad::Type::pressure;
+              // Each body's kinematics: a body in finite strain carries the
+              // pressure on its current surface.
+              const bool follower =
+                bodies[cell->active_fe_index()].material.kinematics ==
+                Kinematics::finite_strain;
               dofs.resize(n);
               cell->get_dof_indices(dofs);
               face_matrix.reinit(n, n);
@@ -854,8 +937,7 @@ namespace RingContact
         if (lifting)
           {
             solution += newton_update;
-            for (const auto &[dof, value] : boundary_target)
-              solution(dof) = value; // exactly, not up to round-off
+            set_boundary_target(); // exactly, not up to round-off
             lifting   = false;
             n_changed = assemble_newton_system(accepted_pairing());
             continue;

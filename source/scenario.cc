@@ -1,4 +1,8 @@
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/analytic_solution.h>
@@ -310,39 +314,26 @@ namespace RingContact
                    Material(body.youngs_modulus,
                             body.poissons_ratio,
                             m.plane,
-                            m.kinematics)});
+                            body.inherits_kinematics ? m.kinematics :
+                                                       body.kinematics)});
           }
         return bodies;
       }
 
-      // The conditions in the order of the file: at a node on two
-      // boundaries with displacement conditions, the later one decides the
-      // components both impose.
       std::map<types::global_dof_index, double>
       imposed_displacements(const DoFHandler<2>            &dof_handler,
                             const hp::MappingCollection<2> &mapping,
                             const LoadState                &load) const override
       {
-        std::map<types::global_dof_index, double> values;
-        for (const auto &condition : parameters.problem.boundary_conditions)
-          if (condition.type == BoundaryConditionType::displacement)
-            {
-              const ImposedDisplacement                 motion(condition,
-                                               parameters.problem.constants,
-                                               load.time);
-              std::map<types::global_dof_index, double> these;
-              VectorTools::interpolate_boundary_values(
-                mapping,
-                dof_handler,
-                condition.boundary_id,
-                motion,
-                these,
-                Components::displacement_mask(condition.components[0],
-                                              condition.components[1]));
-              for (const auto &[dof, value] : these)
-                values[dof] = value;
-            }
-        return values;
+        return motion(dof_handler, mapping, load).first;
+      }
+
+      std::vector<NormalDisplacement>
+      normal_displacements(const DoFHandler<2>            &dof_handler,
+                           const hp::MappingCollection<2> &mapping,
+                           const LoadState                &load) const override
+      {
+        return motion(dof_handler, mapping, load).second;
       }
 
       std::vector<BoundaryLoad>
@@ -375,6 +366,141 @@ namespace RingContact
       }
 
     private:
+      // The displacement conditions at a load state, in the order of the
+      // file: at a node on two boundaries with Cartesian or polar
+      // conditions, the later one decides the components both impose.
+      // Then the normal conditions (Components = n), node by node: the
+      // outward normals of the faces at the node are averaged, unless they
+      // are more than 60 degrees apart (a corner, or two conditions that
+      // meet at an angle): then both directions are imposed, N1 . u = g1
+      // and N2 . u = g2 fix the node. A node with one component imposed
+      // already gets the other from its normal condition; only a node with
+      // nothing else imposed keeps the single linear condition N . u = g.
+      std::pair<std::map<types::global_dof_index, double>,
+                std::vector<NormalDisplacement>>
+      motion(const DoFHandler<2>            &dof_handler,
+             const hp::MappingCollection<2> &mapping,
+             const LoadState                &load) const
+      {
+        std::map<types::global_dof_index, double> values;
+        for (const auto &condition : parameters.problem.boundary_conditions)
+          if (condition.type == BoundaryConditionType::displacement &&
+              !condition.normal)
+            {
+              const ImposedDisplacement                 motion(condition,
+                                               parameters.problem.constants,
+                                               load.time);
+              std::map<types::global_dof_index, double> these;
+              VectorTools::interpolate_boundary_values(
+                mapping,
+                dof_handler,
+                condition.boundary_id,
+                motion,
+                these,
+                Components::displacement_mask(condition.components[0],
+                                              condition.components[1]));
+              for (const auto &[dof, value] : these)
+                values[dof] = value;
+            }
+
+        // Per node (its u_x and u_y unknowns): the face normals and values.
+        using Node = std::array<types::global_dof_index, 2>;
+        std::map<Node, std::vector<std::pair<Tensor<1, 2>, double>>> faces;
+        const auto        &fe_collection = dof_handler.get_fe_collection();
+        hp::QCollection<1> support_points;
+        for (unsigned int i = 0; i < fe_collection.size(); ++i)
+          support_points.push_back(
+            Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
+        hp::FEFaceValues<2>                  face_values(mapping,
+                                        fe_collection,
+                                        support_points,
+                                        update_quadrature_points |
+                                          update_normal_vectors);
+        std::vector<types::global_dof_index> face_dofs;
+        for (const auto &condition : parameters.problem.boundary_conditions)
+          if (condition.type == BoundaryConditionType::displacement &&
+              condition.normal)
+            {
+              auto expression = make_expression(condition.expressions,
+                                                parameters.problem.constants,
+                                                condition.name);
+              expression->set_time(load.time);
+              for (const auto &cell : dof_handler.active_cell_iterators())
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary() &&
+                      cell->face(f)->boundary_id() == condition.boundary_id)
+                    {
+                      face_values.reinit(cell, f);
+                      const FEFaceValues<2> &fv =
+                        face_values.get_present_fe_values();
+                      const FiniteElement<2> &fe = cell->get_fe();
+                      face_dofs.resize(fe.n_dofs_per_face(f));
+                      cell->face(f)->get_dof_indices(face_dofs,
+                                                     cell->active_fe_index());
+                      // The support points of the face, each with its u_x
+                      // and u_y unknowns.
+                      for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                        if (fe.face_system_to_component_index(i, f).first ==
+                            Components::ux)
+                          for (unsigned int j = 0; j < face_dofs.size(); ++j)
+                            if (fe.face_system_to_component_index(j, f).first ==
+                                  Components::uy &&
+                                fv.quadrature_point(j) ==
+                                  fv.quadrature_point(i))
+                              faces[Node{{face_dofs[i], face_dofs[j]}}]
+                                .emplace_back(fv.normal_vector(i),
+                                              expression->value(
+                                                fv.quadrature_point(i)));
+                    }
+            }
+
+        std::vector<NormalDisplacement> normal;
+        const double                    corner = 0.5; // cos 60 degrees
+        for (const auto &[node, list] : faces)
+          {
+            // Two groups: the normals near the first one, and the others.
+            std::array<Tensor<1, 2>, 2> sum;
+            std::array<double, 2>       value = {{0, 0}};
+            for (const auto &[n, g] : list)
+              {
+                const unsigned int group = n * list[0].first >= corner ? 0 : 1;
+                sum[group] += n;
+                value[group] = g; // the later condition decides
+              }
+            std::array<Tensor<1, 2>, 2> N;
+            for (unsigned int k = 0; k < 2; ++k)
+              if (sum[k].norm() > 0)
+                N[k] = sum[k] / sum[k].norm();
+            const bool has_x = values.count(node[0]) > 0,
+                       has_y = values.count(node[1]) > 0;
+            if (has_x && has_y)
+              continue;
+            if (has_x || has_y)
+              {
+                // The other component from the group most across the
+                // imposed one (none if the normal is along it: the
+                // Cartesian condition then decides).
+                const unsigned int a = has_x ? 0 : 1, b = 1 - a;
+                const unsigned int k =
+                  std::abs(N[1][b]) > std::abs(N[0][b]) ? 1 : 0;
+                if (std::abs(N[k][b]) >= 0.1)
+                  values[node[b]] =
+                    (value[k] - N[k][a] * values.at(node[a])) / N[k][b];
+                continue;
+              }
+            if (N[1].norm() == 0)
+              {
+                normal.push_back(NormalDisplacement{node, N[0], value[0]});
+                continue;
+              }
+            // A corner: N1 . u = g1, N2 . u = g2.
+            const double det = N[0][0] * N[1][1] - N[0][1] * N[1][0];
+            values[node[0]]  = (value[0] * N[1][1] - value[1] * N[0][1]) / det;
+            values[node[1]]  = (N[0][0] * value[1] - N[1][0] * value[0]) / det;
+          }
+        return {values, normal};
+      }
+
       const Parameters parameters;
     };
   } // namespace

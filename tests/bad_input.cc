@@ -293,6 +293,24 @@ main()
                geo + "Ne = 40, N_radial = 6\nend\n",
                "names 'N_radial', which does not occur in");
 
+  // A script gmsh cannot mesh: gmsh 4.8 throws that error where no
+  // exception can leave (std::terminate); its own message is reported, not
+  // a crash of the reader.
+  {
+    std::ofstream bad("transfinite.geo");
+    bad << "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};\n"
+           "Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+           "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+           "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4};\n"
+           "Plane Surface(1) = {1};\n"
+           "Transfinite Curve{1} = 3; Transfinite Curve{3} = 5;\n"
+           "Transfinite Curve{2, 4} = 3; Transfinite Surface{1};\n"
+           "Recombine Surface{1}; Physical Surface(100) = {1};\n";
+  }
+  expect_error("geo_cannot_be_meshed",
+               gmsh + " set Mesh file = transfinite.geo\nend\n",
+               "gmsh: Surface 1 cannot be meshed using the transfinite algo");
+
   // Newton that cannot converge (one iteration allowed, an unreachable
   // tolerance): the step is cut and retried, then the run stops with a
   // message and a non-zero exit code.

@@ -121,6 +121,16 @@ main()
   expect_error("unknown_component",
                "subsection Boundary condition 2\n set Components = z\nend\n",
                "the components are x, y");
+  expect_error("normal_with_another_component",
+               "subsection Boundary condition 2\n set Components = n, x\nend\n",
+               "the normal component n is imposed alone");
+  expect_error("normal_with_two_values",
+               "subsection Boundary condition 2\n set Components = n\n"
+               " set Value = 0; 0\nend\n",
+               "a normal displacement needs 1");
+  expect_error("body_kinematics_unknown",
+               "subsection Body 1\n set Kinematics = large strain\nend\n",
+               "Kinematics");
   expect_error("time_points_not_increasing",
                "subsection Load program\n set Time points = 0.5, 0.2\nend\n",
                "must be increasing");

@@ -27,13 +27,6 @@ namespace RingContact
     patch_test ///< the contact patch test: two blocks pressed together
   };
 
-  /// Kinematics of the bulk.
-  enum class Kinematics
-  {
-    finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
-    small_strain   ///< linear elasticity
-  };
-
   /// The 2d assumption.
   enum class PlaneAssumption
   {

@@ -51,6 +51,13 @@ namespace RingContact
     general  ///< bodies, boundary conditions and checks as written in the file
   };
 
+  /// Kinematics of the bulk.
+  enum class Kinematics
+  {
+    finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
+    small_strain   ///< linear elasticity
+  };
+
   /// One body of a general problem: a physical group of the mesh.
   struct BodyParameters
   {
@@ -58,6 +65,10 @@ namespace RingContact
     double       youngs_modulus;
     double       poissons_ratio;
     unsigned int degree; ///< displacement degree
+    /// The body's own kinematics; when the entry is empty, that of
+    /// Materials/Kinematics (`inherits_kinematics`).
+    Kinematics kinematics          = Kinematics::finite_strain;
+    bool       inherits_kinematics = true;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -83,8 +94,13 @@ namespace RingContact
     bool polar = false;
     /// Displacement: which components are imposed (x/r, y/theta).
     std::array<bool, 2> components = {{true, true}};
+    /// Displacement: only the normal component u . N is imposed (N the
+    /// outward unit normal of the reference boundary), the tangential one
+    /// is free: a roller on an inclined or curved boundary.
+    bool normal = false;
     /// The expressions of x, y and t: displacement and traction two
-    /// (the components not imposed are not used), pressure one.
+    /// (the components not imposed are not used), a normal displacement
+    /// and a pressure one.
     std::vector<std::string> expressions;
     std::string              name; ///< "Boundary condition 3"
 

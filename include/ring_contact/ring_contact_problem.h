@@ -181,9 +181,12 @@ namespace RingContact
     add_constraints(
       AffineConstraints<double>                       &target,
       const std::map<types::global_dof_index, double> &boundary_increment,
+      const std::vector<double>                       &normal_increment,
       std::vector<bool>                               *fixed_dofs = nullptr);
     bool
     make_lifting_constraints();
+    void
+    set_boundary_target();
     void
     report_rigid_body_modes() const;
     const AffineConstraints<double> &
@@ -274,6 +277,15 @@ namespace RingContact
     bool lifting = false;
     /// The imposed displacements at the current load state.
     std::map<types::global_dof_index, double> boundary_target;
+    /// The normal displacements N . u = g of the scenario, each as the
+    /// constraint u_a = g / N_a - (N_b / N_a) u_b on the component a with
+    /// the larger |N_a| (its values g at the current load state).
+    std::vector<NormalDisplacement> normal_target;
+    std::vector<unsigned int>       normal_component;
+    /// The value of u_a that satisfies normal_target[k] given u_b.
+    double
+    normal_constrained_value(const unsigned int    k,
+                             const Vector<double> &u) const;
 
     /// Per row, the sum of the magnitudes of the terms that make up the
     /// residual, sum_j |K_ij| |z_j| + |R_i| with z the displacement (bulk)

@@ -21,6 +21,7 @@
 #include <ring_contact/material.h>
 #include <ring_contact/parameters.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -58,6 +59,17 @@ namespace RingContact
     std::function<Tensor<1, 2>(const Point<2> &, const LoadState &)> value;
   };
 
+  /// An imposed normal displacement at a boundary node, N . u = value with
+  /// N the outward unit normal of the reference boundary there: one linear
+  /// condition on the node's two displacement unknowns, the tangential
+  /// motion free.
+  struct NormalDisplacement
+  {
+    std::array<types::global_dof_index, 2> dofs; ///< u_x, u_y of the node
+    Tensor<1, 2>                           normal;
+    double                                 value;
+  };
+
   class Scenario
   {
   public:
@@ -74,6 +86,18 @@ namespace RingContact
     imposed_displacements(const DoFHandler<2>            &dof_handler,
                           const hp::MappingCollection<2> &mapping,
                           const LoadState                &load) const = 0;
+
+    /// The normal displacements at a load state (none by default), for the
+    /// nodes whose displacement they do not fix whole (those are in
+    /// imposed_displacements()). The nodes and normals are the same at
+    /// every state, only the values change.
+    virtual std::vector<NormalDisplacement>
+    normal_displacements(const DoFHandler<2> &,
+                         const hp::MappingCollection<2> &,
+                         const LoadState &) const
+    {
+      return {};
+    }
 
     /// The loads on boundaries (none by default).
     virtual std::vector<BoundaryLoad>
