@@ -249,7 +249,10 @@ namespace RingContact
     const std::vector<BoundaryLoad>       boundary_loads;
     std::map<unsigned int, Material>      materials; ///< by material id
     /// The finite element (and mapping) of each body's cells.
+    /// The body (its index in `bodies`) of a material id, and of an
+    /// element of fe_collection (the bodies', then the slave layer's).
     std::map<types::material_id, unsigned int> fe_index_of;
+    std::vector<unsigned int>                  body_of_fe_index;
     types::material_id                         slave_ring;
     const LoadProgram                          load_program;
     std::unique_ptr<ContactInterface>          contact;
