@@ -436,6 +436,7 @@ namespace RingContact
     contact->add_couplings(dsp);
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
+    ++pattern_version; // the direct solver analyses it anew
   }
 
   void
@@ -736,9 +737,10 @@ namespace RingContact
       "and the contact, hold it in every direction)";
     try
       {
-        SparseDirectUMFPACK direct;
-        direct.initialize(system_matrix);
-        direct.vmult(newton_update, system_rhs);
+        if (!direct_solver)
+          direct_solver = std::make_unique<DirectSolver>();
+        direct_solver->factorize(system_matrix, pattern_version);
+        direct_solver->solve(system_rhs, newton_update);
       }
     catch (const std::exception &e)
       {

@@ -21,6 +21,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact_interface.h>
+#include <ring_contact/direct_solver.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/material.h>
 #include <ring_contact/parameters.h>
@@ -266,8 +267,12 @@ namespace RingContact
     std::vector<bool>         is_multiplier;
     SparsityPattern           sparsity_pattern;
     SparseMatrix<double>      system_matrix;
-    Vector<double>            system_rhs;
-    Vector<double>            internal_force;
+    /// Counts the sparsity patterns made: the direct solver keeps its
+    /// analysis while it does not change.
+    std::uint64_t                 pattern_version = 0;
+    std::unique_ptr<DirectSolver> direct_solver;
+    Vector<double>                system_rhs;
+    Vector<double>                internal_force;
     /// The boundary loads' nodal forces, for the scale of the residual.
     Vector<double> external_force;
     /// The displacement unknowns the scenario imposes.
