@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 namespace RingContact
@@ -181,6 +182,17 @@ namespace RingContact
     for (const auto &v : verdicts)
       n_pass += v.pass;
     out << n_pass << " of " << verdicts.size() << " checks pass\n";
+    // A reference expression that gives no number (sqrt(t - 2) at t = 1)
+    // fails its check: say so, once per quantity.
+    std::set<std::string> said;
+    for (const auto &v : verdicts)
+      if (!std::isfinite(v.reference) && said.insert(v.quantity).second)
+        out << "Note: the reference of '" << v.quantity
+            << "' is not a finite number at step " << v.step << " ("
+            << (std::isnan(v.reference) ? "nan" :
+                v.reference > 0         ? "inf" :
+                                          "-inf")
+            << "): check its expression\n";
     return all_pass;
   }
 

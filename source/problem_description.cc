@@ -312,7 +312,10 @@ namespace RingContact
                       "displacement: two, in the order x; y or r; theta "
                       "(a component not imposed is not used), or one, u . N, "
                       "for Components = n [m]; traction: "
-                      "tx; ty [Pa]; pressure: p [Pa].");
+                      "tx; ty [Pa]; pressure: p [Pa]. A value that is not "
+                      "a finite number where and when it is used (an "
+                      "imposed displacement at t = 0 too) stops the load "
+                      "step, the condition, point and time named.");
   }
 
   void

@@ -1059,12 +1059,19 @@ namespace RingContact
           }
         if (scale != 0)
           solution.add(scale, converged, -scale, previous_solution);
-        apply_boundary_motion(next);
-
         unsigned int iterations = 0;
-        double       residual   = 0;
-        const bool   ok         = solve_newton_step(iterations, residual);
-        lifting                 = false;
+        double       residual   = std::numeric_limits<double>::infinity();
+        bool         ok         = false;
+        try
+          {
+            apply_boundary_motion(next);
+            ok = solve_newton_step(iterations, residual);
+          }
+        catch (const BoundaryDataError &e)
+          {
+            failure_reason = e.what();
+          }
+        lifting = false;
         total_iterations += iterations;
         if (ok)
           {

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <sstream>
 
 namespace RingContact
 {
@@ -237,6 +238,33 @@ namespace RingContact
       const Parameters parameters;
     };
 
+    // A value of a boundary condition, checked: "Boundary condition 2
+    // (displacement on boundary 12): not a finite number (nan) at (0,
+    // 0.25), t = 0.5".
+    double
+    finite_value(const double                       value,
+                 const BoundaryConditionParameters &condition,
+                 const Point<2>                    &X,
+                 const double                       time)
+    {
+      if (std::isfinite(value))
+        return value;
+      std::ostringstream message;
+      message << condition.name << " ("
+              << (condition.type == BoundaryConditionType::displacement ?
+                    "displacement" :
+                  condition.type == BoundaryConditionType::traction ?
+                    "traction" :
+                    "pressure")
+              << " on boundary " << condition.boundary_id
+              << "): its value is not a finite number ("
+              << (std::isnan(value) ? "nan" :
+                  value > 0         ? "inf" :
+                                      "-inf")
+              << ") at (" << X[0] << ", " << X[1] << "), t = " << time;
+      throw BoundaryDataError(message.str());
+    }
+
     // An expression of the parameter file as a deal.II Function of the
     // reference position at the load state's time, with the layout of the
     // unknowns (u_x, u_y, multiplier): a polar displacement (u_r, u_theta)
@@ -248,6 +276,7 @@ namespace RingContact
                           const std::map<std::string, double> &constants,
                           const double                         time)
           : Function<2>(Components::n_components, time)
+          , condition(condition)
           , polar(condition.polar)
           , expression(
               make_expression(condition.expressions, constants, condition.name))
@@ -260,6 +289,9 @@ namespace RingContact
       {
         Vector<double> u(2);
         expression->vector_value(X, u);
+        for (unsigned int c = 0; c < 2; ++c)
+          if (condition.components[c])
+            finite_value(u(c), condition, X, this->get_time());
         if (polar)
           {
             const double theta = std::atan2(X[1], X[0]);
@@ -284,6 +316,7 @@ namespace RingContact
       }
 
     private:
+      const BoundaryConditionParameters &condition;
       const bool                         polar;
       std::unique_ptr<FunctionParser<2>> expression;
     };
@@ -354,11 +387,15 @@ namespace RingContact
                 condition.type == BoundaryConditionType::pressure ?
                   BoundaryLoad::Type::pressure :
                   BoundaryLoad::Type::traction,
-                [expression, n](const Point<2> &X, const LoadState &load) {
+                [expression, n, condition](const Point<2>  &X,
+                                           const LoadState &load) {
                   expression->set_time(load.time);
                   Tensor<1, 2> value;
                   for (unsigned int c = 0; c < n; ++c)
-                    value[c] = expression->value(X, c);
+                    value[c] = finite_value(expression->value(X, c),
+                                            condition,
+                                            X,
+                                            load.time);
                   return value;
                 }});
             }
@@ -448,9 +485,13 @@ namespace RingContact
                                 fv.quadrature_point(j) ==
                                   fv.quadrature_point(i))
                               faces[Node{{face_dofs[i], face_dofs[j]}}]
-                                .emplace_back(fv.normal_vector(i),
-                                              expression->value(
-                                                fv.quadrature_point(i)));
+                                .emplace_back(
+                                  fv.normal_vector(i),
+                                  finite_value(expression->value(
+                                                 fv.quadrature_point(i)),
+                                               condition,
+                                               fv.quadrature_point(i),
+                                               load.time));
                     }
             }
 

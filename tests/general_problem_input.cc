@@ -131,6 +131,12 @@ main()
   expect_error("body_kinematics_unknown",
                "subsection Body 1\n set Kinematics = large strain\nend\n",
                "Kinematics");
+  // Boundary data that gives no number is named, with where and when.
+  expect_error("displacement_not_finite",
+               "subsection Boundary condition 2\n set Value = sqrt(-1); 0\n"
+               "end\n",
+               "Boundary condition 2 (displacement on boundary 12): its value "
+               "is not a finite number");
   expect_error("time_points_not_increasing",
                "subsection Load program\n set Time points = 0.5, 0.2\nend\n",
                "must be increasing");
@@ -216,4 +222,59 @@ main()
     << "general_entry_in_ssnp152: exit code 1: is read only when "
        "Problem/Scenario = general"
     << std::endl;
+
+  // A traction that stops being a number during the run (sqrt(0.6 - t)):
+  // step 1 (t = 0.5) is solved and kept, step 2 fails after its step cuts
+  // with the condition named, and the run ends with exit code 1.
+  {
+    std::ofstream prm("traction_not_finite.prm");
+    prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+        << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+           "/../meshes/two_blocks.geo\nend\n"
+        << "subsection Output\n set VTU interval = 0\n"
+           " set Print timing = false\nend\n"
+        << "subsection Newton\n set Verbose = false\nend\n"
+        << "subsection Boundary condition 1\n"
+           " set Value = 0; -p * t * sqrt(0.6 - t) / sqrt(0.1)\nend\n";
+    prm.close();
+    const auto result =
+      RingContactTests::run_program("traction_not_finite.prm");
+    const bool named = result.printed(
+      "Boundary condition 1 (traction on boundary 11): its value is not a "
+      "finite number");
+    const bool stopped = result.printed("Step 2: Newton did not converge");
+    const bool kept    = result.printed("Step   1");
+    RingContactTests::deallog_file
+      << "traction_not_finite: exit code " << result.exit_code
+      << ", the condition named: " << (named ? "yes" : "no")
+      << ", step 1 solved: " << (kept ? "yes" : "no")
+      << ", step 2 stopped: " << (stopped ? "yes" : "no") << std::endl;
+    check(result.exit_code == 1 && named && stopped && kept,
+          "traction_not_finite: step 1 solved, step 2 stopped with the "
+          "condition named");
+  }
+  // A reference that gives no number fails its check, with a note.
+  {
+    std::ofstream prm("reference_not_finite.prm");
+    prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+        << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+           "/../meshes/two_blocks.geo\nend\n"
+        << "subsection Output\n set VTU interval = 0\n"
+           " set Print timing = false\n set Print steps = false\nend\n"
+        << "subsection Newton\n set Verbose = false\nend\n"
+        << "subsection Check 1\n set Reference = sqrt(t - 2)\nend\n";
+    prm.close();
+    const auto result =
+      RingContactTests::run_program("reference_not_finite.prm");
+    const bool noted = result.printed(
+      "Note: the reference of 'pressure at (0.3, 0)' is not a finite number");
+    RingContactTests::deallog_file
+      << "reference_not_finite: exit code " << result.exit_code
+      << ", noted: " << (noted ? "yes" : "no") << ", "
+      << (result.printed("5 of 7 checks pass") ? "5 of 7 checks pass" : "?")
+      << std::endl;
+    check(result.exit_code == 1 && noted &&
+            result.printed("5 of 7 checks pass"),
+          "reference_not_finite: its two verdicts fail, with a note");
+  }
 }

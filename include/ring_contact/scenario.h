@@ -25,6 +25,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,16 @@ namespace RingContact
     Type               type;
     /// The pressure (component 0) or the traction.
     std::function<Tensor<1, 2>(const Point<2> &, const LoadState &)> value;
+  };
+
+  /// Boundary data that is not a finite number at a load state (an
+  /// expression of the parameter file such as 1 / (t - 0.5) or sqrt(x - 2)):
+  /// the load step fails with this message, and is cut like a step whose
+  /// Newton iteration fails.
+  class BoundaryDataError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
   };
 
   /// An imposed normal displacement at a boundary node, N . u = value with
