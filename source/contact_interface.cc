@@ -397,21 +397,24 @@ namespace RingContact
   }
 
   types::global_dof_index
-  ContactInterface::multiplier_dof_nearest_to(const Point<2> &point) const
+  ContactInterface::multiplier_dof_nearest_to(const Point<2> &point,
+                                              double         *distance) const
   {
     double                  best = std::numeric_limits<double>::max();
     types::global_dof_index dof  = numbers::invalid_dof_index;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       for (unsigned int k = 0; k < slave.multiplier_nodes().size(); ++k)
         {
-          const double distance = point.distance(
+          const double d = point.distance(
             slave.reference_point(s, slave.multiplier_nodes()[k]).x);
-          if (distance < best)
+          if (d < best)
             {
-              best = distance;
+              best = d;
               dof  = slave.segments()[s].multiplier_dofs[k];
             }
         }
+    if (distance)
+      *distance = best;
     // The node's own dof (not a cyclic twin).
     return multiplier_dof_list[multiplier_index.at(dof)];
   }

@@ -321,12 +321,14 @@ namespace RingContact
     {
       // Unknowns per cell: two displacement components and, on about half
       // of the cells, the multiplier, each p^2 per cell for degree p.
-      const unsigned int p =
-        parameters.general() ?
-          std::max(parameters.problem.bodies[0].degree,
-                   parameters.problem.bodies[1].degree) :
-          std::max(parameters.finite_elements.degree_outer,
-                   parameters.finite_elements.degree_inner);
+      unsigned int p = std::max(parameters.finite_elements.degree_outer,
+                                parameters.finite_elements.degree_inner);
+      if (parameters.general())
+        {
+          p = 1;
+          for (const auto &body : parameters.problem.bodies)
+            p = std::max(p, body.degree);
+        }
       const double cells = static_cast<double>(n_coarse_cells) *
                            std::pow(4.0, parameters.mesh.global_refinements);
       const double unknowns = cells * 3 * p * p;
@@ -358,8 +360,13 @@ namespace RingContact
       const std::string name    = "mesh '" + parameters.mesh.mesh_file + "'";
       const auto       &problem = parameters.problem;
       std::map<types::material_id, unsigned int> body_of;
-      for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
-        body_of[problem.bodies[b].material_id] = b;
+      std::string                                ids;
+      for (unsigned int b = 0; b < problem.bodies.size(); ++b)
+        {
+          body_of[problem.bodies[b].material_id] = b;
+          ids += (b == 0 ? "" : ", ") +
+                 std::to_string(problem.bodies[b].material_id);
+        }
 
       std::set<types::material_id>                               materials;
       std::map<types::boundary_id, std::set<types::material_id>> bodies_of;
@@ -367,17 +374,15 @@ namespace RingContact
         {
           materials.insert(cell->material_id());
           if (body_of.count(cell->material_id()) == 0)
-            throw std::runtime_error(
-              name + " has cells of physical group " +
-              std::to_string(cell->material_id()) +
-              ", which is neither Body 1's nor Body 2's 'Material id' (" +
-              std::to_string(problem.bodies[0].material_id) + ", " +
-              std::to_string(problem.bodies[1].material_id) + ")");
+            throw std::runtime_error(name + " has cells of physical group " +
+                                     std::to_string(cell->material_id()) +
+                                     ", which is no body's 'Material id' (" +
+                                     ids + ")");
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
               bodies_of[face->boundary_id()].insert(cell->material_id());
         }
-      for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
+      for (unsigned int b = 0; b < problem.bodies.size(); ++b)
         if (materials.count(problem.bodies[b].material_id) == 0)
           throw std::runtime_error(
             name + " has no cells of physical group " +
@@ -396,31 +401,59 @@ namespace RingContact
         if (check.quantity == ProblemQuantity::resultant_force_x ||
             check.quantity == ProblemQuantity::resultant_force_y)
           require_boundary(check.boundary_id, check.name);
-      const unsigned int slave  = parameters.contact.slave_boundary_id,
-                         master = parameters.contact.master_boundary_id;
-      require_boundary(slave, "Contact/Slave boundary");
-      require_boundary(master, "Contact/Master boundary");
-      for (const auto &[id, role] :
-           {std::make_pair(slave, "slave"), std::make_pair(master, "master")})
-        if (bodies_of.at(id).size() != 1)
-          throw std::runtime_error(name + ": the " + role + " surface " +
-                                   std::to_string(id) +
-                                   " touches both bodies; it must belong "
-                                   "to one");
-      const auto slave_body  = *bodies_of.at(slave).begin();
-      const auto master_body = *bodies_of.at(master).begin();
-      if (slave_body == master_body)
-        throw std::runtime_error(name +
-                                 ": the slave and master surfaces belong to "
-                                 "the same body (" +
-                                 std::to_string(slave_body) + ")");
-      if (parameters.finite_elements.multiplier_degree >
-          problem.bodies[body_of.at(slave_body)].degree)
-        throw std::runtime_error(
-          "Finite elements/Multiplier degree (" +
-          std::to_string(parameters.finite_elements.multiplier_degree) +
-          ") exceeds the displacement degree of the slave body (Body " +
-          std::to_string(body_of.at(slave_body) + 1) + ")");
+      const auto pairs = parameters.contact_pairs();
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const std::string subsection =
+            k == 0 ? "Contact" : "Contact pair " + std::to_string(k + 1);
+          const auto [slave, master] = pairs[k];
+          require_boundary(slave, subsection + "/Slave boundary");
+          require_boundary(master, subsection + "/Master boundary");
+          for (const auto &[id, role] : {std::make_pair(slave, "slave"),
+                                         std::make_pair(master, "master")})
+            if (bodies_of.at(id).size() != 1)
+              throw std::runtime_error(name + ": the " + role + " surface " +
+                                       std::to_string(id) + " of " +
+                                       subsection +
+                                       " touches two bodies; it must belong "
+                                       "to one");
+          const auto slave_body  = *bodies_of.at(slave).begin();
+          const auto master_body = *bodies_of.at(master).begin();
+          if (slave_body == master_body)
+            throw std::runtime_error(
+              name + ": the slave and master surfaces of " + subsection +
+              " belong to the same body (" + std::to_string(slave_body) + ")");
+          if (parameters.finite_elements.multiplier_degree >
+              problem.bodies[body_of.at(slave_body)].degree)
+            throw std::runtime_error(
+              "Finite elements/Multiplier degree (" +
+              std::to_string(parameters.finite_elements.multiplier_degree) +
+              ") exceeds the displacement degree of the slave body of " +
+              subsection + " (Body " +
+              std::to_string(body_of.at(slave_body) + 1) + ")");
+        }
+      // The slave surfaces of two pairs share no vertex: a pressure node
+      // belongs to one pair.
+      std::map<unsigned int, unsigned int> pair_of_vertex;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (unsigned int k = 0; k < pairs.size(); ++k)
+              if (face->boundary_id() == pairs[k].first)
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    const auto [at, inserted] =
+                      pair_of_vertex.emplace(face->vertex_index(v), k);
+                    if (!inserted && at->second != k)
+                      throw std::runtime_error(
+                        name + ": the slave surfaces " +
+                        std::to_string(pairs[at->second].first) + " and " +
+                        std::to_string(pairs[k].first) +
+                        " of two contact pairs share the vertex (" +
+                        std::to_string(face->vertex(v)[0]) + ", " +
+                        std::to_string(face->vertex(v)[1]) +
+                        "); a pressure node belongs to one pair");
+                  }
     }
 
     void

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 namespace RingContact
 {
@@ -1066,8 +1067,12 @@ namespace RingContact
     bool
     only_for_general(const std::string &key)
     {
-      for (const std::string prefix :
-           {"Body ", "Boundary condition ", "Check ", "Problem/Constants"})
+      for (const std::string prefix : {"Body ",
+                                       "Contact pair ",
+                                       "Boundary condition ",
+                                       "Check ",
+                                       "Problem/Constants",
+                                       "Problem/Number of"})
         if (key.rfind(prefix, 0) == 0)
           return true;
       return key == "Load program/Number of steps" ||
@@ -1160,6 +1165,27 @@ namespace RingContact
                       key.substr(0, slash),
                       key.substr(slash + 1),
                       "is read only when Problem/Scenario = general");
+            // Body 3 set in a problem of two bodies, a pair beyond the
+            // number of pairs: not read, so refused.
+            for (const auto &[prefix, n, count] :
+                 {std::make_tuple(std::string("Body "),
+                                  static_cast<unsigned int>(
+                                    problem.bodies.size()),
+                                  std::string("Number of bodies")),
+                  std::make_tuple(std::string("Contact pair "),
+                                  static_cast<unsigned int>(
+                                    problem.more_contact_pairs.size() + 1),
+                                  std::string("Number of contact pairs"))})
+              if (general() && key.rfind(prefix, 0) == 0)
+                {
+                  const unsigned int k =
+                    std::atoi(key.substr(prefix.size()).c_str());
+                  require(k <= n,
+                          key.substr(0, slash),
+                          key.substr(slash + 1),
+                          "is not read: Problem/" + count + " is " +
+                            std::to_string(n));
+                }
           }
         // A general problem's probe: the point of its first pressure check.
         if (general() &&
@@ -1319,7 +1345,19 @@ namespace RingContact
                 " steps");
   }
 
-  // A general problem: a gmsh mesh, the steps program, two bodies, and
+  std::vector<std::pair<unsigned int, unsigned int>>
+  Parameters::contact_pairs() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs = {
+      {contact.slave_boundary_id, contact.master_boundary_id}};
+    if (general())
+      pairs.insert(pairs.end(),
+                   problem.more_contact_pairs.begin(),
+                   problem.more_contact_pairs.end());
+    return pairs;
+  }
+
+  // A general problem: a gmsh mesh, the steps program, its bodies, and
   // checked steps within the program.
   void
   Parameters::check_general_consistency() const
@@ -1334,12 +1372,26 @@ namespace RingContact
             "Program",
             "must be 'steps' for Problem/Scenario = general (ramp and "
             "rotation are SSNP152's programs)");
-    require(problem.bodies[0].material_id != problem.bodies[1].material_id,
-            "Body 2",
-            "Material id",
-            "is that of Body 1 (" +
-              std::to_string(problem.bodies[0].material_id) +
-              "): the two bodies are two physical groups");
+    for (unsigned int b = 1; b < problem.bodies.size(); ++b)
+      for (unsigned int a = 0; a < b; ++a)
+        require(problem.bodies[a].material_id != problem.bodies[b].material_id,
+                "Body " + std::to_string(b + 1),
+                "Material id",
+                "is that of Body " + std::to_string(a + 1) + " (" +
+                  std::to_string(problem.bodies[a].material_id) +
+                  "): each body is its own physical group");
+    // Each slave surface belongs to one pair.
+    const auto pairs = contact_pairs();
+    for (unsigned int k = 1; k < pairs.size(); ++k)
+      for (unsigned int j = 0; j < k; ++j)
+        require(pairs[k].first != pairs[j].first,
+                "Contact pair " + std::to_string(k + 1),
+                "Slave boundary",
+                "is the slave surface of " +
+                  (j == 0 ? std::string("subsection Contact") :
+                            "Contact pair " + std::to_string(j + 1)) +
+                  " too (" + std::to_string(pairs[k].first) +
+                  "): each pair has its own slave surface");
     const unsigned int n_steps = load.time_points.size();
     for (const auto &check : problem.checks)
       for (const unsigned int step : check.steps)
@@ -1351,13 +1403,16 @@ namespace RingContact
                   " steps");
     for (const auto &condition : problem.boundary_conditions)
       {
-        require(condition.boundary_id != contact.slave_boundary_id &&
-                  condition.boundary_id != contact.master_boundary_id,
-                condition.name,
-                "Boundary id",
-                "= " + std::to_string(condition.boundary_id) +
-                  " is a contact surface (Contact/Slave boundary or Master "
-                  "boundary)");
+        for (unsigned int k = 0; k < pairs.size(); ++k)
+          require(condition.boundary_id != pairs[k].first &&
+                    condition.boundary_id != pairs[k].second,
+                  condition.name,
+                  "Boundary id",
+                  "= " + std::to_string(condition.boundary_id) +
+                    " is a contact surface (" +
+                    (k == 0 ? std::string("Contact") :
+                              "Contact pair " + std::to_string(k + 1)) +
+                    "/Slave boundary or Master boundary)");
         for (const auto &other : problem.boundary_conditions)
           require(&other == &condition ||
                     other.boundary_id != condition.boundary_id ||

@@ -347,9 +347,9 @@ namespace RingContact
     class SlaveFaces : public DataOutFaces<2>
     {
     public:
-      explicit SlaveFaces(const types::boundary_id id)
+      explicit SlaveFaces(const std::set<types::boundary_id> &ids)
           : DataOutFaces<2>(true)
-          , slave_id(id)
+          , slave_ids(ids)
       {}
 
       FaceDescriptor
@@ -376,12 +376,12 @@ namespace RingContact
           if (cell->is_active())
             for (; f < cell->n_faces(); ++f)
               if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == slave_id)
+                  slave_ids.count(cell->face(f)->boundary_id()) > 0)
                 return {cell, f};
         return {this->triangulation->end(), 0};
       }
 
-      const types::boundary_id slave_id;
+      const std::set<types::boundary_id> slave_ids;
     };
 
     // The displacement alone (the multiplier component is written on the
@@ -447,7 +447,7 @@ namespace RingContact
                    const Vector<double>                   &solution,
                    const Vector<double>                   &nodal_gap,
                    const std::map<unsigned int, Material> &materials,
-                   const types::boundary_id                slave_boundary_id,
+                   const std::set<types::boundary_id>     &slave_boundary_ids,
                    const unsigned int                      step,
                    const double                            time)
   {
@@ -485,8 +485,8 @@ namespace RingContact
     write_file_atomically(directory + "/solution-" + tag + ".pvd",
                           pvd_contents(bulk_records));
 
-    // The slave surface, with the nodal gap.
-    SlaveFaces faces(slave_boundary_id);
+    // The slave surfaces (of every contact pair), with the nodal gap.
+    SlaveFaces faces(slave_boundary_ids);
     faces.attach_dof_handler(dof_handler);
     faces.add_data_vector(solution,
                           names,
@@ -501,11 +501,13 @@ namespace RingContact
     DataOutBase::VtkFlags surface_flags    = flags;
     surface_flags.write_higher_order_cells = false;
     faces.set_flags(surface_flags);
-    // DataOutFaces takes one mapping: that of the slave ring.
+    // DataOutFaces takes one mapping: that of a slave body (the bodies of a
+    // problem of several pairs are straight-sided, their mappings agree).
     unsigned int slave_fe_index = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == slave_boundary_id)
+        if (face->at_boundary() &&
+            slave_boundary_ids.count(face->boundary_id()))
           slave_fe_index = cell->active_fe_index();
     faces.build_patches(
       mapping[std::min<unsigned int>(slave_fe_index, mapping.size() - 1)],

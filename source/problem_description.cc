@@ -519,13 +519,31 @@ namespace RingContact
         "SSNP152: the two rings (or, with Mesh/Mesh source = patch test, "
         "the patch test), loaded and checked through their analytic "
         "solutions (subsections Mesh, Materials, Finite elements, Load "
-        "program, Checks); general: any two bodies of a gmsh mesh "
+        "program, Checks); general: the bodies of a gmsh mesh "
         "(Mesh/Mesh source = gmsh file), described by the subsections Body "
-        "1 and 2, Boundary condition 1 to " +
+        "1, 2, ... (Number of bodies), Boundary condition 1 to " +
           std::to_string(max_boundary_conditions) + " and Check 1 to " +
           std::to_string(max_checks) +
-          ", with the contact pair of subsection Contact and the steps of "
-          "Load program/Program = steps.");
+          ", with the contact pair of subsection Contact (and the pairs of "
+          "subsections Contact pair 2 to " +
+          std::to_string(max_contact_pairs) +
+          ") and the steps of Load program/Program = steps.");
+      prm.declare_entry("Number of bodies",
+                        "2",
+                        Patterns::Integer(2, max_bodies),
+                        "Scenario = general: the bodies, subsections Body 1 "
+                        "to " +
+                          std::to_string(max_bodies) + ".");
+      prm.declare_entry(
+        "Number of contact pairs",
+        "1",
+        Patterns::Integer(1, max_contact_pairs),
+        "Scenario = general: the contact pairs: the first is subsection "
+        "Contact (its slave and master boundaries, and the integration "
+        "schemes, normals and constants every pair uses), the others "
+        "the subsections Contact pair 2, 3, ... with their slave and "
+        "master boundaries. The slave surfaces of two pairs share no "
+        "node.");
       prm.declare_entry("Constants",
                         "",
                         Patterns::Anything(),
@@ -535,10 +553,25 @@ namespace RingContact
                         "it, e.g. 'R = 1, E = 2e11, q = 1e6'.");
     }
     prm.leave_subsection();
-    for (unsigned int b = 1; b <= n_bodies; ++b)
+    for (unsigned int b = 1; b <= max_bodies; ++b)
       {
         prm.enter_subsection("Body " + std::to_string(b));
         BodyParameters::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    for (unsigned int k = 2; k <= max_contact_pairs; ++k)
+      {
+        prm.enter_subsection("Contact pair " + std::to_string(k));
+        prm.declare_entry("Slave boundary",
+                          "0",
+                          Patterns::Integer(0),
+                          "Scenario = general: the boundary tag of this "
+                          "pair's slave surface (it carries the contact "
+                          "pressure).");
+        prm.declare_entry("Master boundary",
+                          "0",
+                          Patterns::Integer(0),
+                          "The boundary tag of this pair's master surface.");
         prm.leave_subsection();
       }
     for (unsigned int k = 1; k <= max_boundary_conditions; ++k)
@@ -562,14 +595,36 @@ namespace RingContact
     scenario  = prm.get("Scenario") == "general" ? ScenarioType::general :
                                                    ScenarioType::ssnp152;
     constants = parse_constants(prm.get("Constants"));
+    const unsigned int n_bodies =
+      get_count(prm, "Problem", "Number of bodies", 2, max_bodies);
+    const unsigned int n_pairs = get_count(
+      prm, "Problem", "Number of contact pairs", 1, max_contact_pairs);
     prm.leave_subsection();
 
+    bodies.resize(n_bodies);
     for (unsigned int b = 0; b < n_bodies; ++b)
       {
         const std::string subsection = "Body " + std::to_string(b + 1);
         prm.enter_subsection(subsection);
         bodies[b].parse_parameters(prm, subsection);
         prm.leave_subsection();
+      }
+    more_contact_pairs.clear();
+    for (unsigned int k = 2; k <= n_pairs; ++k)
+      {
+        const std::string subsection = "Contact pair " + std::to_string(k);
+        prm.enter_subsection(subsection);
+        const unsigned int slave =
+          get_count(prm, subsection, "Slave boundary", 0, 1000000000);
+        const unsigned int master =
+          get_count(prm, subsection, "Master boundary", 0, 1000000000);
+        prm.leave_subsection();
+        require(slave != master,
+                subsection,
+                "Slave boundary",
+                "must differ from 'Master boundary' (both are " +
+                  std::to_string(slave) + ")");
+        more_contact_pairs.emplace_back(slave, master);
       }
     boundary_conditions.clear();
     for (unsigned int k = 1; k <= max_boundary_conditions; ++k)

@@ -55,8 +55,8 @@ namespace RingContact
       }
   }
 
-  // The mesh: generated or read, checked, on the polar manifold. The ring
-  // that carries the slave surface gets the multiplier.
+  // The mesh: generated or read, checked, on the polar manifold (SSNP152).
+  // The body of each contact surface: the slave bodies get the multiplier.
   void
   RingContactProblem::make_grid()
   {
@@ -64,9 +64,9 @@ namespace RingContact
     Geometry::create_mesh(triangulation, parameters);
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() &&
-            face->boundary_id() == parameters.contact.slave_boundary_id)
-          slave_ring = cell->material_id();
+        if (face->at_boundary())
+          body_of_boundary[face->boundary_id()] = cell->material_id();
+    slave_ring = body_of_boundary.at(parameters.contact.slave_boundary_id);
   }
 
   // One FESystem per body: FE_Q(p)^2 for the displacement and FE_Nothing
@@ -100,8 +100,20 @@ namespace RingContact
     };
     for (const Body &body : bodies)
       add_element(body, false);
-    const unsigned int slave_layer = fe_collection.size();
-    add_element(bodies[fe_index_of.at(slave_ring)], true);
+    // A layer element for each slave body.
+    const auto                   pairs = parameters.contact_pairs();
+    std::set<types::boundary_id> slave_ids;
+    std::map<types::material_id, unsigned int> layer_of;
+    for (const auto &[slave, master] : pairs)
+      {
+        slave_ids.insert(slave);
+        const auto body = body_of_boundary.at(slave);
+        if (layer_of.count(body) == 0)
+          {
+            layer_of[body] = fe_collection.size();
+            add_element(bodies[fe_index_of.at(body)], true);
+          }
+      }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -109,10 +121,10 @@ namespace RingContact
         for (const auto &face : cell->face_iterators())
           on_slave_surface =
             on_slave_surface ||
-            (face->at_boundary() &&
-             face->boundary_id() == parameters.contact.slave_boundary_id);
-        cell->set_active_fe_index(
-          on_slave_surface ? slave_layer : fe_index_of.at(cell->material_id()));
+            (face->at_boundary() && slave_ids.count(face->boundary_id()) > 0);
+        cell->set_active_fe_index(on_slave_surface ?
+                                    layer_of.at(cell->material_id()) :
+                                    fe_index_of.at(cell->material_id()));
       }
     dof_handler.distribute_dofs(fe_collection);
 
@@ -143,26 +155,38 @@ namespace RingContact
           CyclicSymmetry::multiplier_pairs(cyclic_pairs);
       }
 
-    const Body &slave_body  = bodies[fe_index_of.at(slave_ring)];
-    const Body &master_body = bodies[1 - fe_index_of.at(slave_ring)];
-    contact                 = std::make_unique<ContactInterface>(
-      dof_handler,
-      parameters.contact,
-      scheme,
-      slave_body.mapping_degree,
-      master_body.mapping_degree,
-      std::max(slave_body.material.youngs_modulus,
-               master_body.material.youngs_modulus),
-      // Geometrically linear only when neither body moves to a current
-      // configuration of its own.
-      std::all_of(bodies.begin(),
-                  bodies.end(),
-                  [](const Body &body) {
-                    return body.material.kinematics == Kinematics::small_strain;
-                  }),
-      sector);
-    probe_dof =
-      contact->multiplier_dof_nearest_to(parameters.contact.probe_point);
+    // One interface per pair, each with the constants of subsection
+    // Contact and its own surfaces. Geometrically linear only when no body
+    // moves to a current configuration of its own.
+    const bool geometrically_linear =
+      std::all_of(bodies.begin(), bodies.end(), [](const Body &body) {
+        return body.material.kinematics == Kinematics::small_strain;
+      });
+    contacts.clear();
+    pair_of_node.clear();
+    for (const auto &[slave, master] : pairs)
+      {
+        ContactParameters pair_parameters  = parameters.contact;
+        pair_parameters.slave_boundary_id  = slave;
+        pair_parameters.master_boundary_id = master;
+        const Body &slave_body =
+          bodies[fe_index_of.at(body_of_boundary.at(slave))];
+        const Body &master_body =
+          bodies[fe_index_of.at(body_of_boundary.at(master))];
+        contacts.push_back(std::make_unique<ContactInterface>(
+          dof_handler,
+          pair_parameters,
+          scheme,
+          slave_body.mapping_degree,
+          master_body.mapping_degree,
+          std::max(slave_body.material.youngs_modulus,
+                   master_body.material.youngs_modulus),
+          geometrically_linear,
+          sector));
+        for (const auto node : contacts.back()->all_multiplier_dofs())
+          pair_of_node[node] = contacts.size() - 1;
+      }
+    probe_dof = contact_node_nearest_to(parameters.contact.probe_point);
 
     solution.reinit(dof_handler.n_dofs());
     previous_solution.reinit(dof_handler.n_dofs());
@@ -238,9 +262,9 @@ namespace RingContact
     // The multiplier lives on the slave surface only.
     const IndexSet all_multipliers =
       DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
-    const auto slave_multiplier_list = contact->all_multiplier_dofs();
-    const std::set<types::global_dof_index> slave_multipliers(
-      slave_multiplier_list.begin(), slave_multiplier_list.end());
+    std::set<types::global_dof_index> slave_multipliers;
+    for (const auto &[node, pair] : pair_of_node)
+      slave_multipliers.insert(node);
     for (const auto i : all_multipliers)
       if (slave_multipliers.count(i) == 0)
         target.add_line(i);
@@ -433,7 +457,8 @@ namespace RingContact
   {
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    contact->add_couplings(dsp);
+    for (const auto &contact : contacts)
+      contact->add_couplings(dsp);
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
     ++pattern_version; // the direct solver analyses it anew
@@ -444,7 +469,8 @@ namespace RingContact
   {
     make_grid();
     setup_system();
-    contact->update(solution);
+    for (const auto &contact : contacts)
+      contact->update(solution);
     make_sparsity_pattern();
   }
 
@@ -477,10 +503,11 @@ namespace RingContact
     // a contact row is computed from positions X + u (the gap, the normal),
     // so its round-off is eps |K_ij| (|X| + |u_j|), not eps |K_ij| |u_j|.
     // At p = 1e4 on steel this is a thousand times the bulk's.
-    contact->assemble(solution,
-                      update_constraints(),
-                      system_matrix,
-                      system_rhs);
+    for (const auto &contact : contacts)
+      contact->assemble(solution,
+                        update_constraints(),
+                        system_matrix,
+                        system_rhs);
     {
       double largest_position = 0;
       for (const auto &vertex : triangulation.get_vertices())
@@ -715,9 +742,15 @@ namespace RingContact
     unsigned int n_changed;
     {
       TimerOutput::Scope t(timer, "contact search");
-      n_changed = contact->update(solution, pairing);
+      n_changed = 0;
+      for (const auto &contact : contacts)
+        n_changed += contact->update(solution, pairing);
     }
-    if (!contact->sparsity_covers_pairing())
+    if (!std::all_of(contacts.begin(),
+                     contacts.end(),
+                     [](const std::unique_ptr<ContactInterface> &contact) {
+                       return contact->sparsity_covers_pairing();
+                     }))
       make_sparsity_pattern();
     assemble_system();
     return n_changed;
@@ -907,16 +940,14 @@ namespace RingContact
         if (newton.verbose && lifting)
           log << "    Newton " << std::setw(2) << it
               << "  boundary increment imposed on the update  active "
-              << contact->n_active() << "/" << contact->multiplier_dofs().size()
-              << '\n';
+              << n_active_nodes() << "/" << contact_nodes().size() << '\n';
         else if (newton.verbose)
           log << "    Newton " << std::setw(2) << it << "  relative residual "
               << std::scientific << std::setprecision(3) << measure.force
               << " (floor " << measure.force_floor << ")  gap " << measure.gap
               << " (floor " << measure.gap_floor << ")" << std::defaultfloat
-              << "  active " << contact->n_active() << "/"
-              << contact->multiplier_dofs().size() << "  changed " << n_changed
-              << '\n';
+              << "  active " << n_active_nodes() << "/"
+              << contact_nodes().size() << "  changed " << n_changed << '\n';
         if (!std::isfinite(measure.merit))
           {
             failure_reason = "the residual is not finite";
@@ -1083,7 +1114,8 @@ namespace RingContact
         // Failed: back to the last converged state, half the increment.
         solution     = converged;
         current_load = load_program.state(current_time);
-        contact->update(solution);
+        for (const auto &contact : contacts)
+          contact->update(solution);
         if (cuts == parameters.newton.max_step_cuts)
           {
             log << "Step " << step << ": Newton did not converge after " << cuts
@@ -1104,13 +1136,52 @@ namespace RingContact
     return true;
   }
 
+  std::vector<types::global_dof_index>
+  RingContactProblem::contact_nodes() const
+  {
+    std::vector<types::global_dof_index> nodes;
+    for (const auto &contact : contacts)
+      nodes.insert(nodes.end(),
+                   contact->multiplier_dofs().begin(),
+                   contact->multiplier_dofs().end());
+    return nodes;
+  }
+
+  unsigned int
+  RingContactProblem::n_active_nodes() const
+  {
+    unsigned int n = 0;
+    for (const auto &contact : contacts)
+      n += contact->n_active();
+    return n;
+  }
+
+  types::global_dof_index
+  RingContactProblem::contact_node_nearest_to(const Point<2> &point) const
+  {
+    double                  best = std::numeric_limits<double>::infinity();
+    types::global_dof_index node = numbers::invalid_dof_index;
+    for (const auto &contact : contacts)
+      {
+        double     distance = 0;
+        const auto nearest =
+          contact->multiplier_dof_nearest_to(point, &distance);
+        if (distance < best)
+          {
+            best = distance;
+            node = nearest;
+          }
+      }
+    return node;
+  }
+
   double
   RingContactProblem::reported_pressure(const types::global_dof_index dof) const
   {
     const double lambda = solution(dof);
     return parameters.contact.reported_pressure == PressureMeasure::cauchy ?
              lambda :
-             lambda * contact->stretch_at(dof);
+             lambda * contact_of(dof).stretch_at(dof);
   }
 
   // The quantities after a step: the pressure at the probe (node A of
@@ -1134,17 +1205,17 @@ namespace RingContact
     row.analytic       = scenario->reference_pressure(current_load);
     row.relative_error = (row.pressure_A - row.analytic) / row.analytic;
     row.l2_relative_error =
-      contact->l2_relative_error(solution, row.analytic, measure);
+      contacts[0]->l2_relative_error(solution, row.analytic, measure);
     row.pressure_min = std::numeric_limits<double>::max();
     row.pressure_max = -std::numeric_limits<double>::max();
-    for (const auto dof : contact->multiplier_dofs())
+    for (const auto dof : contact_nodes())
       {
         row.pressure_min = std::min(row.pressure_min, reported_pressure(dof));
         row.pressure_max = std::max(row.pressure_max, reported_pressure(dof));
       }
     row.newton_iterations = iterations;
     row.step_cuts         = cuts;
-    row.active_nodes      = contact->n_active();
+    row.active_nodes      = n_active_nodes();
     row.wall_time         = wall_time;
     for (const auto &check : parameters.problem.checks)
       row.quantities.push_back(checked_quantity(check));
@@ -1194,12 +1265,13 @@ namespace RingContact
   RingContactProblem::checked_quantity(
     const ProblemCheckParameters &check) const
   {
-    const ContactSurface &slave = contact->slave_surface();
+    // The pair whose slave surface is nearest to the point.
+    const auto            nearest = contact_node_nearest_to(check.point);
+    const ContactSurface &slave   = contact_of(nearest).slave_surface();
     switch (check.quantity)
       {
         case ProblemQuantity::contact_pressure:
-          return reported_pressure(
-            contact->multiplier_dof_nearest_to(check.point));
+          return reported_pressure(nearest);
 
           // The farthest slave node in contact (positive pressure) from the
           // point, or, where a node in contact is next to an open one on a
@@ -1306,23 +1378,30 @@ namespace RingContact
         const unsigned int subdivisions =
           parameters.output.vtu_subdivisions > 0 ?
             parameters.output.vtu_subdivisions :
-            std::max({parameters.finite_elements.mapping_degree,
-                      1u,
-                      bodies[0].degree,
-                      bodies[1].degree});
+            std::max(parameters.finite_elements.mapping_degree,
+                     std::max_element(bodies.begin(),
+                                      bodies.end(),
+                                      [](const Body &a, const Body &b) {
+                                        return a.degree < b.degree;
+                                      })
+                       ->degree);
         vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
                                                  scheme.tag(),
                                                  subdivisions);
       }
     Vector<double> nodal_gap(dof_handler.n_dofs());
-    for (const auto dof : contact->multiplier_dofs())
-      nodal_gap(dof) = contact->gap_at(dof, solution);
+    for (const auto &contact : contacts)
+      for (const auto dof : contact->multiplier_dofs())
+        nodal_gap(dof) = contact->gap_at(dof, solution);
+    std::set<types::boundary_id> slave_ids;
+    for (const auto &[slave, master] : parameters.contact_pairs())
+      slave_ids.insert(slave);
     vtu_writer->write(dof_handler,
                       mapping_collection,
                       solution,
                       nodal_gap,
                       materials,
-                      parameters.contact.slave_boundary_id,
+                      slave_ids,
                       step,
                       current_time);
   }
@@ -1334,7 +1413,7 @@ namespace RingContact
     report_rigid_body_modes();
     log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
         << " cells, " << dof_handler.n_dofs() << " unknowns, "
-        << contact->multiplier_dofs().size() << " contact pressure nodes, "
+        << contact_nodes().size() << " contact pressure nodes, "
         << load_program.n_steps() << " steps\n";
     // Every checked quantity can be evaluated (a point outside the mesh is
     // an error now, not after the first step has been solved).

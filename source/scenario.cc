@@ -334,7 +334,7 @@ namespace RingContact
       {
         const auto       &m = parameters.materials;
         std::vector<Body> bodies;
-        for (unsigned int b = 0; b < ProblemParameters::n_bodies; ++b)
+        for (unsigned int b = 0; b < parameters.problem.bodies.size(); ++b)
           {
             const auto &body = parameters.problem.bodies[b];
             bodies.push_back(

@@ -81,7 +81,7 @@ main()
 
   expect_error("unknown_body",
                "subsection Body 2\n set Material id = 7\nend\n",
-               "has cells of physical group 2, which is neither");
+               "has cells of physical group 2, which is no body's");
   expect_error("same_body_twice",
                "subsection Body 2\n set Material id = 1\nend\n",
                "is that of Body 1");
@@ -137,6 +137,22 @@ main()
                "end\n",
                "Boundary condition 2 (displacement on boundary 12): its value "
                "is not a finite number");
+  expect_error("third_body_not_read",
+               "subsection Body 3\n set Material id = 3\nend\n",
+               "is not read: Problem/Number of bodies is 2");
+  expect_error("second_pair_not_read",
+               "subsection Contact pair 2\n set Slave boundary = 13\nend\n",
+               "is not read: Problem/Number of contact pairs is 1");
+  expect_error("second_pair_same_slave",
+               "subsection Problem\n set Number of contact pairs = 2\nend\n"
+               "subsection Contact pair 2\n set Slave boundary = 10\n"
+               " set Master boundary = 23\nend\n",
+               "is the slave surface of subsection Contact too");
+  expect_error("slave_surfaces_share_a_vertex",
+               "subsection Problem\n set Number of contact pairs = 2\nend\n"
+               "subsection Contact pair 2\n set Slave boundary = 13\n"
+               " set Master boundary = 23\nend\n",
+               "of two contact pairs share the vertex");
   expect_error("time_points_not_increasing",
                "subsection Load program\n set Time points = 0.5, 0.2\nend\n",
                "must be increasing");

@@ -126,9 +126,11 @@ namespace RingContact
     unsigned int
     n_active() const;
 
-    /// The multiplier dof at the slave vertex nearest to a reference point.
+    /// The multiplier dof at the slave vertex nearest to a reference point
+    /// (and, if asked, its distance from the point).
     types::global_dof_index
-    multiplier_dof_nearest_to(const Point<2> &point) const;
+    multiplier_dof_nearest_to(const Point<2> &point,
+                              double         *distance = nullptr) const;
 
     /// Current over reference length of the slave surface at a multiplier
     /// node (average over the segments that share it): converts the Cauchy

@@ -254,6 +254,11 @@ namespace RingContact
       return problem.scenario == ScenarioType::general;
     }
 
+    /// The contact pairs (slave and master boundary tags): subsection
+    /// Contact's, then those of Contact pair 2, 3, ... (general problems).
+    std::vector<std::pair<unsigned int, unsigned int>>
+    contact_pairs() const;
+
     static void
     declare_parameters(ParameterHandler &prm);
 

@@ -15,6 +15,7 @@
 
 #include <map>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -126,7 +127,7 @@ namespace RingContact
           const Vector<double>                   &solution,
           const Vector<double>                   &nodal_gap,
           const std::map<unsigned int, Material> &materials,
-          const types::boundary_id                slave_boundary_id,
+          const std::set<types::boundary_id>     &slave_boundary_ids,
           const unsigned int                      step,
           const double                            time);
 

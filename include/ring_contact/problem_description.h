@@ -1,12 +1,13 @@
-// A two-body contact problem written in the parameter file: the bodies (the
-// physical groups of a gmsh mesh, each with its material and elements), the
-// boundary conditions per boundary tag (imposed displacement, traction, or
-// pressure on the current configuration), and checks of computed
-// quantities against references, all as expressions of x, y, the
-// pseudo-time t and named constants (deal.II's FunctionParser, muparser
-// syntax). The contact pair is subsection Contact, the load program
-// subsection 'Load program' with Program = steps. SSNP152 is the other
-// scenario: its boundary data and reference are its analytic solution.
+// A contact problem of two or more bodies written in the parameter file:
+// the bodies (the physical groups of a gmsh mesh, each with its material
+// and elements), the boundary conditions per boundary tag (imposed
+// displacement, traction, or pressure on the current configuration), and
+// checks of computed quantities against references, all as expressions of
+// x, y, the pseudo-time t and named constants (deal.II's FunctionParser,
+// muparser syntax). The contact pairs are subsection Contact and Contact
+// pair 2, 3, ..., the load program subsection 'Load program' with Program
+// = steps. SSNP152 is the other scenario: its boundary data and reference
+// are its analytic solution.
 //
 //   subsection Problem
 //     set Scenario  = general
@@ -153,18 +154,24 @@ namespace RingContact
                      const std::map<std::string, double> &constants);
   };
 
-  /// Subsections Problem, Body 1/2, Boundary condition 1..n, Check 1..n.
+  /// Subsections Problem, Body 1..n, Contact pair 2..m, Boundary condition
+  /// 1..12, Check 1..12.
   struct ProblemParameters
   {
-    static constexpr unsigned int n_bodies                = 2;
+    static constexpr unsigned int max_bodies              = 4;
+    static constexpr unsigned int max_contact_pairs       = 4;
     static constexpr unsigned int max_boundary_conditions = 12;
     static constexpr unsigned int max_checks              = 12;
 
-    ScenarioType                             scenario;
-    std::map<std::string, double>            constants;
-    std::array<BodyParameters, n_bodies>     bodies;
-    std::vector<BoundaryConditionParameters> boundary_conditions;
-    std::vector<ProblemCheckParameters>      checks;
+    ScenarioType                  scenario;
+    std::map<std::string, double> constants;
+    /// Problem/Number of bodies of them (2 by default).
+    std::vector<BodyParameters> bodies;
+    /// The contact pairs after the first (which is subsection Contact):
+    /// slave and master tags of the subsections Contact pair 2, 3, ...
+    std::vector<std::pair<unsigned int, unsigned int>> more_contact_pairs;
+    std::vector<BoundaryConditionParameters>           boundary_conditions;
+    std::vector<ProblemCheckParameters>                checks;
 
     static void
     declare_parameters(ParameterHandler &prm);

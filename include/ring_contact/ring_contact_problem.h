@@ -147,10 +147,11 @@ namespace RingContact
     {
       return mapping_collection;
     }
+    /// The contact interface of the first pair (subsection Contact).
     const ContactInterface &
     contact_interface() const
     {
-      return *contact;
+      return *contacts[0];
     }
     /// The convergence measures of the system last assembled.
     ResidualMeasure
@@ -233,6 +234,19 @@ namespace RingContact
     /// nominal, as Contact/Reported pressure says).
     double
     reported_pressure(const types::global_dof_index dof) const;
+    /// Over every pair: the contact nodes, how many are active, the node
+    /// nearest to a reference point, and the pair of a node.
+    std::vector<types::global_dof_index>
+    contact_nodes() const;
+    unsigned int
+    n_active_nodes() const;
+    types::global_dof_index
+    contact_node_nearest_to(const Point<2> &point) const;
+    const ContactInterface &
+    contact_of(const types::global_dof_index node) const
+    {
+      return *contacts[pair_of_node.at(node)];
+    }
 
     const Parameters        parameters;
     const IntegrationScheme scheme;
@@ -256,7 +270,12 @@ namespace RingContact
     std::vector<unsigned int>                  body_of_fe_index;
     types::material_id                         slave_ring;
     const LoadProgram                          load_program;
-    std::unique_ptr<ContactInterface>          contact;
+    /// One interface per contact pair (subsection Contact first).
+    std::vector<std::unique_ptr<ContactInterface>> contacts;
+    /// The pair of each contact node (multiplier dof).
+    std::map<types::global_dof_index, unsigned int> pair_of_node;
+    /// The body (material id) of each slave and master boundary tag.
+    std::map<types::boundary_id, types::material_id> body_of_boundary;
     /// Cyclic symmetry: the nodes of the sector's end side and their images.
     std::vector<CyclicSymmetry::NodePair> cyclic_pairs;
 
