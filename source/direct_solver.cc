@@ -122,7 +122,6 @@ namespace RingContact
           }
         analysed         = true;
         analysed_version = pattern_version;
-        ++n_analyses;
       }
     free_numeric();
     const long status = umfpack_dl_numeric(row_start.data(),
@@ -132,7 +131,6 @@ namespace RingContact
                                            &numeric,
                                            control.data(),
                                            nullptr);
-    ++n_factorizations;
     if (status != UMFPACK_OK)
       {
         free_numeric();

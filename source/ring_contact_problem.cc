@@ -202,12 +202,12 @@ namespace RingContact
   RingContactProblem::make_constraints()
   {
     imposed_dofs.clear();
-    for (const auto &[dof, value] : scenario->imposed_displacements(
-           dof_handler, mapping_collection, LoadState{0, 0, 0}))
+    const ImposedMotion motion = scenario->boundary_motion(dof_handler,
+                                                           mapping_collection,
+                                                           LoadState{0, 0, 0});
+    for (const auto &[dof, value] : motion.values)
       imposed_dofs.push_back(dof);
-    normal_target = scenario->normal_displacements(dof_handler,
-                                                   mapping_collection,
-                                                   LoadState{0, 0, 0});
+    normal_target = motion.normal;
     normal_component.clear();
     for (const auto &line : normal_target)
       {
@@ -478,11 +478,11 @@ namespace RingContact
   void
   RingContactProblem::apply_boundary_motion(const LoadState &load)
   {
-    boundary_target =
-      scenario->imposed_displacements(dof_handler, mapping_collection, load);
-    normal_target =
-      scenario->normal_displacements(dof_handler, mapping_collection, load);
-    current_load = load;
+    ImposedMotion motion =
+      scenario->boundary_motion(dof_handler, mapping_collection, load);
+    boundary_target = std::move(motion.values);
+    normal_target   = std::move(motion.normal);
+    current_load    = load;
   }
 
   // Bulk: total Lagrangian virtual work int P : Grad(delta u) dV and its
@@ -940,14 +940,14 @@ namespace RingContact
         if (newton.verbose && lifting)
           log << "    Newton " << std::setw(2) << it
               << "  boundary increment imposed on the update  active "
-              << n_active_nodes() << "/" << contact_nodes().size() << '\n';
+              << n_active_nodes() << "/" << n_contact_nodes() << '\n';
         else if (newton.verbose)
           log << "    Newton " << std::setw(2) << it << "  relative residual "
               << std::scientific << std::setprecision(3) << measure.force
               << " (floor " << measure.force_floor << ")  gap " << measure.gap
               << " (floor " << measure.gap_floor << ")" << std::defaultfloat
-              << "  active " << n_active_nodes() << "/"
-              << contact_nodes().size() << "  changed " << n_changed << '\n';
+              << "  active " << n_active_nodes() << "/" << n_contact_nodes()
+              << "  changed " << n_changed << '\n';
         if (!std::isfinite(measure.merit))
           {
             failure_reason = "the residual is not finite";
@@ -1145,6 +1145,15 @@ namespace RingContact
                    contact->multiplier_dofs().begin(),
                    contact->multiplier_dofs().end());
     return nodes;
+  }
+
+  unsigned int
+  RingContactProblem::n_contact_nodes() const
+  {
+    unsigned int n = 0;
+    for (const auto &contact : contacts)
+      n += contact->multiplier_dofs().size();
+    return n;
   }
 
   unsigned int
@@ -1413,7 +1422,7 @@ namespace RingContact
     report_rigid_body_modes();
     log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
         << " cells, " << dof_handler.n_dofs() << " unknowns, "
-        << contact_nodes().size() << " contact pressure nodes, "
+        << n_contact_nodes() << " contact pressure nodes, "
         << load_program.n_steps() << " steps\n";
     // Every checked quantity can be evaluated (a point outside the mesh is
     // an error now, not after the first step has been solved).

@@ -72,16 +72,16 @@ namespace RingContact
       // constraining the solution sought, which is radial: u_y = 0 at
       // (r, 0) and (-r, 0), u_x = 0 at (0, r), on r = R1 for the outer ring
       // and r = R3 for the inner one.
-      std::map<types::global_dof_index, double>
-      imposed_displacements(const DoFHandler<2>            &dof_handler,
-                            const hp::MappingCollection<2> &mapping,
-                            const LoadState                &load) const override
+      ImposedMotion
+      boundary_motion(const DoFHandler<2>            &dof_handler,
+                      const hp::MappingCollection<2> &mapping,
+                      const LoadState                &load) const override
       {
         std::map<types::global_dof_index, double> values;
         if (pressure_loading)
           {
             add_rigid_body_points(dof_handler, values);
-            return values;
+            return {values, {}};
           }
         const double angle = 2 * numbers::PI * load.rotation_elements /
                              (parameters.mesh.elements_around *
@@ -100,7 +100,7 @@ namespace RingContact
           motion,
           values,
           Components::displacement_mask());
-        return values;
+        return {values, {}};
       }
 
       // Pressure loading: p on r = R1.
@@ -187,10 +187,10 @@ namespace RingContact
         return bodies;
       }
 
-      std::map<types::global_dof_index, double>
-      imposed_displacements(const DoFHandler<2>            &dof_handler,
-                            const hp::MappingCollection<2> &mapping,
-                            const LoadState                &load) const override
+      ImposedMotion
+      boundary_motion(const DoFHandler<2>            &dof_handler,
+                      const hp::MappingCollection<2> &mapping,
+                      const LoadState                &load) const override
       {
         const auto &m       = parameters.materials;
         const auto  modulus = [&](const double E, const double nu) {
@@ -225,7 +225,7 @@ namespace RingContact
                 std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
               values[cell->vertex_dof_index(
                 v, Components::ux, cell->active_fe_index())] = 0;
-        return values;
+        return {values, {}};
       }
 
       double
@@ -277,7 +277,6 @@ namespace RingContact
                           const double                         time)
           : Function<2>(Components::n_components, time)
           , condition(condition)
-          , polar(condition.polar)
           , expression(
               make_expression(condition.expressions, constants, condition.name))
       {
@@ -292,7 +291,7 @@ namespace RingContact
         for (unsigned int c = 0; c < 2; ++c)
           if (condition.components[c])
             finite_value(u(c), condition, X, this->get_time());
-        if (polar)
+        if (condition.polar)
           {
             const double theta = std::atan2(X[1], X[0]);
             const double c = std::cos(theta), s = std::sin(theta);
@@ -317,7 +316,6 @@ namespace RingContact
 
     private:
       const BoundaryConditionParameters &condition;
-      const bool                         polar;
       std::unique_ptr<FunctionParser<2>> expression;
     };
 
@@ -351,22 +349,6 @@ namespace RingContact
                                                        body.kinematics)});
           }
         return bodies;
-      }
-
-      std::map<types::global_dof_index, double>
-      imposed_displacements(const DoFHandler<2>            &dof_handler,
-                            const hp::MappingCollection<2> &mapping,
-                            const LoadState                &load) const override
-      {
-        return motion(dof_handler, mapping, load).first;
-      }
-
-      std::vector<NormalDisplacement>
-      normal_displacements(const DoFHandler<2>            &dof_handler,
-                           const hp::MappingCollection<2> &mapping,
-                           const LoadState                &load) const override
-      {
-        return motion(dof_handler, mapping, load).second;
       }
 
       std::vector<BoundaryLoad>
@@ -413,11 +395,10 @@ namespace RingContact
       // and N2 . u = g2 fix the node. A node with one component imposed
       // already gets the other from its normal condition; only a node with
       // nothing else imposed keeps the single linear condition N . u = g.
-      std::pair<std::map<types::global_dof_index, double>,
-                std::vector<NormalDisplacement>>
-      motion(const DoFHandler<2>            &dof_handler,
-             const hp::MappingCollection<2> &mapping,
-             const LoadState                &load) const
+      ImposedMotion
+      boundary_motion(const DoFHandler<2>            &dof_handler,
+                      const hp::MappingCollection<2> &mapping,
+                      const LoadState                &load) const override
       {
         std::map<types::global_dof_index, double> values;
         for (const auto &condition : parameters.problem.boundary_conditions)

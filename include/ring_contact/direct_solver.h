@@ -18,7 +18,6 @@
 #include <deal.II/lac/vector.h>
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace RingContact
@@ -46,10 +45,6 @@ namespace RingContact
     /// refinement included).
     void
     solve(const Vector<double> &b, Vector<double> &x) const;
-
-    /// How often the analysis, and the numeric factorization, ran.
-    unsigned int n_analyses       = 0;
-    unsigned int n_factorizations = 0;
 
   private:
     void

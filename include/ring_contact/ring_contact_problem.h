@@ -239,6 +239,8 @@ namespace RingContact
     std::vector<types::global_dof_index>
     contact_nodes() const;
     unsigned int
+    n_contact_nodes() const;
+    unsigned int
     n_active_nodes() const;
     types::global_dof_index
     contact_node_nearest_to(const Point<2> &point) const;

@@ -81,6 +81,13 @@ namespace RingContact
     double                                 value;
   };
 
+  /// What a scenario imposes on the boundary at a load state.
+  struct ImposedMotion
+  {
+    std::map<types::global_dof_index, double> values;
+    std::vector<NormalDisplacement>           normal;
+  };
+
   class Scenario
   {
   public:
@@ -90,25 +97,14 @@ namespace RingContact
     virtual std::vector<Body>
     bodies() const = 0;
 
-    /// The imposed displacement of every constrained displacement unknown
-    /// at a load state. The unknowns are the same at every state (they
-    /// define the constraints), only the values change.
-    virtual std::map<types::global_dof_index, double>
-    imposed_displacements(const DoFHandler<2>            &dof_handler,
-                          const hp::MappingCollection<2> &mapping,
-                          const LoadState                &load) const = 0;
-
-    /// The normal displacements at a load state (none by default), for the
-    /// nodes whose displacement they do not fix whole (those are in
-    /// imposed_displacements()). The nodes and normals are the same at
-    /// every state, only the values change.
-    virtual std::vector<NormalDisplacement>
-    normal_displacements(const DoFHandler<2> &,
-                         const hp::MappingCollection<2> &,
-                         const LoadState &) const
-    {
-      return {};
-    }
+    /// The imposed displacements at a load state: the value of every
+    /// unknown they fix, and the normal displacements N . u = g of the
+    /// nodes they do not fix whole. The unknowns and normals are the same
+    /// at every state (they define the constraints), only the values change.
+    virtual ImposedMotion
+    boundary_motion(const DoFHandler<2>            &dof_handler,
+                    const hp::MappingCollection<2> &mapping,
+                    const LoadState                &load) const = 0;
 
     /// The loads on boundaries (none by default).
     virtual std::vector<BoundaryLoad>
