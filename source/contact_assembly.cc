@@ -94,8 +94,7 @@ namespace RingContact
       void
       scatter(std::vector<AD>                 &residual,
               const AffineConstraints<double> &constraints,
-              SparseMatrix<double>            &matrix,
-              Vector<double>                  &rhs);
+              LinearSystem                    &system);
 
     private:
       std::array<AD, 2>
@@ -416,8 +415,7 @@ namespace RingContact
     void
     ContactElement::scatter(std::vector<AD>                 &residual,
                             const AffineConstraints<double> &constraints,
-                            SparseMatrix<double>            &matrix,
-                            Vector<double>                  &rhs)
+                            LinearSystem                    &system)
     {
       turn_copies(residual, true);
       const unsigned int                   n           = local_dofs.size();
@@ -439,22 +437,24 @@ namespace RingContact
           for (unsigned int j = 0; j < n; ++j)
             local_matrix(to_unique[i], to_unique[j]) += residual[i].dx(j);
         }
-      constraints.distribute_local_to_global(
-        local_matrix, local_rhs, unique_dofs, matrix, rhs);
+      system.add(constraints, local_matrix, local_rhs, unique_dofs);
     }
   } // namespace
 
   void
   ContactInterface::assemble(const Vector<double>            &solution,
                              const AffineConstraints<double> &constraints,
-                             SparseMatrix<double>            &matrix,
-                             Vector<double>                  &rhs) const
+                             LinearSystem                    &system) const
   {
     const auto is_active = [this](const types::global_dof_index dof) {
       return static_cast<bool>(active[multiplier_index.at(dof)]);
     };
+    const auto process = this_process(system.get_communicator());
     for (const auto &point : points)
       {
+        if (slave.segments()[point.slave_segment].cell->subdomain_id() !=
+            process)
+          continue;
         ContactElement element(
           slave, master, point, !geometrically_linear, segment_based);
         element.gather_unknowns(solution);
@@ -462,16 +462,17 @@ namespace RingContact
         element.evaluate_partner_and_normal();
         std::vector<AD> residual =
           element.residual(complementarity_constant, is_active);
-        element.scatter(residual, constraints, matrix, rhs);
+        element.scatter(residual, constraints, system);
       }
 
     // Open nodes: w_k lambda_k = 0.
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
-      if (!active[k])
+      if (!active[k] && system.owned_rows().is_element(multiplier_dof_list[k]))
         {
           const auto dof = multiplier_dof_list[k];
-          matrix.add(dof, dof, reference_weight[k]);
-          rhs(dof) -= reference_weight[k] * solution(dof);
+          system.add_diagonal(dof,
+                              reference_weight[k],
+                              -reference_weight[k] * solution(dof));
         }
   }
 } // namespace RingContact

@@ -11,9 +11,17 @@
 // step starts, and verdicts.csv is written as soon as a scheme is done.
 // SIGINT or SIGTERM ends the run after the current step's files are
 // complete (exit code 130 or 143); a second signal ends it at once.
+//
+// Under MPI (`mpirun -np N ring_contact file.prm`) every process runs the
+// problem (see LinearSystem); process 0 alone prints and writes the history
+// and verdicts, each process writes its piece of the VTU files. A run
+// started without mpirun does not start MPI, unless the file asks for
+// MUMPS.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
 #include <ring_contact/config.h>
+#include <ring_contact/linear_system.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/output_folder.h>
 #include <ring_contact/parameters.h>
@@ -22,12 +30,15 @@
 #include <ring_contact/utilities.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <thread>
 
 namespace
 {
@@ -75,6 +86,67 @@ namespace
     std::signal(SIGXFSZ, SIG_IGN);
   }
 
+  // Whether a process manager (OpenMPI's or MPICH's mpirun, srun) started
+  // this process: only then is MPI started before the parameter file is
+  // read (starting it alone costs about a second).
+  bool
+  launched_by_mpirun()
+  {
+    for (const char *variable :
+         {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"})
+      if (std::getenv(variable) != nullptr)
+        return true;
+    return false;
+  }
+
+  // Whether every process reaches this point within `seconds`, on a
+  // communicator of its own: an error that every process met (a parameter
+  // file or a mesh that all of them read) ends the run cleanly; one that
+  // only some met leaves the others waiting in a collective call, and the
+  // run must be aborted rather than hang.
+  bool
+  all_processes_arrive(const MPI_Comm communicator, const double seconds)
+  {
+    MPI_Request request;
+    MPI_Ibarrier(communicator, &request);
+    const auto start = std::chrono::steady_clock::now();
+    for (int done = 0;;)
+      {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done)
+          return true;
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                          start)
+              .count() > seconds)
+          return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+  }
+
+  // Run `f` on process 0 only (a file of the results folder) and make its
+  // failure that of every process: the exception's message is sent to all,
+  // and each throws it.
+  template <typename Function>
+  void
+  on_process_zero(const MPI_Comm communicator, const Function &f)
+  {
+    using namespace RingContact;
+    std::string error;
+    if (this_process(communicator) == 0)
+      try
+        {
+          f();
+        }
+      catch (const std::exception &e)
+        {
+          error = one_line_message(e);
+        }
+    if (n_processes(communicator) > 1)
+      error = dealii::Utilities::MPI::broadcast(communicator, error, 0);
+    if (!error.empty())
+      throw std::runtime_error(error);
+  }
+
   // "history.csv, verdicts.csv, 42 .vtu, 4 .pvd"
   std::string
   describe_files(const std::vector<std::string> &names)
@@ -101,17 +173,16 @@ int
 main(int argc, char **argv)
 {
   using namespace RingContact;
-  // A serial program: MPI is not initialised (deal.II's serial classes do
-  // not need it, and starting it costs more than solving a modelisation),
-  // and one thread: the assembly is serial, and on these small systems the
-  // threads that deal.II would start for sorting and output cost more than
-  // they save.
+  // One thread: the assembly is serial (under MPI, one process per core),
+  // and on these small systems the threads that deal.II would start for
+  // sorting and output cost more than they save.
   dealii::MultithreadInfo::set_thread_limit(1);
   // The log line by line also into a pipe or a file (`| tee`, a batch
   // system's log): whoever watches sees each step when it is done.
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
 
   const std::string usage = "usage: ring_contact <file.prm>\n"
+                            "       mpirun -np N ring_contact <file.prm>\n"
                             "       ring_contact --print-parameters   (all "
                             "entries, defaults, docs)\n"
                             "       ring_contact --version\n";
@@ -137,19 +208,72 @@ main(int argc, char **argv)
       return 0;
     }
 
+  // MPI: started by mpirun, or for MUMPS on one process. Not otherwise:
+  // deal.II's serial classes do not need it, and starting it costs more
+  // than solving a modelisation.
+  std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  if (launched_by_mpirun())
+    mpi =
+      std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
   install_signal_handlers();
+
+  // Every process reads the file: an error in it is every process's, and
+  // process 0 says it.
+  Parameters parameters;
   try
     {
-      Parameters parameters;
       parameters.read(argument);
+    }
+  catch (const std::exception &e)
+    {
+      if (this_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "ring_contact: error: " << one_line_message(e)
+                  << std::endl;
+      return 1;
+    }
+  if (!mpi && parameters.newton.linear_solver == LinearSolverType::mumps)
+    mpi =
+      std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
+  const MPI_Comm     world = MPI_COMM_WORLD;
+  const unsigned int n     = n_processes(world);
+  const bool         root  = this_process(world) == 0;
+  // The other processes' log goes nowhere.
+  std::ostream  null_stream(nullptr);
+  std::ostream &out = root ? std::cout : null_stream;
+  // For the error barrier, apart from the run's own communication.
+  MPI_Comm errors = MPI_COMM_NULL;
+  if (n > 1)
+    MPI_Comm_dup(world, &errors);
+
+  // An error: said once and a clean exit when every process met it; said
+  // by the process that met it and the run aborted otherwise (the others
+  // wait for it in a collective call).
+  const auto fail = [&](const std::string &message) {
+    if (n == 1 || all_processes_arrive(errors, 10))
+      {
+        if (root)
+          std::cerr << "ring_contact: error: " << message << std::endl;
+        if (errors != MPI_COMM_NULL)
+          MPI_Comm_free(&errors);
+        return 1;
+      }
+    std::cerr << "ring_contact: error (process " << this_process(world)
+              << " of " << n << "): " << message << std::endl;
+    MPI_Abort(world, 1);
+    return 1;
+  };
+
+  try
+    {
       const OutputParameters &output = parameters.output;
 
       // The output folder, held for the whole run, without an earlier run's
-      // files (a run that writes no file leaves the folder alone).
+      // files (a run that writes no file leaves the folder alone); process 0
+      // holds it and writes the history and the verdicts.
       std::unique_ptr<OutputFolder> folder;
       std::unique_ptr<HistoryFile>  history_file;
       if (output.write_history || output.vtu_interval > 0)
-        {
+        on_process_zero(world, [&]() {
           folder             = std::make_unique<OutputFolder>(output.directory);
           const auto removed = folder->remove_earlier_results();
           if (!removed.empty())
@@ -165,33 +289,44 @@ main(int argc, char **argv)
                 std::make_unique<HistoryFile>(output.directory + "/history.csv",
                                               columns);
             }
-        }
+        });
+      // Each process writes its piece of the VTU files into the folder.
+      if (n > 1)
+        MPI_Barrier(world);
 
       std::vector<Verdict> verdicts;
       bool                 solved  = true;
       const unsigned int   n_steps = LoadProgram(parameters.load).n_steps();
+      // A stop asked of any process is a stop of all, after the same step.
+      bool stop = false;
       for (const auto &scheme : parameters.contact.schemes)
         {
-          if (stop_signal != 0)
+          if (stop)
             break;
-          RingContactProblem problem(parameters, scheme, std::cout);
+          RingContactProblem problem(parameters, scheme, out, world);
           problem.set_step_observer([&](const HistoryRow &row) {
             if (history_file)
-              history_file->append(row);
-            return stop_signal == 0;
+              on_process_zero(world, [&]() { history_file->append(row); });
+            stop = stop_signal != 0;
+            if (n > 1)
+              stop = dealii::Utilities::MPI::logical_or(stop, world);
+            return !stop;
           });
           solved = problem.run() && solved;
+          if (n > 1)
+            stop = dealii::Utilities::MPI::logical_or(stop_signal != 0, world);
+          else
+            stop = stop_signal != 0;
           // A scheme stopped by a signal before its last step has no
           // verdicts: its checks are not known.
           const auto &history = problem.history();
-          if (stop_signal != 0 &&
-              (history.empty() || history.back().step < n_steps))
+          if (stop && (history.empty() || history.back().step < n_steps))
             {
-              std::cout << "Stopped after "
-                        << (history.empty() ?
-                              std::string("no converged step") :
-                              "step " + std::to_string(history.back().step))
-                        << " of scheme " << scheme.name() << '\n';
+              out << "Stopped after "
+                  << (history.empty() ?
+                        std::string("no converged step") :
+                        "step " + std::to_string(history.back().step))
+                  << " of scheme " << scheme.name() << '\n';
               break;
             }
           const auto v = parameters.general() ?
@@ -205,41 +340,60 @@ main(int argc, char **argv)
                                            n_steps);
           verdicts.insert(verdicts.end(), v.begin(), v.end());
           if (output.write_history)
-            write_verdicts(output.directory + "/verdicts.csv", verdicts);
+            on_process_zero(world, [&]() {
+              write_verdicts(output.directory + "/verdicts.csv", verdicts);
+            });
         }
-      if (stop_signal != 0)
+      if (stop)
         {
           if (!verdicts.empty())
-            print_verdicts(std::cout, verdicts);
-          std::cout << std::flush;
-          const int signal = stop_signal.load();
-          std::cerr << "ring_contact: interrupted by "
-                    << (signal == SIGINT ? "SIGINT" : "SIGTERM")
-                    << ": the converged steps' results are complete"
-                    << (folder ? " in " + output.directory : std::string())
-                    << std::endl;
+            print_verdicts(out, verdicts);
+          out << std::flush;
+          // The signal this process received (under mpirun, SIGTERM).
+          const int signal =
+            stop_signal.load() != 0 ? stop_signal.load() : SIGTERM;
+          if (root)
+            std::cerr << "ring_contact: interrupted by "
+                      << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                      << ": the converged steps' results are complete"
+                      << (output.write_history || output.vtu_interval > 0 ?
+                            " in " + output.directory :
+                            std::string())
+                      << std::endl;
+          if (errors != MPI_COMM_NULL)
+            MPI_Comm_free(&errors);
           return 128 + signal;
         }
-      const bool pass = print_verdicts(std::cout, verdicts);
+      if (output.print_timing)
+        {
+          // The largest process's peak memory (what each machine needs).
+          const std::size_t peak =
+            n > 1 ? dealii::Utilities::MPI::max(peak_memory(), world) :
+                    peak_memory();
+          out << "Peak memory: " << (peak + (1 << 19)) / (1 << 20) << " MB"
+              << (n > 1 ? " (the largest of " + std::to_string(n) +
+                            " processes)" :
+                          std::string())
+              << "\n";
+        }
+      const bool pass = print_verdicts(out, verdicts);
       if (!solved)
-        std::cout << "A load step could not be solved (see above).\n";
+        out << "A load step could not be solved (see above).\n";
+      if (errors != MPI_COMM_NULL)
+        MPI_Comm_free(&errors);
       return (pass && solved) ? 0 : 1;
     }
   catch (const std::bad_alloc &)
     {
-      std::cerr << "ring_contact: error: out of memory (a smaller mesh, or "
-                   "'Mesh/Sector elements' for cyclic symmetry)"
-                << std::endl;
-      return 1;
+      return fail("out of memory (a smaller mesh, or 'Mesh/Sector elements' "
+                  "for cyclic symmetry)");
     }
   catch (const std::exception &e)
     {
-      std::cerr << "ring_contact: error: " << one_line_message(e) << std::endl;
-      return 1;
+      return fail(one_line_message(e));
     }
   catch (...)
     {
-      std::cerr << "ring_contact: error: an unknown exception" << std::endl;
-      return 1;
+      return fail("an unknown exception");
     }
 }

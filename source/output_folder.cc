@@ -226,9 +226,13 @@ namespace RingContact
   OutputFolder::is_result_file(const std::string &name)
   {
     // The names VtuWriter, the history and the verdicts use (scheme tags
-    // are lower-case letters, digits and hyphens), and their temporaries.
+    // are lower-case letters, digits and hyphens; an MPI run writes each
+    // process's piece as solution-<tag>-<step>.<process>.vtu and the
+    // .pvtu that lists them), and their temporaries.
     static const std::regex result(
-      "(history\\.csv|verdicts\\.csv|(solution|slave)-[a-z0-9-]+-[0-9]+\\.vtu|"
+      "(history\\.csv|verdicts\\.csv|"
+      "(solution|slave)-[a-z0-9-]+-[0-9]+(\\.[0-9]+)?\\.vtu|"
+      "solution-[a-z0-9-]+-[0-9]+\\.pvtu|"
       "(solution|slave)-[a-z0-9-]+\\.pvd)");
     static const std::regex temporary("\\.(.+)\\.tmp");
     std::smatch             match;

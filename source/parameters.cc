@@ -915,6 +915,16 @@ namespace RingContact
                         "true",
                         Patterns::Bool(),
                         "Print the residual of every Newton iteration.");
+      prm.declare_entry(
+        "Linear solver",
+        "auto",
+        Patterns::Selection("auto|UMFPACK|MUMPS"),
+        "The direct solver of the Newton systems. auto: UMFPACK on one "
+        "process, MUMPS on several (mpirun -np N ring_contact file.prm). "
+        "UMFPACK is serial; MUMPS factorizes on every process together, and "
+        "also runs on one (MPI is then started for it). Both keep their "
+        "analysis of the matrix while the sparsity pattern does not "
+        "change.");
     }
     prm.leave_subsection();
   }
@@ -929,6 +939,10 @@ namespace RingContact
       max_step_cuts  = get_count(prm, "Newton", "Maximum step cuts", 0, 30);
       extrapolate    = prm.get_bool("Extrapolate");
       verbose        = prm.get_bool("Verbose");
+      const std::string solver = prm.get("Linear solver");
+      linear_solver = solver == "UMFPACK" ? LinearSolverType::umfpack :
+                      solver == "MUMPS"   ? LinearSolverType::mumps :
+                                            LinearSolverType::automatic;
       require(tolerance > 0, "Newton", "Tolerance", "must be positive");
     }
     prm.leave_subsection();

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <ring_contact/components.h>
+#include <ring_contact/linear_system.h>
 #include <ring_contact/output_folder.h>
 #include <ring_contact/postprocessing.h>
 
@@ -435,10 +436,12 @@ namespace RingContact
 
   VtuWriter::VtuWriter(const std::string &directory,
                        const std::string &tag,
-                       const unsigned int subdivisions)
+                       const unsigned int subdivisions,
+                       const MPI_Comm     communicator)
       : directory(directory)
       , tag(tag)
       , subdivisions(subdivisions)
+      , communicator(communicator)
   {}
 
   void
@@ -451,10 +454,7 @@ namespace RingContact
                    const unsigned int                      step,
                    const double                            time)
   {
-    const std::vector<std::string> names = {"displacement",
-                                            "displacement",
-                                            "contact_pressure"};
-    DataOutBase::VtkFlags          flags;
+    DataOutBase::VtkFlags flags;
     flags.time = time;
     // Fast zlib: best compression costs more than the solve here.
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
@@ -475,17 +475,100 @@ namespace RingContact
     DataOutBase::VtkFlags bulk_flags    = flags;
     bulk_flags.write_higher_order_cells = subdivisions > 1;
     data_out.set_flags(bulk_flags);
+    const unsigned int n_pieces = n_processes(communicator);
+    const unsigned int piece    = this_process(communicator);
+    if (n_pieces > 1)
+      data_out.set_cell_selection(
+        [piece](const Triangulation<2>::cell_iterator &cell) {
+          return cell->is_active() && cell->subdomain_id() == piece;
+        });
     data_out.build_patches(mapping,
                            subdivisions,
                            DataOut<2>::curved_inner_cells);
-    const std::string bulk_name =
-      "solution-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
-    write_vtu_file(data_out, directory + "/" + bulk_name);
-    record(bulk_records, time, bulk_name);
-    write_file_atomically(directory + "/solution-" + tag + ".pvd",
-                          pvd_contents(bulk_records));
+    const std::string bulk_stem =
+      "solution-" + tag + "-" + Utilities::int_to_string(step, 4);
+    std::string bulk_name = bulk_stem + ".vtu";
+    if (n_pieces == 1)
+      write_vtu_file(data_out, directory + "/" + bulk_name);
+    else
+      {
+        // Each process its piece; when all are whole, process 0 lists them.
+        std::string error;
+        try
+          {
+            write_vtu_file(data_out,
+                           directory + "/" + bulk_stem + "." +
+                             std::to_string(piece) + ".vtu");
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+        for (const auto &message :
+             Utilities::MPI::all_gather(communicator, error))
+          if (!message.empty())
+            throw std::runtime_error(message);
+        bulk_name = bulk_stem + ".pvtu";
+      }
 
-    // The slave surfaces (of every contact pair), with the nodal gap.
+    // The rest on process 0: the .pvtu, the .pvd files and the slave
+    // surface (the whole state is on every process).
+    const auto write_the_rest = [&]() {
+      if (n_pieces > 1)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int p = 0; p < n_pieces; ++p)
+            pieces.push_back(bulk_stem + "." + std::to_string(p) + ".vtu");
+          std::ostringstream pvtu;
+          data_out.write_pvtu_record(pvtu, pieces);
+          write_file_atomically(directory + "/" + bulk_name, pvtu.str());
+        }
+      record(bulk_records, time, bulk_name);
+      write_file_atomically(directory + "/solution-" + tag + ".pvd",
+                            pvd_contents(bulk_records));
+      write_slave_surface(dof_handler,
+                          mapping,
+                          solution,
+                          nodal_gap,
+                          slave_boundary_ids,
+                          step,
+                          flags);
+    };
+    if (n_pieces == 1)
+      {
+        write_the_rest();
+        return;
+      }
+    std::string error;
+    if (piece == 0)
+      try
+        {
+          write_the_rest();
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    error = Utilities::MPI::broadcast(communicator, error, 0);
+    if (!error.empty())
+      throw std::runtime_error(error);
+  }
+
+  // The slave surfaces (of every contact pair), with the nodal gap.
+  void
+  VtuWriter::write_slave_surface(
+    const DoFHandler<2>                &dof_handler,
+    const hp::MappingCollection<2>     &mapping,
+    const Vector<double>               &solution,
+    const Vector<double>               &nodal_gap,
+    const std::set<types::boundary_id> &slave_boundary_ids,
+    const unsigned int                  step,
+    const DataOutBase::VtkFlags        &flags)
+  {
+    const std::vector<std::string> names = {"displacement",
+                                            "displacement",
+                                            "contact_pressure"};
+
     SlaveFaces faces(slave_boundary_ids);
     faces.attach_dof_handler(dof_handler);
     faces.add_data_vector(solution,
@@ -515,7 +598,7 @@ namespace RingContact
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
     write_vtu_file(faces, directory + "/" + surface_name);
-    record(surface_records, time, surface_name);
+    record(surface_records, flags.time, surface_name);
     write_file_atomically(directory + "/slave-" + tag + ".pvd",
                           pvd_contents(surface_records));
   }

@@ -1,13 +1,16 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
@@ -30,10 +33,14 @@ namespace RingContact
 {
   RingContactProblem::RingContactProblem(const Parameters        &parameters,
                                          const IntegrationScheme &scheme,
-                                         std::ostream            &log)
+                                         std::ostream            &log,
+                                         const MPI_Comm           communicator)
       : parameters(parameters)
       , scheme(scheme)
       , log(log)
+      , communicator(communicator)
+      , n_processes(RingContact::n_processes(communicator))
+      , this_process(RingContact::this_process(communicator))
       , dof_handler(triangulation)
       , displacement(0)
       , scenario(make_scenario(parameters))
@@ -67,6 +74,55 @@ namespace RingContact
         if (face->at_boundary())
           body_of_boundary[face->boundary_id()] = cell->material_id();
     slave_ring = body_of_boundary.at(parameters.contact.slave_boundary_id);
+  }
+
+  // The cells among the processes, by METIS on the graph of the cells that
+  // share a face, with an edge across each contact interface too (from
+  // each slave face to the master face nearest to it): the bodies share no
+  // face, and without those edges METIS gives each process whole bodies,
+  // one of them all the contact work (the slave ring of SSNP152 on one
+  // process and the master on the other). With them the cut runs across the
+  // interface and each process gets its share of both. A cell with a face
+  // on a slave surface weighs as much as five others: its contact points
+  // cost that much (measured at 640 x 48, Gauss 2).
+  void
+  RingContactProblem::partition_cells()
+  {
+    DynamicSparsityPattern graph;
+    GridTools::get_face_connectivity_of_cells(triangulation, graph);
+    std::vector<unsigned int> weights(triangulation.n_active_cells(), 1);
+    using FaceCentre = std::pair<Point<2>, unsigned int>; // centre, cell
+    for (const auto &[slave, master] : parameters.contact_pairs())
+      {
+        std::vector<FaceCentre> slave_faces, master_faces;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == slave)
+              {
+                slave_faces.emplace_back(face->center(),
+                                         cell->active_cell_index());
+                weights[cell->active_cell_index()] = 5;
+              }
+            else if (face->at_boundary() && face->boundary_id() == master)
+              master_faces.emplace_back(face->center(),
+                                        cell->active_cell_index());
+        const auto tree = pack_rtree(master_faces);
+        for (const auto &[centre, cell] : slave_faces)
+          for (auto nearest =
+                 tree.qbegin(boost::geometry::index::nearest(centre, 1));
+               nearest != tree.qend();
+               ++nearest)
+            {
+              graph.add(cell, nearest->second);
+              graph.add(nearest->second, cell);
+            }
+      }
+    SparsityPattern cell_graph;
+    cell_graph.copy_from(graph);
+    GridTools::partition_triangulation(n_processes,
+                                       weights,
+                                       cell_graph,
+                                       triangulation);
   }
 
   // One FESystem per body: FE_Q(p)^2 for the displacement and FE_Nothing
@@ -126,7 +182,22 @@ namespace RingContact
                                     layer_of.at(cell->material_id()) :
                                     fe_index_of.at(cell->material_id()));
       }
+    // Several processes: the cells partitioned (the same partition on
+    // every process), the unknowns numbered process by process, each
+    // process owning those of its cells (step-17).
+    if (n_processes > 1)
+      partition_cells();
     dof_handler.distribute_dofs(fe_collection);
+    if (n_processes > 1)
+      {
+        DoFRenumbering::subdomain_wise(dof_handler);
+        locally_owned_dofs =
+          DoFTools::locally_owned_dofs_per_subdomain(dof_handler)[this_process];
+      }
+    else
+      locally_owned_dofs = complete_index_set(dof_handler.n_dofs());
+    system = std::make_unique<LinearSystem>(communicator,
+                                            parameters.newton.linear_solver);
 
     // Cyclic symmetry: the nodes of the sector's two sides, and the master
     // surface continued far enough for the rotation of the load program.
@@ -190,7 +261,6 @@ namespace RingContact
 
     solution.reinit(dof_handler.n_dofs());
     previous_solution.reinit(dof_handler.n_dofs());
-    system_rhs.reinit(dof_handler.n_dofs());
     internal_force.reinit(dof_handler.n_dofs());
     external_force.reinit(dof_handler.n_dofs());
     residual_magnitude.reinit(dof_handler.n_dofs());
@@ -455,13 +525,14 @@ namespace RingContact
   void
   RingContactProblem::make_sparsity_pattern()
   {
+    // This process's cells; the contact couplings are few and the same on
+    // every process.
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    DoFTools::make_sparsity_pattern(
+      dof_handler, dsp, constraints, false, this_process);
     for (const auto &contact : contacts)
       contact->add_couplings(dsp);
-    sparsity_pattern.copy_from(dsp);
-    system_matrix.reinit(sparsity_pattern);
-    ++pattern_version; // the direct solver analyses it anew
+    system->reinit(dsp, locally_owned_dofs, dof_handler.n_dofs());
   }
 
   void
@@ -491,8 +562,7 @@ namespace RingContact
   RingContactProblem::assemble_system()
   {
     TimerOutput::Scope t(timer, "assembly");
-    system_matrix      = 0;
-    system_rhs         = 0;
+    system->set_zero();
     internal_force     = 0;
     external_force     = 0;
     residual_magnitude = 0;
@@ -504,26 +574,20 @@ namespace RingContact
     // so its round-off is eps |K_ij| (|X| + |u_j|), not eps |K_ij| |u_j|.
     // At p = 1e4 on steel this is a thousand times the bulk's.
     for (const auto &contact : contacts)
-      contact->assemble(solution,
-                        update_constraints(),
-                        system_matrix,
-                        system_rhs);
+      contact->assemble(solution, update_constraints(), *system);
+    system->compress();
     {
       double largest_position = 0;
       for (const auto &vertex : triangulation.get_vertices())
         largest_position = std::max(largest_position, vertex.norm());
-      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+      for (const auto i : locally_owned_dofs)
         {
-          double magnitude = std::abs(system_rhs(i));
-          for (auto entry = system_matrix.begin(i);
-               entry != system_matrix.end(i);
-               ++entry)
-            {
-              const auto j = entry->column();
-              magnitude += std::abs(entry->value()) *
-                           (std::abs(solution(j)) +
-                            (is_multiplier[j] ? 0 : largest_position));
-            }
+          double magnitude = std::abs(system->rhs()(i));
+          system->for_each_entry(i, [&](const auto j, const double value) {
+            magnitude +=
+              std::abs(value) * (std::abs(solution(j)) +
+                                 (is_multiplier[j] ? 0 : largest_position));
+          });
           residual_magnitude(i) = magnitude;
         }
     }
@@ -541,6 +605,8 @@ namespace RingContact
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        if (cell->subdomain_id() != this_process)
+          continue;
         hp_fe_values.reinit(cell);
         const FEValues<2> &fe_values     = hp_fe_values.get_present_fe_values();
         const FiniteElement<2> &fe       = cell->get_fe();
@@ -604,7 +670,37 @@ namespace RingContact
           }
         add_local_system(cell_matrix, cell_rhs, dofs, internal_force);
       }
-    assemble_boundary_loads();
+
+    // A load that is not a finite number at a face of one process fails the
+    // load step on every process.
+    std::string boundary_data_error;
+    try
+      {
+        assemble_boundary_loads();
+      }
+    catch (const BoundaryDataError &e)
+      {
+        boundary_data_error = e.what();
+      }
+    system->compress();
+    if (n_processes > 1)
+      {
+        // The sums over the processes' cells.
+        for (Vector<double> *v :
+             {&internal_force, &external_force, &residual_magnitude})
+          sum_over_processes(*v, communicator);
+        n_inverted = Utilities::MPI::sum(n_inverted, communicator);
+        min_det_F  = Utilities::MPI::min(min_det_F, communicator);
+        for (const auto &message :
+             Utilities::MPI::all_gather(communicator, boundary_data_error))
+          if (!message.empty())
+            {
+              boundary_data_error = message;
+              break;
+            }
+      }
+    if (!boundary_data_error.empty())
+      throw BoundaryDataError(boundary_data_error);
   }
 
   // Add a cell's (or face's) matrix and right-hand side -R to the system,
@@ -626,8 +722,7 @@ namespace RingContact
           magnitude += std::abs(matrix(i, j)) * std::abs(solution(dofs[j]));
         residual_magnitude(dofs[i]) += magnitude;
       }
-    update_constraints().distribute_local_to_global(
-      matrix, rhs, dofs, system_matrix, system_rhs);
+    system->add(update_constraints(), matrix, rhs, dofs);
   }
 
   // The scenario's boundary loads.
@@ -669,7 +764,8 @@ namespace RingContact
     for (const BoundaryLoad &load : boundary_loads)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
+          if (cell->subdomain_id() == this_process &&
+              cell->face(f)->at_boundary() &&
               cell->face(f)->boundary_id() == load.boundary_id)
             {
               hp_face_values.reinit(cell, f);
@@ -768,12 +864,10 @@ namespace RingContact
     const std::string  advice =
       ": a body may be free to move rigidly (check that its supports, "
       "and the contact, hold it in every direction)";
+    double relative_residual;
     try
       {
-        if (!direct_solver)
-          direct_solver = std::make_unique<DirectSolver>();
-        direct_solver->factorize(system_matrix, pattern_version);
-        direct_solver->solve(system_rhs, newton_update);
+        relative_residual = system->solve(newton_update);
       }
     catch (const std::exception &e)
       {
@@ -781,15 +875,10 @@ namespace RingContact
                          one_line_message(e) + ")" + advice;
         return false;
       }
-    // UMFPACK refines its solution iteratively: on a regular matrix,
-    // however ill-conditioned, K x - b is a round-off of b. A singular one
-    // (a body free to slide) leaves x without meaning: a residual of the
-    // order of b, or an x so large that the next state is nonsense.
-    Vector<double> residual(system_rhs.size());
-    system_matrix.vmult(residual, newton_update);
-    residual -= system_rhs;
-    const double relative_residual =
-      residual.l2_norm() / std::max(system_rhs.l2_norm(), 1e-300);
+    // A direct solve of a regular matrix, however ill-conditioned, leaves
+    // K x - b a round-off of b. A singular one (a body free to slide) leaves
+    // x without meaning: a residual of the order of b, or an x so large
+    // that the next state is nonsense.
     if (!(relative_residual <= 1e-6))
       {
         std::ostringstream reason;
@@ -857,7 +946,7 @@ namespace RingContact
       {
         if (constraints.is_constrained(i))
           continue;
-        const double r = system_rhs(i);
+        const double r = system->rhs()(i);
         merit += r * r;
         if (!is_multiplier[i])
           {
@@ -865,15 +954,16 @@ namespace RingContact
             force_floor += residual_magnitude(i) * residual_magnitude(i);
             continue;
           }
-        // A contact row: active when it depends on displacements.
+        // A contact row: active when it depends on displacements. Its
+        // entries are on the process that owns it.
+        if (!locally_owned_dofs.is_element(i))
+          continue;
         double row_sum = 0, diagonal = 0;
-        for (auto entry = system_matrix.begin(i); entry != system_matrix.end(i);
-             ++entry)
-          {
-            row_sum += std::abs(entry->value());
-            if (entry->column() == i)
-              diagonal = std::abs(entry->value());
-          }
+        system->for_each_entry(i, [&](const auto j, const double value) {
+          row_sum += std::abs(value);
+          if (j == i)
+            diagonal = std::abs(value);
+        });
         if (row_sum == 0)
           continue;
         const bool   active = row_sum > diagonal;
@@ -883,6 +973,12 @@ namespace RingContact
           std::max(measure.gap_floor,
                    round_off_factor * eps *
                      (active ? residual_magnitude(i) / row_sum / scale : 1.0));
+      }
+    if (n_processes > 1)
+      {
+        measure.gap = Utilities::MPI::max(measure.gap, communicator);
+        measure.gap_floor =
+          Utilities::MPI::max(measure.gap_floor, communicator);
       }
     measure.force = std::sqrt(force) / reaction;
     measure.force_floor =
@@ -1396,7 +1492,8 @@ namespace RingContact
                        ->degree);
         vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
                                                  scheme.tag(),
-                                                 subdivisions);
+                                                 subdivisions,
+                                                 communicator);
       }
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto &contact : contacts)

@@ -3,6 +3,7 @@
 #include <ring_contact/utilities.h>
 
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace RingContact
@@ -94,5 +95,20 @@ namespace RingContact
     // Messages quote values that were escaped where they were read; this
     // is the last guard against a raw byte reaching the terminal.
     return printable(line, 1000);
+  }
+
+  std::size_t
+  peak_memory()
+  {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("VmHWM:", 0) == 0)
+        {
+          std::istringstream in(line.substr(6));
+          std::size_t        kilobytes = 0;
+          in >> kilobytes;
+          return kilobytes * 1024;
+        }
+    return 0;
   }
 } // namespace RingContact

@@ -6,7 +6,8 @@
 (Debian's /usr/bin/python3, which has python3-vtk9.) Checks:
 - history.csv: the header and rows of 15 fields, every number parses;
 - verdicts.csv (if present): rows of 8 fields;
-- every .pvd parses and every file it lists exists; every listed .vtu is read
+- every .pvd parses and every file it lists exists; every listed .vtu (or
+  .pvtu of an MPI run, with its pieces) is read
   with VTK's own XML reader without error or warning, has cells, every cell's
   point ids are in range, every point is referenced by a cell, every point and
   cell data array has one finite value (tuple) per point or cell;
@@ -100,7 +101,24 @@ def triangulated_measure(cell, points):
     return signed, absolute
 
 
+def pvtu_pieces(path):
+    """The piece files a .pvtu lists (an MPI run's pieces), each checked to
+    exist."""
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        fail(f"{path}: not whole XML ({e})")
+    pieces = [p.get("Source") for p in root.iter("Piece")]
+    if not pieces:
+        fail(f"{path}: lists no piece")
+    for name in pieces:
+        if not os.path.isfile(os.path.join(os.path.dirname(path), name)):
+            fail(f"{path}: lists {name}, which does not exist")
+    return pieces
+
+
 def check_vtu(path):
+    """A .vtu, or a .pvtu with its pieces read as one grid."""
     import vtk
 
     class Errors:
@@ -110,7 +128,11 @@ def check_vtu(path):
             self.messages.append(event)
 
     errors = Errors()
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    parallel = path.endswith(".pvtu")
+    if parallel:
+        pvtu_pieces(path)
+    reader = (vtk.vtkXMLPUnstructuredGridReader() if parallel else
+              vtk.vtkXMLUnstructuredGridReader())
     reader.AddObserver("ErrorEvent", errors)
     reader.AddObserver("WarningEvent", errors)
     reader.SetFileName(path)
@@ -238,12 +260,15 @@ def main():
             tag = os.path.basename(pvd).split("-", 1)[1][:-len(".pvd")]
             # The undeformed state (step 0), then every converged step.
             steps = ["0"] + [r[1] for r in rows if scheme_tag(r[0]) == tag]
-            listed_steps = [str(int(f.rsplit("-", 1)[1][:-4])) for f in files]
+            listed_steps = [str(int(os.path.splitext(f)[0].rsplit("-", 1)[1]))
+                            for f in files]
             if listed_steps != steps:
                 fail(f"{pvd}: lists steps {listed_steps}, history.csv has "
                      f"{steps}")
         for name in files:
             path = os.path.join(folder, name)
+            if name.endswith(".pvtu"):
+                listed.update(pvtu_pieces(path))
             info = check_vtu(path)
             cells = args.surface_cells if surface else args.bulk_cells
             if cells is not None and info["cells"] != cells:

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,12 +64,12 @@ namespace RingContactTests
     }
   };
 
-  /// Run ring_contact on `prm_file`; `on_line(line, pid)` sees every line
-  /// as it is printed. `file_size_limit` > 0 sets RLIMIT_FSIZE (bytes) for
-  /// the run.
+  /// Run the command `arguments` (the program first); `on_line(line, pid)`
+  /// sees every line as it is printed. `file_size_limit` > 0 sets
+  /// RLIMIT_FSIZE (bytes) for the run.
   inline RunResult
-  run_program(
-    const std::string                                     &prm_file,
+  run_command(
+    const std::vector<std::string>                        &arguments,
     const std::function<void(const std::string &, pid_t)> &on_line         = {},
     const rlim_t                                           file_size_limit = 0)
   {
@@ -91,10 +92,11 @@ namespace RingContactTests
             const rlimit limit{file_size_limit, file_size_limit};
             ::setrlimit(RLIMIT_FSIZE, &limit);
           }
-        ::execl(RING_CONTACT_EXECUTABLE,
-                "ring_contact",
-                prm_file.c_str(),
-                static_cast<char *>(nullptr));
+        std::vector<char *> argv;
+        for (const auto &argument : arguments)
+          argv.push_back(const_cast<char *>(argument.c_str()));
+        argv.push_back(nullptr);
+        ::execv(argv[0], argv.data());
         ::_exit(127);
       }
     ::close(pipe_ends[1]);
@@ -121,6 +123,38 @@ namespace RingContactTests
     else if (WIFSIGNALED(status))
       result.signal = WTERMSIG(status);
     return result;
+  }
+
+  /// Run ring_contact on `prm_file` (see run_command()).
+  inline RunResult
+  run_program(
+    const std::string                                     &prm_file,
+    const std::function<void(const std::string &, pid_t)> &on_line         = {},
+    const rlim_t                                           file_size_limit = 0)
+  {
+    return run_command({RING_CONTACT_EXECUTABLE, prm_file},
+                       on_line,
+                       file_size_limit);
+  }
+
+  /// Run ring_contact on `prm_file` under mpirun with `n` processes; the
+  /// pid that `on_line` sees is mpirun's.
+  inline RunResult
+  run_mpi_program(
+    const unsigned int                                     n,
+    const std::string                                     &prm_file,
+    const std::function<void(const std::string &, pid_t)> &on_line = {})
+  {
+    std::vector<std::string> arguments = {RING_CONTACT_MPIEXEC};
+    std::istringstream       flags(RING_CONTACT_MPIEXEC_FLAGS);
+    for (std::string flag; flags >> flag;)
+      arguments.push_back(flag);
+    for (const std::string argument : {std::string("-n"),
+                                       std::to_string(n),
+                                       std::string(RING_CONTACT_EXECUTABLE),
+                                       prm_file})
+      arguments.push_back(argument);
+    return run_command(arguments, on_line);
   }
 
   /// check_results.py on `folder` with `options`; true if every file reads

@@ -23,6 +23,7 @@
 
 #include <ring_contact/contact_surface.h>
 #include <ring_contact/cyclic_symmetry.h>
+#include <ring_contact/linear_system.h>
 
 #include <array>
 #include <map>
@@ -102,12 +103,13 @@ namespace RingContact
     void
     add_couplings(DynamicSparsityPattern &dsp);
 
-    /// Add the contact terms to the tangent matrix and rhs = -residual.
+    /// Add the contact terms to the tangent matrix and rhs = -residual:
+    /// the slave points on this process's cells, and the rows of the open
+    /// nodes it owns (see LinearSystem).
     void
     assemble(const Vector<double>            &solution,
              const AffineConstraints<double> &constraints,
-             SparseMatrix<double>            &matrix,
-             Vector<double>                  &rhs) const;
+             LinearSystem                    &system) const;
 
     /// The multiplier dofs of the slave surface, one per contact node (with
     /// cyclic symmetry the end side's twin is left out: see

@@ -62,6 +62,14 @@ namespace RingContact
     steps     ///< given pseudo-times (Scenario = general)
   };
 
+  /// The linear solver of the Newton systems.
+  enum class LinearSolverType
+  {
+    automatic, ///< UMFPACK on one process, MUMPS on several
+    umfpack,   ///< SuiteSparse's UMFPACK (one process)
+    mumps      ///< MUMPS through Trilinos Amesos (one or several processes)
+  };
+
   /// The checked quantity of a verdict.
   enum class CheckedQuantity
   {
@@ -190,11 +198,12 @@ namespace RingContact
 
   struct NewtonParameters
   {
-    unsigned int max_iterations;
-    double       tolerance;
-    unsigned int max_step_cuts;
-    bool         extrapolate;
-    bool         verbose;
+    unsigned int     max_iterations;
+    double           tolerance;
+    unsigned int     max_step_cuts;
+    bool             extrapolate;
+    bool             verbose;
+    LinearSolverType linear_solver;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -5,6 +5,7 @@
 #define ring_contact_postprocessing_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
@@ -117,9 +118,15 @@ namespace RingContact
   class VtuWriter
   {
   public:
+    /// With several processes in `communicator`, write() is collective:
+    /// each process writes the cells of its subdomain as a piece
+    /// (solution-<tag>-<step>.<process>.vtu), process 0 the .pvtu that
+    /// lists them, the slave surface and the .pvd files; a file that one
+    /// process cannot write is an error of all.
     VtuWriter(const std::string &directory,
               const std::string &tag,
-              const unsigned int subdivisions);
+              const unsigned int subdivisions,
+              const MPI_Comm     communicator = MPI_COMM_SELF);
 
     void
     write(const DoFHandler<2>                    &dof_handler,
@@ -132,6 +139,14 @@ namespace RingContact
           const double                            time);
 
   private:
+    void
+    write_slave_surface(const DoFHandler<2>                &dof_handler,
+                        const hp::MappingCollection<2>     &mapping,
+                        const Vector<double>               &solution,
+                        const Vector<double>               &nodal_gap,
+                        const std::set<types::boundary_id> &slave_boundary_ids,
+                        const unsigned int                  step,
+                        const DataOutBase::VtkFlags        &flags);
     template <int patch_dim>
     void
     write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
@@ -146,6 +161,7 @@ namespace RingContact
     const std::string                           directory;
     const std::string                           tag;
     const unsigned int                          subdivisions;
+    const MPI_Comm                              communicator;
     std::vector<std::pair<double, std::string>> bulk_records;
     std::vector<std::pair<double, std::string>> surface_records;
   };

@@ -7,6 +7,8 @@
 #ifndef ring_contact_ring_contact_problem_h
 #define ring_contact_ring_contact_problem_h
 
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values_extractors.h>
@@ -17,11 +19,10 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact_interface.h>
-#include <ring_contact/direct_solver.h>
+#include <ring_contact/linear_system.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/material.h>
 #include <ring_contact/parameters.h>
@@ -64,9 +65,15 @@ namespace RingContact
   class RingContactProblem
   {
   public:
+    /// Under MPI (`communicator` with several processes) every process
+    /// constructs the problem and runs it: each assembles its own cells and
+    /// contact points, the linear solver works on all of them together, and
+    /// every process holds the whole state (see LinearSystem). Only process
+    /// 0's `log` should be shown.
     RingContactProblem(const Parameters        &parameters,
                        const IntegrationScheme &scheme,
-                       std::ostream            &log);
+                       std::ostream            &log,
+                       const MPI_Comm           communicator = MPI_COMM_WORLD);
 
     /// Run the whole load program. Returns false if a step could not be
     /// solved (the history then ends at the last converged step).
@@ -122,15 +129,21 @@ namespace RingContact
     {
       return solution;
     }
+    /// The tangent on one process (deal.II's matrix).
     const SparseMatrix<double> &
     tangent_matrix() const
     {
-      return system_matrix;
+      return system->serial_matrix();
     }
     const Vector<double> &
     residual_rhs() const
     {
-      return system_rhs;
+      return system->rhs();
+    }
+    const LinearSystem &
+    linear_system() const
+    {
+      return *system;
     }
     const AffineConstraints<double> &
     newton_constraints() const
@@ -175,6 +188,8 @@ namespace RingContact
     assemble_system();
     void
     make_grid();
+    void
+    partition_cells();
     void
     setup_system();
     void
@@ -253,6 +268,10 @@ namespace RingContact
     const Parameters        parameters;
     const IntegrationScheme scheme;
     std::ostream           &log;
+    const MPI_Comm          communicator;
+    /// The processes, and this one (its cells are the subdomain of this
+    /// number; on one process, all of them).
+    const unsigned int n_processes, this_process;
 
     Triangulation<2>                 triangulation;
     DoFHandler<2>                    dof_handler;
@@ -286,14 +305,12 @@ namespace RingContact
     AffineConstraints<double> constraints;
     std::vector<bool>         is_dirichlet;
     std::vector<bool>         is_multiplier;
-    SparsityPattern           sparsity_pattern;
-    SparseMatrix<double>      system_matrix;
-    /// Counts the sparsity patterns made: the direct solver keeps its
-    /// analysis while it does not change.
-    std::uint64_t                 pattern_version = 0;
-    std::unique_ptr<DirectSolver> direct_solver;
-    Vector<double>                system_rhs;
-    Vector<double>                internal_force;
+    /// The unknowns whose rows this process stores (all on one process).
+    IndexSet locally_owned_dofs;
+    /// The tangent, the right-hand side -R and their solver.
+    std::unique_ptr<LinearSystem> system;
+    /// The nodal forces of the bulk (whole on every process).
+    Vector<double> internal_force;
     /// The boundary loads' nodal forces, for the scale of the residual.
     Vector<double> external_force;
     /// The displacement unknowns the scenario imposes.

@@ -19,6 +19,11 @@ namespace RingContact
   /// `max_length` characters is cut and ends with "...".
   std::string
   printable(const std::string &text, std::size_t max_length = 60);
+
+  /// The peak resident memory of this process so far (VmHWM), in bytes; 0
+  /// where the system does not say.
+  std::size_t
+  peak_memory();
 } // namespace RingContact
 
 #endif

@@ -1,0 +1,78 @@
+// MUMPS, the parallel direct solver, called through its C interface: the
+// distributed matrix as each process's own rows (MUMPS's distributed
+// assembled input), the analysis (ordering, elimination tree, mapping onto
+// the processes) kept while the sparsity pattern does not change, and the
+// right-hand side and solution whole on every process (they are, in this
+// program: see LinearSystem).
+//
+// Trilinos's Amesos_Mumps does the same through Epetra, but rebuilds its
+// triplets and redistributes the matrix at every factorization: at 640 x 48
+// on two processes it took 0.39-0.45 s per factorization, of which MUMPS's
+// own factorization driver was 0.24 s. The same reason the serial path calls
+// UMFPACK itself (DirectSolver).
+#ifndef ring_contact_mumps_solver_h
+#define ring_contact_mumps_solver_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class Epetra_CrsMatrix;
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  class MumpsSolver
+  {
+  public:
+    /// Every process of `communicator` takes part (the constructor, like
+    /// every member function, is collective).
+    explicit MumpsSolver(const MPI_Comm communicator);
+    ~MumpsSolver();
+    MumpsSolver(const MumpsSolver &) = delete;
+    MumpsSolver &
+    operator=(const MumpsSolver &) = delete;
+
+    /// LU of `matrix` (each process gives its own rows). The analysis is
+    /// redone when `pattern_version` differs from that of the last call.
+    /// Throws std::runtime_error, on every process, when MUMPS fails (a
+    /// singular matrix among others), after retrying with more workspace
+    /// when it ran short of it.
+    void
+    factorize(const Epetra_CrsMatrix &matrix,
+              const std::uint64_t     pattern_version);
+
+    /// x = A^-1 b with the last factorization; b whole on every process
+    /// (process 0's is used), x whole on every process.
+    void
+    solve(const Vector<double> &b, Vector<double> &x);
+
+    /// Floating-point operations of the last factorization (MUMPS's
+    /// RINFOG(3)).
+    double
+    factorization_flops() const;
+
+  private:
+    struct Data;
+    /// Run MUMPS's phase `job`; its error code INFOG(1) (the same on every
+    /// process).
+    int
+    run(const int job);
+
+    const MPI_Comm        communicator;
+    std::unique_ptr<Data> data;
+    bool                  analysed         = false;
+    std::uint64_t         analysed_version = 0;
+    /// Each process's entries: global row and column (from 1), and where
+    /// each value comes from in the matrix's storage of its rows.
+    std::vector<int>    rows, columns;
+    std::vector<double> values;
+    std::vector<double> rhs;
+  };
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,208 @@
+#include <ring_contact/linear_system.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace RingContact
+{
+  namespace
+  {
+    bool
+    needs_trilinos(const MPI_Comm communicator, const LinearSolverType solver)
+    {
+      return solver == LinearSolverType::mumps ||
+             (solver == LinearSolverType::automatic &&
+              n_processes(communicator) > 1);
+    }
+  } // namespace
+
+  unsigned int
+  n_processes(const MPI_Comm communicator)
+  {
+    return dealii::Utilities::MPI::job_supports_mpi() ?
+             dealii::Utilities::MPI::n_mpi_processes(communicator) :
+             1;
+  }
+
+  unsigned int
+  this_process(const MPI_Comm communicator)
+  {
+    return dealii::Utilities::MPI::job_supports_mpi() ?
+             dealii::Utilities::MPI::this_mpi_process(communicator) :
+             0;
+  }
+
+  void
+  sum_over_processes(Vector<double> &v, const MPI_Comm communicator)
+  {
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(v.begin(),
+                                                                v.size()),
+                                communicator,
+                                dealii::ArrayView<double>(v.begin(), v.size()));
+  }
+
+  LinearSystem::LinearSystem(const MPI_Comm         communicator,
+                             const LinearSolverType solver)
+      : communicator(communicator)
+      , use_trilinos(needs_trilinos(communicator, solver))
+  {
+    if (!use_trilinos && n_processes(communicator) > 1)
+      throw std::runtime_error(
+        "Newton/Linear solver = UMFPACK is serial: with several MPI "
+        "processes use MUMPS (or auto)");
+    if (use_trilinos && !dealii::Utilities::MPI::job_supports_mpi())
+      throw std::runtime_error(
+        "Newton/Linear solver = MUMPS needs MPI, which was not started");
+    if (use_trilinos)
+      {
+        distributed_part = std::make_unique<Distributed>();
+        // Trilinos and MUMPS communicate on a communicator of their own,
+        // apart from the program's sums and gathers.
+        MPI_Comm_dup(communicator, &distributed_part->communicator);
+      }
+  }
+
+  LinearSystem::~LinearSystem() = default;
+
+  LinearSystem::Distributed::~Distributed()
+  {
+    // MUMPS ends its work before the communicator goes.
+    mumps.reset();
+    matrix.clear();
+    if (communicator != MPI_COMM_NULL)
+      MPI_Comm_free(&communicator);
+  }
+
+  std::string
+  LinearSystem::solver_name() const
+  {
+    return use_trilinos ?
+             "MUMPS on " + std::to_string(n_processes(communicator)) +
+               " process" + (n_processes(communicator) > 1 ? "es" : "") :
+             "UMFPACK";
+  }
+
+  void
+  LinearSystem::reinit(const DynamicSparsityPattern &dsp,
+                       const IndexSet               &owned_rows,
+                       const types::global_dof_index n)
+  {
+    owned = owned_rows;
+    ++pattern_version;
+    if (!use_trilinos)
+      {
+        sparsity_pattern.copy_from(dsp);
+        matrix.reinit(sparsity_pattern);
+      }
+    else
+      {
+        auto &d = *distributed_part;
+        // Each process's rows of other processes go to their owners.
+        d.matrix.reinit(owned, owned, dsp, d.communicator, true);
+        if (!d.mumps)
+          d.mumps = std::make_unique<MumpsSolver>(d.communicator);
+        rhs_added.reinit(n);
+      }
+    rhs_vector.reinit(n);
+  }
+
+  void
+  LinearSystem::set_zero()
+  {
+    rhs_vector = 0;
+    if (!use_trilinos)
+      matrix = 0;
+    else
+      {
+        distributed_part->matrix = 0;
+        rhs_added                = 0;
+      }
+  }
+
+  void
+  LinearSystem::add(const AffineConstraints<double>            &constraints,
+                    const FullMatrix<double>                   &local_matrix,
+                    const Vector<double>                       &local_rhs,
+                    const std::vector<types::global_dof_index> &dofs)
+  {
+    if (!use_trilinos)
+      constraints.distribute_local_to_global(
+        local_matrix, local_rhs, dofs, matrix, rhs_vector);
+    else
+      constraints.distribute_local_to_global(
+        local_matrix, local_rhs, dofs, distributed_part->matrix, rhs_added);
+  }
+
+  void
+  LinearSystem::add_diagonal(const types::global_dof_index i,
+                             const double                  k,
+                             const double                  r)
+  {
+    if (!use_trilinos)
+      {
+        matrix.add(i, i, k);
+        rhs_vector(i) += r;
+      }
+    else
+      {
+        distributed_part->matrix.add(i, i, k);
+        rhs_added(i) += r;
+      }
+  }
+
+  void
+  LinearSystem::compress()
+  {
+    if (!use_trilinos)
+      return;
+    distributed_part->matrix.compress(VectorOperation::add);
+    sum_over_processes(rhs_added, communicator);
+    rhs_vector += rhs_added;
+    rhs_added = 0;
+  }
+
+  double
+  LinearSystem::entry(const types::global_dof_index i,
+                      const types::global_dof_index j) const
+  {
+    return use_trilinos ? distributed_part->matrix.el(i, j) : matrix.el(i, j);
+  }
+
+  double
+  LinearSystem::solve(Vector<double> &x)
+  {
+    x.reinit(rhs_vector.size());
+    if (!use_trilinos)
+      {
+        if (!umfpack)
+          umfpack = std::make_unique<DirectSolver>();
+        umfpack->factorize(matrix, pattern_version);
+        umfpack->solve(rhs_vector, x);
+        // UMFPACK refines its solution iteratively: on a regular matrix,
+        // however ill-conditioned, K x - b is a round-off of b.
+        Vector<double> residual(rhs_vector.size());
+        matrix.vmult(residual, x);
+        residual -= rhs_vector;
+        return residual.l2_norm() / std::max(rhs_vector.l2_norm(), 1e-300);
+      }
+
+    auto &d = *distributed_part;
+    d.mumps->factorize(d.matrix.trilinos_matrix(), pattern_version);
+    d.mumps->solve(rhs_vector, x);
+    // |K x - rhs|, each process its own rows.
+    double squares[2] = {0, 0};
+    for (const auto i : owned)
+      {
+        double r = -rhs_vector(i);
+        for_each_entry(i, [&](const auto j, const double value) {
+          r += value * x(j);
+        });
+        squares[0] += r * r;
+        squares[1] += rhs_vector(i) * rhs_vector(i);
+      }
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(squares, 2),
+                                communicator,
+                                dealii::ArrayView<double>(squares, 2));
+    return std::sqrt(squares[0]) / std::max(std::sqrt(squares[1]), 1e-300);
+  }
+} // namespace RingContact

@@ -1,0 +1,164 @@
+// MPI: the same results on two processes as on one. Under mpirun -np 2
+// every case is solved twice: by both processes together (the cells
+// partitioned, MUMPS), and by each process alone (MPI_COMM_SELF: the serial
+// program, UMFPACK). Asserted for every step of every scheme: the same
+// Newton iterations, and the pressure at the probe, the extreme pressures,
+// the L2 error and every checked quantity within 1e-9 (relative to the
+// case's scale). The cases: A (its two schemes), C with every contact
+// integration scheme, G (Q2, curved; its three schemes, the whole rotation
+// in 20 steps), a cyclic-symmetry sector of C, and three blocks with two
+// contact pairs (a general problem: tractions, resultant forces).
+// Also MUMPS on one process against UMFPACK, for A.
+#include <deal.II/base/mpi.h>
+
+#include <ring_contact/config.h>
+#include <ring_contact/ring_contact_problem.h>
+
+#include "run_problem.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace RingContact;
+using RingContactTests::check;
+using RingContactTests::modelisation;
+
+namespace
+{
+  // Quiet runs without files.
+  const std::string quiet =
+    "\nsubsection Output\n set VTU interval = 0\n set Print timing = false\n"
+    " set Write history = false\nend\n"
+    "subsection Newton\n set Verbose = false\nend\n";
+
+  // Every scheme of the file, on `communicator`.
+  std::vector<std::vector<HistoryRow>>
+  solve(const Parameters &parameters, const MPI_Comm communicator)
+  {
+    std::vector<std::vector<HistoryRow>> histories;
+    for (const auto &scheme : parameters.contact.schemes)
+      {
+        std::ostringstream log;
+        RingContactProblem problem(parameters, scheme, log, communicator);
+        check(problem.run(), scheme.name() + ": every step is solved");
+        histories.push_back(problem.history());
+      }
+    return histories;
+  }
+
+  // The largest difference of two histories, relative to the scale of
+  // each quantity; -1 if the steps or the Newton iterations differ.
+  double
+  difference(const std::vector<HistoryRow> &a, const std::vector<HistoryRow> &b)
+  {
+    if (a.size() != b.size())
+      return -1;
+    double              pressure_scale = 0;
+    std::vector<double> quantity_scale(a.empty() ? 0 : a[0].quantities.size());
+    for (const auto &row : a)
+      {
+        pressure_scale =
+          std::max({pressure_scale,
+                    std::isfinite(row.analytic) ? std::abs(row.analytic) : 0.,
+                    std::abs(row.pressure_max)});
+        for (unsigned int k = 0; k < quantity_scale.size(); ++k)
+          quantity_scale[k] =
+            std::max(quantity_scale[k], std::abs(row.quantities[k]));
+      }
+    double d = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        if (a[i].step != b[i].step ||
+            a[i].newton_iterations != b[i].newton_iterations ||
+            a[i].active_nodes != b[i].active_nodes)
+          return -1;
+        for (const auto &[x, y] :
+             {std::make_pair(a[i].pressure_A, b[i].pressure_A),
+              std::make_pair(a[i].pressure_min, b[i].pressure_min),
+              std::make_pair(a[i].pressure_max, b[i].pressure_max)})
+          d = std::max(d, std::abs(x - y) / pressure_scale);
+        if (std::isfinite(a[i].l2_relative_error))
+          d =
+            std::max(d,
+                     std::abs(a[i].l2_relative_error - b[i].l2_relative_error));
+        for (unsigned int k = 0; k < quantity_scale.size(); ++k)
+          d = std::max(d,
+                       std::abs(a[i].quantities[k] - b[i].quantities[k]) /
+                         std::max(quantity_scale[k], 1e-300));
+      }
+    return d;
+  }
+
+  void
+  compare(const std::string &name,
+          const std::string &prm_text,
+          const std::string &serial_solver = "auto")
+  {
+    const MPI_Comm     world = MPI_COMM_WORLD;
+    const unsigned int me    = Utilities::MPI::this_mpi_process(world);
+    // One file, written by process 0, read by all.
+    static unsigned int case_number = 0;
+    const std::string   file = "case-" + std::to_string(++case_number) + ".prm";
+    if (me == 0)
+      std::ofstream(file) << prm_text << quiet;
+    MPI_Barrier(world);
+    Parameters parameters;
+    parameters.read(file);
+    const auto together = solve(parameters, world);
+
+    std::ofstream(file + "." + std::to_string(me))
+      << "include " << file
+      << "\nsubsection Newton\n set Linear solver = " << serial_solver
+      << "\nend\n";
+    Parameters serial_parameters;
+    serial_parameters.read(file + "." + std::to_string(me));
+    const auto alone = solve(serial_parameters, MPI_COMM_SELF);
+
+    for (unsigned int s = 0; s < together.size(); ++s)
+      {
+        const double       d      = difference(alone[s], together[s]);
+        const std::string  scheme = parameters.contact.schemes[s].name();
+        std::ostringstream difference_text;
+        difference_text << std::scientific << std::setprecision(0) << d;
+        if (me == 0)
+          RingContactTests::deallog_file
+            << name << ", " << scheme << ": " << together[s].size()
+            << " steps, "
+            << (d < 0    ? "other steps or Newton iterations than" :
+                d < 1e-9 ? "the same as" :
+                           "DIFFERENT (" + difference_text.str() + ") from")
+            << " one process (" << serial_solver << ")" << std::endl;
+        check(d >= 0 && d < 1e-9,
+              name + ", " + scheme + ": two processes give the serial results");
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+        "run with mpirun -np 2");
+
+  compare("A", modelisation('a', ""));
+  compare("A", modelisation('a', ""), "MUMPS");
+  compare("C",
+          modelisation('c',
+                       "subsection Contact\n set Integration schemes = nodal, "
+                       "Gauss 2, Simpson 3, Newton-Cotes 4, segment-based "
+                       "2\nend"));
+  compare("G, the whole rotation in 20 steps",
+          modelisation('g',
+                       "subsection Load program\n set Rotation steps = 20\n"
+                       "end"));
+  compare("C, a sector of 3 elements",
+          modelisation('c',
+                       "subsection Mesh\n set Sector elements = 3\nend\n"
+                       "subsection Contact\n set Integration schemes = "
+                       "segment-based 2\nend"));
+  compare("three blocks",
+          std::string("include ") + RING_CONTACT_SOURCE_DIR +
+            "/prm/three_blocks.prm\nsubsection Mesh\n set Mesh file = " +
+            RING_CONTACT_SOURCE_DIR + "/meshes/three_blocks.geo\nend\n");
+}
