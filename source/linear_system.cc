@@ -73,15 +73,6 @@ namespace RingContact
       MPI_Comm_free(&communicator);
   }
 
-  std::string
-  LinearSystem::solver_name() const
-  {
-    return use_trilinos ?
-             "MUMPS on " + std::to_string(n_processes(communicator)) +
-               " process" + (n_processes(communicator) > 1 ? "es" : "") :
-             "UMFPACK";
-  }
-
   void
   LinearSystem::reinit(const DynamicSparsityPattern &dsp,
                        const IndexSet               &owned_rows,
@@ -159,13 +150,6 @@ namespace RingContact
     sum_over_processes(rhs_added, communicator);
     rhs_vector += rhs_added;
     rhs_added = 0;
-  }
-
-  double
-  LinearSystem::entry(const types::global_dof_index i,
-                      const types::global_dof_index j) const
-  {
-    return use_trilinos ? distributed_part->matrix.el(i, j) : matrix.el(i, j);
   }
 
   double

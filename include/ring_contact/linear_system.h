@@ -64,17 +64,6 @@ namespace RingContact
     LinearSystem &
     operator=(const LinearSystem &) = delete;
 
-    /// Trilinos storage and MUMPS (several processes, or MUMPS asked for).
-    bool
-    distributed() const
-    {
-      return use_trilinos;
-    }
-
-    /// The solver's name, as the log shows it.
-    std::string
-    solver_name() const;
-
     /// A new sparsity pattern: `dsp` holds the couplings of this process's
     /// cells and contact points (rows of any process); `owned` the rows this
     /// process stores (all of them on one process). The matrix is zero.
@@ -137,11 +126,6 @@ namespace RingContact
     {
       return matrix;
     }
-
-    /// The matrix entry (i, j) of an owned row.
-    double
-    entry(const types::global_dof_index i,
-          const types::global_dof_index j) const;
 
     MPI_Comm
     get_communicator() const

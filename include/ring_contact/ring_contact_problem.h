@@ -140,11 +140,6 @@ namespace RingContact
     {
       return system->rhs();
     }
-    const LinearSystem &
-    linear_system() const
-    {
-      return *system;
-    }
     const AffineConstraints<double> &
     newton_constraints() const
     {
