@@ -43,6 +43,8 @@ namespace RingContact
           return make_saint_venant_kirchhoff(constants);
         case Kinematics::small_strain:
           return make_linear_elasticity(constants);
+        case Kinematics::logarithmic_strain:
+          return make_logarithmic_strain(constants);
       }
     return nullptr;
   }

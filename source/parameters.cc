@@ -515,11 +515,15 @@ namespace RingContact
                         "nu2 [-], -1 < nu2 < 0.5.");
       prm.declare_entry("Kinematics",
                         "finite strain",
-                        Patterns::Selection("finite strain|small strain"),
+                        Patterns::Selection(kinematics_names),
                         "finite strain: total Lagrangian Saint Venant-"
                         "Kirchhoff (Green-Lagrange strain, second Piola-"
                         "Kirchhoff stress; the original's GROT_GDEP); small "
-                        "strain: linear elasticity.");
+                        "strain: linear elasticity; logarithmic strain: "
+                        "Hencky, the linear law on the logarithmic strain "
+                        "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
+                        "stress the out-of-plane stress conjugate to it is "
+                        "zero).");
       prm.declare_entry("Plane assumption",
                         "plane stress",
                         Patterns::Selection("plane stress|plane strain"),
@@ -556,9 +560,7 @@ namespace RingContact
                 "Materials",
                 std::string("Poisson's ratio ") + name + " ring",
                 "must satisfy -1 < nu < 0.5, got " + to_text(nu));
-      kinematics = prm.get("Kinematics") == "finite strain" ?
-                     Kinematics::finite_strain :
-                     Kinematics::small_strain;
+      kinematics = kinematics_from_name(prm.get("Kinematics"));
       plane      = prm.get("Plane assumption") == "plane stress" ?
                      PlaneAssumption::plane_stress :
                      PlaneAssumption::plane_strain;

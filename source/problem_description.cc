@@ -234,14 +234,15 @@ namespace RingContact
                       "Degree of the displacement elements (1: Q1, 2: Q2).");
     prm.declare_entry("Kinematics",
                       "",
-                      Patterns::Selection("|finite strain|small strain"),
+                      Patterns::Selection(std::string("|") + kinematics_names),
                       "The body's kinematics; empty: that of "
                       "Materials/Kinematics. A body in small strain may "
                       "touch one in finite strain: the contact is then "
                       "written on the current configuration (it is "
                       "geometrically linear only when both bodies are in "
                       "small strain), and a pressure load on a body follows "
-                      "its surface when that body is in finite strain.");
+                      "its surface when that body is in finite or "
+                      "logarithmic strain.");
   }
 
   void
@@ -263,8 +264,7 @@ namespace RingContact
     degree = get_count(prm, subsection, "Displacement degree", 1, 4);
     const std::string kind = prm.get("Kinematics");
     inherits_kinematics    = kind.empty();
-    kinematics             = kind == "small strain" ? Kinematics::small_strain :
-                                                      Kinematics::finite_strain;
+    kinematics             = kinematics_from_name(kind);
   }
 
   // ------------------------------------------------------------------

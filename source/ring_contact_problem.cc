@@ -774,11 +774,11 @@ namespace RingContact
               const FiniteElement<2> &fe = cell->get_fe();
               const unsigned int      n  = fe.n_dofs_per_cell();
               const bool pressure = load.type == BoundaryLoad::Type::pressure;
-              // Each body's kinematics: a body in finite strain carries the
-              // pressure on its current surface.
+              // Each body's kinematics: a body in finite (or logarithmic)
+              // strain carries the pressure on its current surface.
               const bool follower =
                 bodies[body_of_fe_index[cell->active_fe_index()]]
-                  .material.kinematics == Kinematics::finite_strain;
+                  .material.kinematics != Kinematics::small_strain;
               dofs.resize(n);
               cell->get_dof_indices(dofs);
               face_matrix.reinit(n, n);

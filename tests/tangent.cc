@@ -24,6 +24,14 @@ using RingContactTests::check;
 
 namespace
 {
+  std::string
+  kinematics_name(const Kinematics kinematics)
+  {
+    return kinematics == Kinematics::finite_strain ? "finite strain" :
+           kinematics == Kinematics::small_strain  ? "small strain" :
+                                                     "logarithmic strain";
+  }
+
   void
   check_material(const PlaneAssumption plane,
                  const Kinematics      kinematics,
@@ -111,9 +119,7 @@ namespace
           << mapping_degree << "\nend\nsubsection Contact\n"
           << " set Smooth master normals = " << (smooth ? "true" : "false")
           << "\nend\nsubsection Materials\n"
-          << " set Kinematics = "
-          << (kinematics == Kinematics::finite_strain ? "finite strain" :
-                                                        "small strain")
+          << " set Kinematics = " << kinematics_name(kinematics)
           << "\nend\nsubsection Output\n set Print timing = false\n"
           << " set VTU interval = 0\nend\nsubsection Mesh\n"
           << " set Elements around = 12\n set Radial elements outer ring = 2\n"
@@ -238,9 +244,7 @@ namespace
       scheme + (pressure_loaded ? ", pressure on r = R1" : "") +
       (vertex ? ", at master vertices" : "") +
       (smooth ? ", smoothed normals" : "") + ", mapping degree " +
-      std::to_string(mapping_degree) + ", " +
-      (kinematics == Kinematics::finite_strain ? "finite strain" :
-                                                 "small strain");
+      std::to_string(mapping_degree) + ", " + kinematics_name(kinematics);
     RingContactTests::deallog_file
       << name << ": " << columns.size()
       << " columns of the Newton matrix match finite differences: "
@@ -254,6 +258,12 @@ namespace
 int
 main()
 {
+  check_material(PlaneAssumption::plane_stress,
+                 Kinematics::logarithmic_strain,
+                 "Hencky plane stress");
+  check_material(PlaneAssumption::plane_strain,
+                 Kinematics::logarithmic_strain,
+                 "Hencky plane strain");
   check_material(PlaneAssumption::plane_stress,
                  Kinematics::finite_strain,
                  "SVK plane stress");
@@ -279,4 +289,10 @@ main()
   check_system("Gauss 3", 1, Kinematics::finite_strain, false, false, true);
   check_system("Gauss 3", 2, Kinematics::finite_strain, false, true, true);
   check_system("nodal", 1, Kinematics::small_strain, false, false, true);
+  // Logarithmic strain (Hencky), and its follower pressure.
+  check_system("Gauss 3", 1, Kinematics::logarithmic_strain);
+  check_system(
+    "segment-based 2", 2, Kinematics::logarithmic_strain, false, true);
+  check_system(
+    "Gauss 3", 1, Kinematics::logarithmic_strain, false, false, true);
 }

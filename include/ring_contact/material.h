@@ -6,8 +6,11 @@
 // - Saint Venant-Kirchhoff in total Lagrangian form (Green-Lagrange strain
 //   E, second Piola-Kirchhoff stress S, the linear isotropic law;
 //   saint_venant_kirchhoff.cc), the original's GROT_GDEP;
-// - small-strain linear elasticity (linear_elasticity.cc).
-// Each in plane stress (S33 = 0) or plane strain (E33 = 0). Adding a law is
+// - small-strain linear elasticity (linear_elasticity.cc);
+// - Hencky: the linear law on the logarithmic strain ln(C) / 2, the
+//   current Code_Aster's GDEF_LOG (logarithmic_strain.cc).
+// Each in plane stress (the out-of-plane stress zero) or plane strain (E33 =
+// 0). Adding a law is
 // one new file with its class and one line in make_material_law()
 // (material.cc).
 #ifndef ring_contact_material_h
@@ -70,7 +73,7 @@ namespace RingContact
   };
 
   /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
-  /// linear elasticity for small strain.
+  /// linear elasticity for small strain, Hencky for logarithmic strain.
   std::shared_ptr<const MaterialLaw>
   make_material_law(const ElasticConstants &constants,
                     const Kinematics        kinematics);
@@ -82,6 +85,11 @@ namespace RingContact
   /// Small-strain linear elasticity (linear_elasticity.cc).
   std::shared_ptr<const MaterialLaw>
   make_linear_elasticity(const ElasticConstants &constants);
+
+  /// Hencky, the linear law on the logarithmic strain
+  /// (logarithmic_strain.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_logarithmic_strain(const ElasticConstants &constants);
 
   /// A body's material: its constants and its law, a value that can be
   /// copied and stored (the law is shared, it has no state).

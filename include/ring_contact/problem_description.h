@@ -56,8 +56,24 @@ namespace RingContact
   enum class Kinematics
   {
     finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
-    small_strain   ///< linear elasticity
+    small_strain,  ///< linear elasticity
+    /// Hencky: the linear law on the logarithmic strain ln(C) / 2
+    /// (GDEF_LOG)
+    logarithmic_strain
   };
+
+  /// The names of the kinematics in a .prm, as a Patterns::Selection.
+  constexpr const char *kinematics_names =
+    "finite strain|small strain|logarithmic strain";
+
+  /// The kinematics of one of kinematics_names.
+  inline Kinematics
+  kinematics_from_name(const std::string &name)
+  {
+    return name == "small strain"       ? Kinematics::small_strain :
+           name == "logarithmic strain" ? Kinematics::logarithmic_strain :
+                                          Kinematics::finite_strain;
+  }
 
   /// One body of a general problem: a physical group of the mesh.
   struct BodyParameters
