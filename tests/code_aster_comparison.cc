@@ -8,32 +8,14 @@
 // (plane stress and plane strain, ssnp152b.comm of the same version) within
 // 1e-8, C at s = 1 within 1e-7. D, E-H print no value in that version (E-H
 // would differ anyway: 8-node elements and straight interior edges there).
-#include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
-
-#include "run_problem.h"
-
-#include <cmath>
-#include <iomanip>
-
-using namespace RingContact;
-using RingContactTests::check;
+#include "code_aster.h"
 
 namespace
 {
   std::vector<double>
   pressures(const std::string &modelisation, const std::string &scheme)
   {
-    std::ostringstream prm;
-    prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/" << modelisation
-        << ".prm\nsubsection Contact\n set Integration schemes = " << scheme
-        << "\n set Smooth master normals = true\n"
-        << " set Reported pressure = nominal\nend\n";
-    const auto history = RingContactTests::run_problem("aster", prm.str());
-    std::vector<double> p;
-    for (const auto &row : history)
-      p.push_back(row.pressure_A);
-    return p;
+    return RingContactTests::pressures_at_A(modelisation.back(), scheme);
   }
 
   void
@@ -42,17 +24,8 @@ namespace
           const std::vector<std::pair<unsigned int, double>> &aster,
           const double                                        tolerance)
   {
-    double largest = 0;
-    for (const auto &[step, value] : aster)
-      largest = std::max(largest, std::abs(ours.at(step - 1) - value) / value);
-    RingContactTests::deallog_file
-      << what << ": " << aster.size()
-      << " values of Code_Aster reproduced within " << tolerance << ": "
-      << (largest < tolerance ? "yes" : "NO") << std::endl;
-    std::cout << what << ": largest relative difference " << largest
-              << std::endl;
-    check(largest < tolerance,
-          what + ": largest relative difference " + std::to_string(largest));
+    RingContactTests::compare_with_code_aster(
+      "Code_Aster", what, ours, aster, tolerance);
   }
 } // namespace
 
