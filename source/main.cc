@@ -240,10 +240,20 @@ main(int argc, char **argv)
   // The other processes' log goes nowhere.
   std::ostream  null_stream(nullptr);
   std::ostream &out = root ? std::cout : null_stream;
-  // For the error barrier, apart from the run's own communication.
-  MPI_Comm errors = MPI_COMM_NULL;
+  // For the error barrier, apart from the run's own communication; freed
+  // before MPI ends (declared after `mpi`).
+  struct OwnCommunicator
+  {
+    MPI_Comm communicator = MPI_COMM_NULL;
+    ~OwnCommunicator()
+    {
+      if (communicator != MPI_COMM_NULL)
+        MPI_Comm_free(&communicator);
+    }
+  } error_communicator;
   if (n > 1)
-    MPI_Comm_dup(world, &errors);
+    MPI_Comm_dup(world, &error_communicator.communicator);
+  const MPI_Comm errors = error_communicator.communicator;
 
   // An error: said once and a clean exit when every process met it; said
   // by the process that met it and the run aborted otherwise (the others
@@ -253,8 +263,6 @@ main(int argc, char **argv)
       {
         if (root)
           std::cerr << "ring_contact: error: " << message << std::endl;
-        if (errors != MPI_COMM_NULL)
-          MPI_Comm_free(&errors);
         return 1;
       }
     std::cerr << "ring_contact: error (process " << this_process(world)
@@ -305,7 +313,9 @@ main(int argc, char **argv)
             break;
           RingContactProblem problem(parameters, scheme, out, world);
           problem.set_step_observer([&](const HistoryRow &row) {
-            if (history_file)
+            // Every process takes part (process 0's failure is all of
+            // theirs): the condition is the same on all of them.
+            if (output.write_history)
               on_process_zero(world, [&]() { history_file->append(row); });
             stop = stop_signal != 0;
             if (n > 1)
@@ -360,8 +370,6 @@ main(int argc, char **argv)
                             " in " + output.directory :
                             std::string())
                       << std::endl;
-          if (errors != MPI_COMM_NULL)
-            MPI_Comm_free(&errors);
           return 128 + signal;
         }
       if (output.print_timing)
@@ -379,8 +387,6 @@ main(int argc, char **argv)
       const bool pass = print_verdicts(out, verdicts);
       if (!solved)
         out << "A load step could not be solved (see above).\n";
-      if (errors != MPI_COMM_NULL)
-        MPI_Comm_free(&errors);
       return (pass && solved) ? 0 : 1;
     }
   catch (const std::bad_alloc &)
