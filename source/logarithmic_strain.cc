@@ -30,7 +30,9 @@
 // spectral formulas divide by zero); near it they are summed as series in
 // u^2. And u^2 is computed without cancellation: kappa - 2 J = (F11 -
 // F22)^2 + (F12 + F21)^2 = (H11 - H22)^2 + (H12 + H21)^2 exactly, so
-// u^2 = (kappa - 2 J)(kappa + 2 J) / kappa^2; ln J = log1p(tr H + det H).
+// u^2 = (kappa - 2 J)(kappa + 2 J) / kappa^2; ln J = log1p(tr H + det H);
+// N = (2 J (cof F - F) + (kappa - 2 J) cof F) / (J kappa), cof F - F
+// written in H.
 // At small strain P -> lambda tr(H) I + mu (H + H^T), linear elasticity.
 #include <ring_contact/material.h>
 
@@ -56,8 +58,22 @@ namespace RingContact
         kappa              = 2 * J + shear;
         u2                 = shear * (kappa + 2 * J) / (kappa * kappa);
         r                  = 1 - u2;
-        G                  = transpose(invert(F));
-        N                  = G - (2 / kappa) * F;
+        // G = cof(F) / J; N = G - 2 F / kappa = (2 J (cof(F) - F) +
+        // (kappa - 2 J) cof(F)) / (J kappa), with cof(F) - F written in H:
+        // at small strain N is O(H), and G - 2 F / kappa would leave it to
+        // the round-off of O(1) terms (steel at p = 1e2: a stress noise of
+        // 1e-7 of the stress, and Newton stalled there).
+        Tensor<2, 2> cofactor, cofactor_minus_F;
+        cofactor[0][0]         = 1 + H[1][1];
+        cofactor[0][1]         = -H[1][0];
+        cofactor[1][0]         = -H[0][1];
+        cofactor[1][1]         = 1 + H[0][0];
+        cofactor_minus_F[0][0] = H[1][1] - H[0][0];
+        cofactor_minus_F[0][1] = -d2;
+        cofactor_minus_F[1][0] = -d2;
+        cofactor_minus_F[1][1] = H[0][0] - H[1][1];
+        G                      = cofactor / J;
+        N = (2 * J * cofactor_minus_F + shear * cofactor) / (J * kappa);
         // w = -atanh(u) / u and w' = dw/dr.
         if (u2 < 1e-2)
           {

@@ -6,7 +6,7 @@
 // stress, for stretches up to 2.7 and 0.4, shears, rotations, a pure
 // dilatation (the two eigenvalues equal, where the spectral formulas divide
 // by zero) and states within 1e-9 of it (the law's series branch), and
-// 1e-7 strains:
+// 1e-7 and 1e-9 strains:
 // - P against tau F^-T, relative to |P| (plane stress: lambda* in place of
 //   lambda, the out-of-plane stress conjugate to ln(F33) zero);
 // - the tangent dP/dH against central differences of P;
@@ -14,8 +14,9 @@
 //   symmetric;
 // - the out of plane: plane strain sigma33 = lambda ln J / J; plane stress
 //   T33 = lambda (ln J + ln F33) + 2 mu ln F33 = 0;
-// - at 1e-7 strains, linear elasticity (to 1e-6, the size of the
-//   quadratic terms).
+// - at 1e-7 and 1e-9 strains, linear elasticity to 10 |H| (relative; the
+//   quadratic terms are of that size; before N was written in H, the
+//   round-off at 1e-9 was 100 times that).
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <ring_contact/material.h>
@@ -98,6 +99,7 @@ main()
   add("dilatation 1.2 and 1e-9 shear", 0.2, 1e-9, 0, 0.2);
   add("dilatation 1.2 and 1e-5 stretch", 0.2 + 1e-5, 0, 0, 0.2);
   add("1e-7 strain", 1e-7, 3e-8, -2e-8, -5e-8);
+  add("1e-9 strain", 1e-9, 3e-10, -2e-10, -5e-10);
 
   const double E = 1e9, nu = 0.3;
   for (const auto plane :
@@ -124,8 +126,10 @@ main()
               const Tensor<2, 2> linear =
                 c.lambda * trace(H) * unit_symmetric_tensor<2>() +
                 c.mu * (H + transpose(H));
-              worst_linear =
-                std::max(worst_linear, norm_of(P - linear) / scale);
+              // Relative to the strain: the quadratic terms are of its size,
+              // the round-off of a law that cancels O(1) terms far above.
+              worst_linear = std::max(worst_linear,
+                                      norm_of(P - linear) / scale / norm_of(H));
             }
           else
             worst_stress = std::max(worst_stress, norm_of(P - P_ref) / scale);
@@ -204,8 +208,8 @@ main()
           << ", Cauchy stress symmetric "
           << (worst_symmetry < 1e-13 ? "< 1e-13" : "FAILS") << ", out of plane "
           << (worst_out_of_plane < 1e-12 ? "< 1e-12" : "FAILS")
-          << ", at 1e-7 strain linear elasticity "
-          << (worst_linear < 1e-6 ? "< 1e-6" : "FAILS") << std::endl;
+          << ", at 1e-7 and 1e-9 strain linear elasticity to 10 |H| "
+          << (worst_linear < 10 ? "yes" : "FAILS") << std::endl;
       std::cout << plane_name << ": stress " << worst_stress << ", tangent "
                 << worst_tangent << ", objectivity " << worst_objectivity
                 << ", symmetry " << worst_symmetry << ", out of plane "
@@ -217,7 +221,7 @@ main()
       check(worst_symmetry < 1e-13, plane_name + ": sigma is symmetric");
       check(worst_out_of_plane < 1e-12,
             plane_name + ": the out-of-plane condition");
-      check(worst_linear < 1e-6,
+      check(worst_linear < 10,
             plane_name + ": linear elasticity at small strain");
     }
 }
