@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace RingContact
@@ -57,6 +58,14 @@ namespace RingContact
       return p;
     }
 
+    // Friction: the last converged solution and the surfaces in that state.
+    struct ConvergedState
+    {
+      const Vector<double> &solution;
+      const ContactSurface &slave;
+      const ContactSurface &master;
+    };
+
     // The contact element of one slave point and its partner: the local
     // unknowns as AD variables, then the slave point, the partner and the
     // normal, the residual, and its value and exact derivative scattered
@@ -69,7 +78,8 @@ namespace RingContact
                      const ContactSurface &master,
                      const ContactPoint   &point,
                      const bool            current,
-                     const bool            segment_based)
+                     const bool            segment_based,
+                     const ConvergedState *converged = nullptr)
           : slave(slave)
           , master(master)
           , point(point)
@@ -79,6 +89,7 @@ namespace RingContact
           , current(current)
           , smooth(master.smooths_normals())
           , segment_based(segment_based)
+          , converged(converged)
       {}
 
       void
@@ -87,10 +98,24 @@ namespace RingContact
       evaluate_slave_point();
       void
       evaluate_partner_and_normal();
+      AD
+      slip() const;
       std::vector<AD>
       residual(
         const double                                        c,
-        const std::function<bool(types::global_dof_index)> &active) const;
+        const std::function<bool(types::global_dof_index)> &active,
+        const std::function<bool(types::global_dof_index)> &sticks) const;
+      /// Phi_k at the slave point and the local index of each multiplier.
+      AD
+      multiplier_basis(const unsigned int k) const
+      {
+        return Phi_eta[k];
+      }
+      AD
+      length_element() const
+      {
+        return ds;
+      }
       void
       scatter(std::vector<AD>                 &residual,
               const AffineConstraints<double> &constraints,
@@ -119,19 +144,22 @@ namespace RingContact
       const bool current;
       const bool smooth;
       const bool segment_based;
+      /// Friction: the last converged state (nullptr: frictionless).
+      const ConvergedState *converged;
 
       // Local layout: slave u_x, u_y, then u_x, u_y of each master
-      // segment, then the multipliers.
+      // segment, then the multipliers, then (friction) the tangential
+      // tractions.
       std::vector<types::global_dof_index> local_dofs;
       std::map<unsigned int, unsigned int> offset_of; // segment -> its u_x
-      unsigned int                         ns = 0, nl = 0, lambda_offset = 0;
-      std::vector<AD>                      u;
+      unsigned int    ns = 0, nl = 0, lambda_offset = 0, tangential_offset = 0;
+      std::vector<AD> u;
 
       // The slave point.
       std::vector<double> N, dN, ddN, Phi, dPhi, ddPhi;
-      AD                  d_eta, ds, lambda;
+      AD                  d_eta, ds, lambda, lambda_t;
       ADPoint             xs;
-      std::vector<AD>     Phi_eta;
+      std::vector<AD>     Phi_eta, N_eta;
 
       // The partner and the normal.
       std::vector<double> Nm, dNm, ddNm;
@@ -160,6 +188,13 @@ namespace RingContact
       else if (projection.at_vertex)
         master_segments.push_back(
           m_seg.neighbours[static_cast<unsigned int>(projection.t)]);
+      // Friction: the old partner, whose motion the slip is measured
+      // against.
+      if (converged &&
+          std::find(master_segments.begin(),
+                    master_segments.end(),
+                    point.old_projection.segment) == master_segments.end())
+        master_segments.push_back(point.old_projection.segment);
 
       ns = s_seg.dofs_x.size();
       nl = s_seg.multiplier_dofs.size();
@@ -184,6 +219,11 @@ namespace RingContact
       local_dofs.insert(local_dofs.end(),
                         s_seg.multiplier_dofs.begin(),
                         s_seg.multiplier_dofs.end());
+      tangential_offset = local_dofs.size();
+      if (converged)
+        local_dofs.insert(local_dofs.end(),
+                          s_seg.tangential_dofs.begin(),
+                          s_seg.tangential_dofs.end());
       const unsigned int n = local_dofs.size();
       u.resize(n);
       for (unsigned int i = 0; i < n; ++i)
@@ -306,8 +346,9 @@ namespace RingContact
         return values;
       };
       const std::vector<AD> G_eta = expanded(G, dG), dG_eta = expanded(dG, ddG);
-      const std::vector<AD> N_eta = expanded(N, dN), dN_eta = expanded(dN, ddN);
-      xs = ADPoint();
+      N_eta                        = expanded(N, dN);
+      const std::vector<AD> dN_eta = expanded(dN, ddN);
+      xs                           = ADPoint();
       SurfaceKernel::add_interpolation(xs,
                                        G.size(),
                                        G_eta.data(),
@@ -331,12 +372,75 @@ namespace RingContact
            point.w;
       const AD *lambda_k = &u[lambda_offset];
       Phi_eta.resize(nl);
-      lambda = 0;
+      lambda   = 0;
+      lambda_t = 0;
       for (unsigned int k = 0; k < nl; ++k)
         {
           Phi_eta[k] = Phi[k] + dPhi[k] * d_eta;
           lambda += Phi_eta[k] * lambda_k[k];
+          if (converged)
+            lambda_t += Phi_eta[k] * u[tangential_offset + k];
         }
+    }
+
+    // Friction: the slip of the slave point in the step, the tangential
+    // part of its displacement increment relative to that of its old
+    // partner's material point, s = tau . [(u_s - u_s,n) - (u_m(xi_n) -
+    // u_m,n(xi_n))], tau = e_z x n (see contact_interface.h).
+    AD
+    ContactElement::slip() const
+    {
+      const Vector<double> &u_n = converged->solution;
+      ADVector              relative;
+      for (unsigned int i = 0; i < ns; ++i)
+        {
+          relative[0] += N_eta[i] * (u[i] - u_n(s_seg.dofs_x[i]));
+          relative[1] += N_eta[i] * (u[ns + i] - u_n(s_seg.dofs_y[i]));
+        }
+      // The old partner xi_n of the moving point eta0 + d eta (segment-
+      // based pieces): xi_n + d xi_n with d xi_n = -(dr/dx . x_s,n') d eta /
+      // (dr/dxi), r the projection condition in the old configuration.
+      const Projection &old   = point.old_projection;
+      AD                dxi_n = 0;
+      if (current && !old.clamped && !old.at_vertex)
+        {
+          const CurvePoint xs =
+            converged->slave.current_point(point.slave_segment, point.eta);
+          const CurvePoint xm =
+            converged->master.current_point(old.segment, old.t);
+          const Tensor<1, 2> d = xs.x - xm.x;
+          double             slope, along;
+          if (smooth)
+            {
+              const Tensor<1, 2> n0 =
+                converged->master.vertex_normal(old.segment, 0);
+              const Tensor<1, 2> n1 =
+                converged->master.vertex_normal(old.segment, 1);
+              slope =
+                SurfaceKernel::smoothed_normal_residual(d, xm, n0, n1, old.t)
+                  .second;
+              along = SurfaceKernel::cross(
+                xs.dx, SurfaceKernel::smoothed_direction(n0, n1, old.t));
+            }
+          else
+            {
+              slope = SurfaceKernel::closest_point_residual(d, xm).second;
+              along = xs.dx * xm.dx;
+            }
+          dxi_n = -along * d_eta / slope;
+        }
+      const auto         &seg = master.segments()[old.segment];
+      const unsigned int  nm  = seg.dofs_x.size();
+      const unsigned int  o   = offset_of.at(old.segment);
+      std::vector<double> Nb, dNb, ddNb;
+      master.displacement_basis().evaluate(old.t, Nb, dNb, ddNb);
+      for (unsigned int i = 0; i < nm; ++i)
+        {
+          const AD Nb_xi = Nb[i] + dNb[i] * dxi_n;
+          relative[0] -= Nb_xi * (u[o + i] - u_n(seg.dofs_x[i]));
+          relative[1] -= Nb_xi * (u[o + nm + i] - u_n(seg.dofs_y[i]));
+        }
+      return -normal[1] * relative[0] + normal[0] * relative[1];
     }
 
     // The partner and the normal. The master point at the converged
@@ -388,23 +492,50 @@ namespace RingContact
     std::vector<AD>
     ContactElement::residual(
       const double                                        c,
-      const std::function<bool(types::global_dof_index)> &active) const
+      const std::function<bool(types::global_dof_index)> &active,
+      const std::function<bool(types::global_dof_index)> &sticks) const
     {
-      std::vector<AD> r(local_dofs.size(), AD(0.0));
-      for (unsigned int i = 0; i < ns; ++i)
-        for (unsigned int dim = 0; dim < 2; ++dim)
-          r[dim * ns + i] = -lambda * (N[i] + dN[i] * d_eta) * normal[dim] * ds;
+      // The traction the master exerts on the slave, per current length:
+      // lambda n, and with friction - lambda_t tau, tau = (-n_y, n_x).
+      std::vector<AD>    r(local_dofs.size(), AD(0.0));
       const unsigned int nm = m_seg.dofs_x.size();
       const unsigned int mo = offset_of.at(projection.segment);
+      for (unsigned int i = 0; i < ns; ++i)
+        for (unsigned int dim = 0; dim < 2; ++dim)
+          r[dim * ns + i] = -lambda * N_eta[i] * normal[dim] * ds;
       for (unsigned int i = 0; i < nm; ++i)
         {
           const AD Nm_xi = Nm[i] + dNm[i] * dxi;
           for (unsigned int dim = 0; dim < 2; ++dim)
             r[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
         }
+      if (converged)
+        {
+          ADVector tau;
+          tau[0] = -normal[1];
+          tau[1] = normal[0];
+          for (unsigned int i = 0; i < ns; ++i)
+            for (unsigned int dim = 0; dim < 2; ++dim)
+              r[dim * ns + i] += lambda_t * N_eta[i] * tau[dim] * ds;
+          for (unsigned int i = 0; i < nm; ++i)
+            {
+              const AD Nm_xi = Nm[i] + dNm[i] * dxi;
+              for (unsigned int dim = 0; dim < 2; ++dim)
+                r[mo + dim * nm + i] -= lambda_t * Nm_xi * tau[dim] * ds;
+            }
+        }
       for (unsigned int k = 0; k < nl; ++k)
         if (active(s_seg.multiplier_dofs[k]))
           r[lambda_offset + k] = c * Phi_eta[k] * gap * ds;
+      // Friction: the sticking nodes' rows c s~_k (the others are written
+      // per node, see ContactInterface::assemble()).
+      if (converged)
+        {
+          const AD s = slip();
+          for (unsigned int k = 0; k < nl; ++k)
+            if (sticks(s_seg.multiplier_dofs[k]))
+              r[tangential_offset + k] = c * Phi_eta[k] * s * ds;
+        }
       return r;
     }
 
@@ -449,23 +580,38 @@ namespace RingContact
     const auto is_active = [this](const types::global_dof_index dof) {
       return static_cast<bool>(active[multiplier_index.at(dof)]);
     };
-    const auto process = this_process(system.get_communicator());
+    const auto sticks = [this](const types::global_dof_index dof) {
+      const unsigned int k = multiplier_index.at(dof);
+      return active[k] && slip_sign[k] == 0;
+    };
+    const bool friction = friction_coefficient > 0;
+    const auto process  = this_process(system.get_communicator());
+    const std::optional<ConvergedState> converged =
+      friction ?
+        std::optional<ConvergedState>(ConvergedState{converged_solution,
+                                                     *converged_slave,
+                                                     *converged_master}) :
+        std::nullopt;
     for (const auto &point : points)
       {
         if (slave.segments()[point.slave_segment].cell->subdomain_id() !=
             process)
           continue;
-        ContactElement element(
-          slave, master, point, !geometrically_linear, segment_based);
+        ContactElement element(slave,
+                               master,
+                               point,
+                               !geometrically_linear,
+                               segment_based,
+                               converged ? &*converged : nullptr);
         element.gather_unknowns(solution);
         element.evaluate_slave_point();
         element.evaluate_partner_and_normal();
         std::vector<AD> residual =
-          element.residual(complementarity_constant, is_active);
+          element.residual(complementarity_constant, is_active, sticks);
         element.scatter(residual, constraints, system);
       }
 
-    // Open nodes: w_k lambda_k = 0.
+    // Open nodes: w_k lambda_k = 0 (and w_k lambda_t,k = 0).
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
       if (!active[k] && system.owned_rows().is_element(multiplier_dof_list[k]))
         {
@@ -474,5 +620,56 @@ namespace RingContact
                               reference_weight[k],
                               -reference_weight[k] * solution(dof));
         }
+    if (!friction)
+      return;
+    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+      {
+        const auto   t = tangential_dof_list[k], n = multiplier_dof_list[k];
+        const double w = reference_weight[k];
+        if (!system.owned_rows().is_element(t))
+          continue;
+        if (!active[k])
+          system.add_diagonal(t, w, -w * solution(t));
+        else if (slip_sign[k] != 0)
+          {
+            // Sliding: w lambda_t - sign mu w lambda = 0.
+            const double       b = slip_sign[k] * friction_coefficient * w;
+            FullMatrix<double> matrix(2, 2);
+            Vector<double>     rhs(2);
+            matrix(0, 0) = w;
+            matrix(0, 1) = -b;
+            rhs(0)       = -(w * solution(t) - b * solution(n));
+            system.add(constraints, matrix, rhs, {t, n});
+          }
+      }
+  }
+
+  // s~_k = sum Phi_k s ds over the slave points, from the same contact
+  // element as the residual (its values only).
+  void
+  ContactInterface::compute_weighted_slips(const Vector<double> &solution)
+  {
+    std::fill(weighted_slip.begin(), weighted_slip.end(), 0.0);
+    const ConvergedState converged{converged_solution,
+                                   *converged_slave,
+                                   *converged_master};
+    for (const auto &point : points)
+      {
+        ContactElement element(slave,
+                               master,
+                               point,
+                               !geometrically_linear,
+                               segment_based,
+                               &converged);
+        element.gather_unknowns(solution);
+        element.evaluate_slave_point();
+        element.evaluate_partner_and_normal();
+        const double s   = element.slip().val();
+        const double ds  = element.length_element().val();
+        const auto  &seg = slave.segments()[point.slave_segment];
+        for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
+          weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
+            element.multiplier_basis(k).val() * s * ds;
+      }
   }
 } // namespace RingContact

@@ -34,6 +34,7 @@ namespace RingContact
                                    parameters.complementarity_constant :
                                    largest_youngs_modulus /
                                      slave.min_segment_length())
+      , friction_coefficient(parameters.friction_coefficient)
       , geometrically_linear(geometrically_linear)
       , segment_based(scheme.type == ContactIntegration::segment_based)
   {
@@ -58,6 +59,13 @@ namespace RingContact
                 multiplier_index[node] = multiplier_dof_list.size();
                 multiplier_dof_list.push_back(node);
                 reference_weight.push_back(0.0);
+                if (friction_coefficient > 0)
+                  {
+                    AssertThrow(segment.tangential_dofs.size() ==
+                                  segment.multiplier_dofs.size(),
+                                ExcInternalError());
+                    tangential_dof_list.push_back(segment.tangential_dofs[k]);
+                  }
               }
             multiplier_index[dof] = multiplier_index[node];
             node_sites[node].emplace_back(s, slave.multiplier_nodes()[k]);
@@ -77,6 +85,8 @@ namespace RingContact
     weighted_gap.assign(multiplier_dof_list.size(), 0.0);
     segment_length = slave.min_segment_length();
     active.assign(multiplier_dof_list.size(), true);
+    weighted_slip.assign(multiplier_dof_list.size(), 0.0);
+    slip_sign.assign(multiplier_dof_list.size(), 0);
   }
 
   unsigned int
@@ -129,7 +139,90 @@ namespace RingContact
           ++n_changed;
         active[k] = closed;
       }
+    return n_changed + update_friction(solution);
+  }
+
+  void
+  ContactInterface::accept_state(const Vector<double> &solution)
+  {
+    if (friction_coefficient == 0)
+      return;
+    converged_solution = solution;
+    converged_slave    = std::make_unique<ContactSurface>(slave);
+    converged_master   = std::make_unique<ContactSurface>(master);
+    const Vector<double> zero(solution.size());
+    converged_slave->update(geometrically_linear ? zero : solution);
+    converged_master->update(geometrically_linear ? zero : solution);
+  }
+
+  unsigned int
+  ContactInterface::update_friction(const Vector<double> &solution)
+  {
+    if (friction_coefficient == 0)
+      return 0;
+    // Before the first converged state: the reference configuration.
+    if (!converged_master)
+      accept_state(Vector<double>(solution.size()));
+    // Each point's partner at the last converged state: its old position
+    // projected onto the old master (small strain: both in the reference
+    // configuration, the current pairing itself).
+    for (auto &point : points)
+      point.old_projection =
+        geometrically_linear ?
+          point.projection :
+          converged_master->project(
+            converged_slave->current_point(point.slave_segment, point.eta).x,
+            point.projection.segment);
+    compute_weighted_slips(solution);
+
+    // The states of the closed nodes from the trial tractions.
+    const double c         = complementarity_constant;
+    unsigned int n_changed = 0;
+    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+      {
+        int state = 0;
+        if (active[k])
+          {
+            const double w = reference_weight[k];
+            const double trial =
+              w * solution(tangential_dof_list[k]) + c * weighted_slip[k];
+            const double bound = friction_coefficient *
+                                 std::max(0.0,
+                                          w * solution(multiplier_dof_list[k]) -
+                                            c * weighted_gap[k]);
+            // A sliding node at the bound stays sliding: at the start of
+            // a step (s~ = 0) a node that slid has |T| = B to round-off,
+            // and round-off must not decide its state (under MPI it took
+            // another Newton iteration than one process).
+            const double margin = 1e-9 * bound;
+            if (slip_sign[k] != 0 && slip_sign[k] * trial >= bound - margin)
+              state = slip_sign[k];
+            else if (std::abs(trial) > bound + margin)
+              state = trial > 0 ? 1 : -1;
+          }
+        if (state != slip_sign[k])
+          ++n_changed;
+        slip_sign[k] = state;
+      }
     return n_changed;
+  }
+
+  unsigned int
+  ContactInterface::n_slipping() const
+  {
+    unsigned int n = 0;
+    for (unsigned int k = 0; k < active.size(); ++k)
+      n += active[k] && slip_sign[k] != 0;
+    return n;
+  }
+
+  types::global_dof_index
+  ContactInterface::tangential_dof(
+    const types::global_dof_index multiplier_dof) const
+  {
+    if (friction_coefficient == 0)
+      return numbers::invalid_dof_index;
+    return tangential_dof_list[multiplier_index.at(multiplier_dof)];
   }
 
   template <typename Projector>
@@ -311,6 +404,11 @@ namespace RingContact
         if (pattern_pairs.count(
               {point.slave_segment, point.projection.segment}) == 0)
           return false;
+        // Friction: the old partner enters through the slip.
+        if (friction_coefficient > 0 &&
+            pattern_pairs.count(
+              {point.slave_segment, point.old_projection.segment}) == 0)
+          return false;
         // The neighbours enter through vertex and smoothed normals.
         for (const unsigned int b :
              master.segments()[point.projection.segment].neighbours)
@@ -331,6 +429,9 @@ namespace RingContact
     for (const auto &point : points)
       {
         pattern_pairs.insert({point.slave_segment, point.projection.segment});
+        if (friction_coefficient > 0)
+          pattern_pairs.insert(
+            {point.slave_segment, point.old_projection.segment});
         for (const unsigned int m :
              master.segments()[point.projection.segment].neighbours)
           if (m != numbers::invalid_unsigned_int)
@@ -343,7 +444,8 @@ namespace RingContact
         if (dofs.empty())
           for (const auto *list : {&slave.segments()[s].dofs_x,
                                    &slave.segments()[s].dofs_y,
-                                   &slave.segments()[s].multiplier_dofs})
+                                   &slave.segments()[s].multiplier_dofs,
+                                   &slave.segments()[s].tangential_dofs})
             dofs.insert(dofs.end(), list->begin(), list->end());
         for (const auto *list :
              {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})

@@ -159,6 +159,8 @@ namespace RingContact
                   }
                 else if (component == Components::uy)
                   segment.dofs_y.push_back(face_dofs[i]);
+                else if (component == Components::tangential)
+                  segment.tangential_dofs.push_back(face_dofs[i]);
                 else
                   {
                     segment.multiplier_dofs.push_back(face_dofs[i]);

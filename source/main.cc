@@ -293,6 +293,10 @@ main(int argc, char **argv)
               std::vector<std::string> columns;
               for (const auto &check : parameters.problem.checks)
                 columns.push_back(check.column());
+              if (parameters.contact.friction_coefficient > 0)
+                for (const char *column :
+                     {"tangential_traction_A", "slipping_nodes"})
+                  columns.emplace_back(column);
               history_file =
                 std::make_unique<HistoryFile>(output.directory + "/history.csv",
                                               columns);
@@ -379,9 +383,9 @@ main(int argc, char **argv)
             n > 1 ? dealii::Utilities::MPI::max(peak_memory(), world) :
                     peak_memory();
           out << "Peak memory: " << (peak + (1 << 19)) / (1 << 20) << " MB"
-              << (n > 1 ? " (the largest of " + std::to_string(n) +
-                            " processes)" :
-                          std::string())
+              << (n > 1 ?
+                    " (the largest of " + std::to_string(n) + " processes)" :
+                    std::string())
               << "\n";
         }
       const bool pass = print_verdicts(out, verdicts);

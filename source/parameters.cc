@@ -674,6 +674,13 @@ namespace RingContact
                         "set, not the converged solution. 0: automatic, the "
                         "largest Young's modulus over the smallest slave "
                         "segment length.");
+      prm.declare_entry(
+        "Friction coefficient",
+        "0",
+        Patterns::Double(0),
+        "Coulomb's mu: the tangential traction |t| <= mu p, sticking below "
+        "the bound and opposed to the slip at it (a second multiplier on "
+        "the slave surface). 0: frictionless, without that multiplier.");
       prm.declare_entry("Reported pressure",
                         "Cauchy",
                         Patterns::Selection("Cauchy|nominal"),
@@ -721,11 +728,12 @@ namespace RingContact
       smooth_master_normals = prm.get_bool("Smooth master normals");
       complementarity_constant =
         get_double(prm, "Contact", "Complementarity constant");
-      reported_pressure = prm.get("Reported pressure") == "Cauchy" ?
-                            PressureMeasure::cauchy :
-                            PressureMeasure::nominal;
-      const auto xy     = get_point(prm, "Contact", "Probe point");
-      probe_point       = Point<2>(xy[0], xy[1]);
+      friction_coefficient = get_double(prm, "Contact", "Friction coefficient");
+      reported_pressure    = prm.get("Reported pressure") == "Cauchy" ?
+                               PressureMeasure::cauchy :
+                               PressureMeasure::nominal;
+      const auto xy        = get_point(prm, "Contact", "Probe point");
+      probe_point          = Point<2>(xy[0], xy[1]);
     }
     prm.leave_subsection();
   }
@@ -1286,6 +1294,11 @@ namespace RingContact
             "Loading",
             "= pressure needs the whole rings: a sector leaves its rigid "
             "rotation free (set Mesh/Sector elements = 0)");
+    require(contact.friction_coefficient == 0 || mesh.sector_elements == 0,
+            "Contact",
+            "Friction coefficient",
+            "> 0 needs the whole rings: friction is not implemented with "
+            "cyclic symmetry (set Mesh/Sector elements = 0)");
     require(load.loading != Loading::pressure ||
               mesh.source != MeshSource::patch_test,
             "Load program",

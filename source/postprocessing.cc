@@ -430,6 +430,7 @@ namespace RingContact
     {
       return {DataComponentInterpretation::component_is_part_of_vector,
               DataComponentInterpretation::component_is_part_of_vector,
+              DataComponentInterpretation::component_is_scalar,
               DataComponentInterpretation::component_is_scalar};
     }
   } // namespace
@@ -567,7 +568,8 @@ namespace RingContact
   {
     const std::vector<std::string> names = {"displacement",
                                             "displacement",
-                                            "contact_pressure"};
+                                            "contact_pressure",
+                                            "tangential_traction"};
 
     SlaveFaces faces(slave_boundary_ids);
     faces.attach_dof_handler(dof_handler);

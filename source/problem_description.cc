@@ -375,6 +375,8 @@ namespace RingContact
       {
         case ProblemQuantity::contact_pressure:
           return "pressure" + at();
+        case ProblemQuantity::tangential_traction:
+          return "tangential traction" + at();
         case ProblemQuantity::contact_half_width:
           return "contact half-width";
         case ProblemQuantity::resultant_force_x:
@@ -404,6 +406,8 @@ namespace RingContact
       {
         case ProblemQuantity::contact_pressure:
           return prefix + "_contact_pressure";
+        case ProblemQuantity::tangential_traction:
+          return prefix + "_tangential_traction";
         case ProblemQuantity::contact_half_width:
           return prefix + "_contact_half_width";
         case ProblemQuantity::resultant_force_x:
@@ -426,11 +430,15 @@ namespace RingContact
     prm.declare_entry(
       "Quantity",
       "none",
-      Patterns::Selection("none|contact pressure|contact half-width|"
+      Patterns::Selection("none|contact pressure|tangential traction|"
+                          "contact half-width|"
                           "resultant force x|resultant force y|"
                           "displacement x|displacement y"),
       "Scenario = general: none (slot not used); contact pressure at the "
       "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
+      "tangential traction there (friction: Cauchy, on the tangent e_z x n "
+      "of the master's outward normal n; it has the sign of the slave's "
+      "slip) [Pa]; "
       "contact half-width: the largest distance from 'Point' to which the "
       "slave surface is in contact, to half a segment (midway between the "
       "last node with positive pressure and the next open one) [m]; "
@@ -477,13 +485,14 @@ namespace RingContact
     name                   = subsection;
     const std::string what = prm.get("Quantity");
     quantity =
-      what == "none"               ? ProblemQuantity::none :
-      what == "contact pressure"   ? ProblemQuantity::contact_pressure :
-      what == "contact half-width" ? ProblemQuantity::contact_half_width :
-      what == "resultant force x"  ? ProblemQuantity::resultant_force_x :
-      what == "resultant force y"  ? ProblemQuantity::resultant_force_y :
-      what == "displacement x"     ? ProblemQuantity::displacement_x :
-                                     ProblemQuantity::displacement_y;
+      what == "none"                ? ProblemQuantity::none :
+      what == "contact pressure"    ? ProblemQuantity::contact_pressure :
+      what == "tangential traction" ? ProblemQuantity::tangential_traction :
+      what == "contact half-width"  ? ProblemQuantity::contact_half_width :
+      what == "resultant force x"   ? ProblemQuantity::resultant_force_x :
+      what == "resultant force y"   ? ProblemQuantity::resultant_force_y :
+      what == "displacement x"      ? ProblemQuantity::displacement_x :
+                                      ProblemQuantity::displacement_y;
     if (quantity == ProblemQuantity::none)
       return;
     const auto xy = get_point(prm, subsection, "Point");

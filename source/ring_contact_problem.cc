@@ -143,12 +143,23 @@ namespace RingContact
     const auto        &fe          = parameters.finite_elements;
     const auto         add_element = [&](const Body &body, const bool layer) {
       const unsigned int degree = body.degree;
+      // The tangential traction: as the pressure with friction; without,
+      // FE_Nothing, which adds no unknown.
+      const std::unique_ptr<FiniteElement<2>> tangential =
+        parameters.contact.friction_coefficient > 0 ?
+                  std::unique_ptr<FiniteElement<2>>(
+            std::make_unique<FE_Q<2>>(fe.multiplier_degree)) :
+                  std::make_unique<FE_Nothing<2>>();
       if (layer)
-        fe_collection.push_back(
-          FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(fe.multiplier_degree), 1));
+        fe_collection.push_back(FESystem<2>(FE_Q<2>(degree),
+                                            2,
+                                            FE_Q<2>(fe.multiplier_degree),
+                                            1,
+                                            *tangential,
+                                            1));
       else
-        fe_collection.push_back(
-          FESystem<2>(FE_Q<2>(degree), 2, FE_Nothing<2>(), 1));
+        fe_collection.push_back(FESystem<2>(
+          FE_Q<2>(degree), 2, FE_Nothing<2>(), 1, FE_Nothing<2>(), 1));
       q_collection.push_back(
         QGauss<2>(fe.reduced_integration ? degree : degree + 1));
       mapping_collection.push_back(MappingQ<2>(body.mapping_degree));
@@ -256,6 +267,8 @@ namespace RingContact
           sector));
         for (const auto node : contacts.back()->all_multiplier_dofs())
           pair_of_node[node] = contacts.size() - 1;
+        for (const auto node : contacts.back()->tangential_dofs())
+          pair_of_node[node] = contacts.size() - 1;
       }
     probe_dof = contact_node_nearest_to(parameters.contact.probe_point);
 
@@ -288,7 +301,7 @@ namespace RingContact
       }
     add_constraints(constraints, {}, {}, &is_dirichlet);
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
+      DoFTools::extract_dofs(dof_handler, Components::contact_mask());
     is_multiplier.assign(dof_handler.n_dofs(), false);
     for (const auto i : all_multipliers)
       is_multiplier[i] = true;
@@ -331,7 +344,7 @@ namespace RingContact
 
     // The multiplier lives on the slave surface only.
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, Components::multiplier_mask());
+      DoFTools::extract_dofs(dof_handler, Components::contact_mask());
     std::set<types::global_dof_index> slave_multipliers;
     for (const auto &[node, pair] : pair_of_node)
       slave_multipliers.insert(node);
@@ -958,16 +971,18 @@ namespace RingContact
         // entries are on the process that owns it.
         if (!locally_owned_dofs.is_element(i))
           continue;
-        double row_sum = 0, diagonal = 0;
+        // A gap or a stick row (c s~_k) measures a length; an open node's
+        // row or a sliding node's (w lambda_t - sign mu w lambda) a
+        // traction.
+        double row_sum = 0;
+        bool   active  = false;
         system->for_each_entry(i, [&](const auto j, const double value) {
           row_sum += std::abs(value);
-          if (j == i)
-            diagonal = std::abs(value);
+          active = active || (!is_multiplier[j] && value != 0);
         });
         if (row_sum == 0)
           continue;
-        const bool   active = row_sum > diagonal;
-        const double scale  = active ? largest_displacement : largest_pressure;
+        const double scale = active ? largest_displacement : largest_pressure;
         measure.gap = std::max(measure.gap, std::abs(r) / row_sum / scale);
         measure.gap_floor =
           std::max(measure.gap_floor,
@@ -1202,6 +1217,8 @@ namespace RingContact
         total_iterations += iterations;
         if (ok)
           {
+            for (const auto &contact : contacts)
+              contact->accept_state(solution);
             previous_solution = converged;
             previous_time     = current_time;
             current_time      = t_next;
@@ -1324,6 +1341,18 @@ namespace RingContact
     row.wall_time         = wall_time;
     for (const auto &check : parameters.problem.checks)
       row.quantities.push_back(checked_quantity(check));
+    // Friction: the tangential traction at the probe (Cauchy, the
+    // multiplier itself) and the number of sliding nodes.
+    const bool friction = parameters.contact.friction_coefficient > 0;
+    if (friction)
+      {
+        row.quantities.push_back(
+          solution(contact_of(probe_dof).tangential_dof(probe_dof)));
+        unsigned int n_slipping = 0;
+        for (const auto &contact : contacts)
+          n_slipping += contact->n_slipping();
+        row.quantities.push_back(n_slipping);
+      }
     history_rows.push_back(row);
 
     if (parameters.output.print_steps && parameters.general())
@@ -1336,7 +1365,6 @@ namespace RingContact
         for (unsigned int k = 0; k < parameters.problem.checks.size(); ++k)
           log << "  " << parameters.problem.checks[k].description() << " "
               << std::setprecision(7) << row.quantities[k];
-        log << '\n';
       }
     else if (parameters.output.print_steps)
       log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
@@ -1348,7 +1376,12 @@ namespace RingContact
           << "  analytic " << std::setw(12) << row.analytic << "  error "
           << std::fixed << std::setprecision(3) << std::setw(7)
           << 100 * row.relative_error << "%  L2 " << std::setw(6)
-          << 100 * row.l2_relative_error << '%' << std::defaultfloat << '\n';
+          << 100 * row.l2_relative_error << '%' << std::defaultfloat;
+    if (parameters.output.print_steps && friction)
+      log << "  q_A " << std::setprecision(7) << row.quantities.end()[-2]
+          << "  sliding " << row.quantities.back();
+    if (parameters.output.print_steps)
+      log << '\n';
 
     // A converged state with every contact node open under a load that
     // closes the contact (analytic pressure > 0) is another solution of the
@@ -1377,6 +1410,12 @@ namespace RingContact
       {
         case ProblemQuantity::contact_pressure:
           return reported_pressure(nearest);
+
+        case ProblemQuantity::tangential_traction:
+          {
+            const auto dof = contact_of(nearest).tangential_dof(nearest);
+            return dof == numbers::invalid_dof_index ? 0.0 : solution(dof);
+          }
 
           // The farthest slave node in contact (positive pressure) from the
           // point, or, where a node in contact is next to an open one on a

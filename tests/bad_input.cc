@@ -117,6 +117,13 @@ main()
                  source_dir +
                  "/meshes/ssnp152a.msh\n set Sector elements = 1\nend\n",
                "Sector elements");
+  expect_error("negative_friction",
+               "subsection Contact\n set Friction coefficient = -0.1\nend\n",
+               "Friction coefficient");
+  expect_error("friction_with_a_sector",
+               "subsection Mesh\n set Sector elements = 4\nend\n"
+               "subsection Contact\n set Friction coefficient = 0.1\nend\n",
+               "friction is not implemented with cyclic symmetry");
   expect_error("sector_too_wide",
                "subsection Mesh\n set Sector elements = 41\nend\n",
                "at most 'Elements around'");

@@ -7,7 +7,9 @@
 // case's scale). The cases: A (its two schemes), C with every contact
 // integration scheme, G (Q2, curved; its three schemes, the whole rotation
 // in 20 steps), a cyclic-symmetry sector of C, and three blocks with two
-// contact pairs (a general problem: tractions, resultant forces).
+// contact pairs (a general problem: tractions, resultant forces), and
+// Coulomb friction: C with mu = 0.2 (nodal and segment-based) and the
+// frictional patch test.
 // Also MUMPS on one process against UMFPACK, for A.
 #include <deal.II/base/mpi.h>
 
@@ -157,6 +159,15 @@ main(int argc, char **argv)
                        "subsection Mesh\n set Sector elements = 3\nend\n"
                        "subsection Contact\n set Integration schemes = "
                        "segment-based 2\nend"));
+  compare("C with friction (mu = 0.2)",
+          modelisation('c',
+                       "subsection Contact\n set Integration schemes = nodal, "
+                       "segment-based 2\n set Friction coefficient = 0.2\n"
+                       "end"));
+  compare("the frictional patch test",
+          std::string("include ") + RING_CONTACT_SOURCE_DIR +
+            "/prm/two_blocks_friction.prm\nsubsection Mesh\n set Mesh file = " +
+            RING_CONTACT_SOURCE_DIR + "/meshes/two_blocks.geo\nend\n");
   compare("three blocks",
           std::string("include ") + RING_CONTACT_SOURCE_DIR +
             "/prm/three_blocks.prm\nsubsection Mesh\n set Mesh file = " +

@@ -4,12 +4,15 @@
 // Newton system of the two rings (bulk and contact, with the projection of
 // the slave points onto a master surface that has slid by a third of an
 // element, or with the slave nodes on the master vertices; nodal and Gauss
-// integration, faceted and curved).
+// integration, faceted and curved), and with Coulomb friction (every node
+// sticking, or every node sliding, against the reference configuration as
+// the last converged state).
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/analytic_solution.h>
+#include <ring_contact/components.h>
 #include <ring_contact/material.h>
 #include <ring_contact/ring_contact_problem.h>
 
@@ -70,12 +73,13 @@ namespace
   }
 
   // The analytic displacement, turned through an angle on the inner ring,
-  // plus a smooth perturbation; the analytic pressure as multiplier.
+  // plus a smooth perturbation; the analytic pressure as multiplier, and a
+  // tenth of it as tangential traction.
   class State : public Function<2>
   {
   public:
     State(const AnalyticSolution &analytic, const double p, const double angle)
-        : Function<2>(3)
+        : Function<2>(Components::n_components)
         , analytic(analytic)
         , p(p)
         , angle(angle)
@@ -84,8 +88,10 @@ namespace
     double
     value(const Point<2> &X, const unsigned int component) const override
     {
-      if (component == 2)
+      if (component == Components::multiplier)
         return analytic.contact_pressure(p);
+      if (component == Components::tangential)
+        return -0.1 * analytic.contact_pressure(p);
       const double r     = X.norm();
       const double theta = std::atan2(X[1], X[0]);
       // Turn the inner ring rigidly (more near R3, less at R2).
@@ -109,7 +115,8 @@ namespace
                const Kinematics   kinematics,
                const bool         vertex          = false,
                const bool         smooth          = false,
-               const bool         pressure_loaded = false)
+               const bool         pressure_loaded = false,
+               const double       friction        = 0)
   {
     Parameters parameters;
     {
@@ -118,6 +125,7 @@ namespace
           << "\nend\nsubsection Finite elements\n set Mapping degree = "
           << mapping_degree << "\nend\nsubsection Contact\n"
           << " set Smooth master normals = " << (smooth ? "true" : "false")
+          << "\n set Friction coefficient = " << friction
           << "\nend\nsubsection Materials\n"
           << " set Kinematics = " << kinematics_name(kinematics)
           << "\nend\nsubsection Output\n set Print timing = false\n"
@@ -180,8 +188,10 @@ namespace
     for (const auto *surface :
          {&contact.slave_surface(), &contact.master_surface()})
       for (const auto &segment : surface->segments())
-        for (const auto *list :
-             {&segment.dofs_x, &segment.dofs_y, &segment.multiplier_dofs})
+        for (const auto *list : {&segment.dofs_x,
+                                 &segment.dofs_y,
+                                 &segment.multiplier_dofs,
+                                 &segment.tangential_dofs})
           columns.insert(columns.end(), list->begin(), list->end());
     for (types::global_dof_index i = 0; i < u.size(); i += 37)
       columns.push_back(i);
@@ -189,7 +199,7 @@ namespace
     if (pressure_loaded)
       for (const auto i : DoFTools::extract_boundary_dofs(
              problem.get_dof_handler(),
-             ComponentMask({true, true, false}),
+             Components::displacement_mask(),
              {static_cast<types::boundary_id>(Ids::outer_boundary)}))
         columns.push_back(i);
     std::sort(columns.begin(), columns.end());
@@ -200,11 +210,15 @@ namespace
       {
         if (constraints.is_constrained(j))
           continue;
-        const double h  = (std::find(contact.multiplier_dofs().begin(),
-                                    contact.multiplier_dofs().end(),
-                                    j) != contact.multiplier_dofs().end()) ?
-                            1e-2 * analytic.contact_pressure(1e7) * 1e-6 :
-                            1e-8;
+        const auto &tangential = contact.tangential_dofs();
+        const bool  traction =
+          std::find(contact.multiplier_dofs().begin(),
+                    contact.multiplier_dofs().end(),
+                    j) != contact.multiplier_dofs().end() ||
+          std::find(tangential.begin(), tangential.end(), j) !=
+            tangential.end();
+        const double h =
+          traction ? 1e-2 * analytic.contact_pressure(1e7) * 1e-6 : 1e-8;
         const double u0 = u(j);
         u(j)            = u0 + h;
         problem.assemble_newton_system();
@@ -240,11 +254,21 @@ namespace
           }
       }
     problem.assemble_newton_system();
+    if (friction > 0)
+      check(contact.n_active() > 0 &&
+              contact.n_slipping() == (friction > 1 ? 0 : contact.n_active()),
+            "friction: every closed node sticks (mu = 1e3) or slides (" +
+              std::to_string(contact.n_slipping()) + " of " +
+              std::to_string(contact.n_active()) + " closed nodes slide)");
     const std::string name =
       scheme + (pressure_loaded ? ", pressure on r = R1" : "") +
       (vertex ? ", at master vertices" : "") +
-      (smooth ? ", smoothed normals" : "") + ", mapping degree " +
-      std::to_string(mapping_degree) + ", " + kinematics_name(kinematics);
+      (smooth ? ", smoothed normals" : "") +
+      (friction > 0 ?
+         friction > 1 ? ", friction (sticking)" : ", friction (sliding)" :
+         "") +
+      ", mapping degree " + std::to_string(mapping_degree) + ", " +
+      kinematics_name(kinematics);
     RingContactTests::deallog_file
       << name << ": " << columns.size()
       << " columns of the Newton matrix match finite differences: "
@@ -295,4 +319,22 @@ main()
     "segment-based 2", 2, Kinematics::logarithmic_strain, false, true);
   check_system(
     "Gauss 3", 1, Kinematics::logarithmic_strain, false, false, true);
+  // Coulomb friction: mu = 1e3 keeps every closed node sticking (the slip
+  // rows, through the old partner's motion), mu = 0.2 makes it slide.
+  for (const double mu : {1e3, 0.2})
+    {
+      check_system(
+        "nodal", 1, Kinematics::finite_strain, false, true, false, mu);
+      check_system(
+        "Gauss 3", 2, Kinematics::finite_strain, false, false, false, mu);
+      check_system("segment-based 2",
+                   1,
+                   Kinematics::finite_strain,
+                   false,
+                   false,
+                   false,
+                   mu);
+      check_system(
+        "Gauss 2", 1, Kinematics::logarithmic_strain, false, false, false, mu);
+    }
 }

@@ -14,6 +14,25 @@
 // w_k lambda_k off it. Every row is then a force per unit thickness.
 // With small-strain kinematics the contact is geometrically linear too:
 // pairing, normal and length element of the reference configuration.
+//
+// Coulomb friction (mu > 0): a second multiplier, the tangential traction
+// lambda_t on the unit tangent tau = e_z x n, adds
+//   displacement rows:  + lambda_t (delta u_s - delta u_m(xi)) . tau  ds
+// (the master's friction force on the slave, -lambda_t tau, opposes the
+// slave's slip when lambda_t has the slip's sign). The slip of a slave
+// point in the step is the tangential part of its motion relative to the
+// master point it was paired with at the last converged state (xi_n on
+// segment m_n, found by projecting the point's old position onto the old
+// master), s = tau . [(u_s - u_s,n) - (u_m(xi_n) - u_m,n(xi_n))]: zero in a
+// rigid motion of the pair, so objective. Weighted per node,
+// s~_k = sum Phi_k s ds, and the node's trial traction
+// T_k = w_k lambda_t,k + c s~_k decides its state with the bound
+// B_k = mu (w_k lambda_k - c g~_k):
+//   open (normal inactive):  w_k lambda_t,k = 0
+//   stick (|T_k| <= B_k):    c s~_k = 0
+//   slip  (sign s = T_k/|T_k|): w_k lambda_t,k - s mu w_k lambda_k = 0,
+// the primal-dual active-set form of Alart and Curnier's
+// w lambda_t - proj_[-B, B](T) = 0, each row exactly linearised.
 #ifndef ring_contact_contact_interface_h
 #define ring_contact_contact_interface_h
 
@@ -27,6 +46,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace RingContact
@@ -49,6 +69,9 @@ namespace RingContact
     std::array<int, 2>    piece_end = {{-1, -1}};
     double                xi        = 0;
     double                w         = 0;
+    /// Friction: the partner of the point's position at the last converged
+    /// state on the master of that state.
+    Projection old_projection;
   };
 
   class ContactInterface
@@ -128,6 +151,27 @@ namespace RingContact
     unsigned int
     n_active() const;
 
+    /// Friction: the converged state of a step (or of its part) becomes the
+    /// one the next slips are measured from.
+    void
+    accept_state(const Vector<double> &solution);
+
+    /// Number of closed nodes that slip (friction).
+    unsigned int
+    n_slipping() const;
+
+    /// The tangential-traction dof at a multiplier node (friction), or
+    /// invalid.
+    types::global_dof_index
+    tangential_dof(const types::global_dof_index multiplier_dof) const;
+
+    /// Every tangential-traction dof of the slave surface (friction).
+    const std::vector<types::global_dof_index> &
+    tangential_dofs() const
+    {
+      return tangential_dof_list;
+    }
+
     /// The multiplier dof at the slave vertex nearest to a reference point
     /// (and, if asked, its distance from the point).
     types::global_dof_index
@@ -175,6 +219,8 @@ namespace RingContact
     ContactSurface      master;
     const Quadrature<1> quadrature;
     const double        complementarity_constant;
+    /// Coulomb's coefficient (0: frictionless).
+    const double friction_coefficient;
     /// Small strain: contact geometry (pairing, normal, length) of the
     /// reference configuration, gap linear in the displacement.
     const bool geometrically_linear;
@@ -195,6 +241,14 @@ namespace RingContact
     void
     pair_pieces(const Vector<double> &solution);
 
+    /// Friction: each point's old partner, the weighted slips s~_k and the
+    /// nodes' stick/slip states. Returns the number of changed states.
+    unsigned int
+    update_friction(const Vector<double> &solution);
+    /// s~_k from the contact elements (contact_assembly.cc).
+    void
+    compute_weighted_slips(const Vector<double> &solution);
+
     const bool segment_based;
 
     std::vector<types::global_dof_index>            multiplier_dof_list;
@@ -208,6 +262,15 @@ namespace RingContact
     std::vector<double> weighted_gap;     ///< g~_k
     std::vector<bool>   active;
     double              segment_length; ///< smallest slave segment
+
+    /// Friction: per node the tangential dof, s~_k and the state (0 stick,
+    /// +1 or -1 the sign of the slip); the last converged solution and
+    /// surfaces.
+    std::vector<types::global_dof_index> tangential_dof_list;
+    std::vector<double>                  weighted_slip;
+    std::vector<int>                     slip_sign;
+    Vector<double>                       converged_solution;
+    std::unique_ptr<ContactSurface>      converged_slave, converged_master;
 
     std::vector<ContactPoint> points;
     /// (slave segment, master segment) pairs in the sparsity pattern.

@@ -84,6 +84,9 @@ namespace RingContact
     std::vector<types::global_dof_index> dofs_x, dofs_y;
     /// Multiplier dofs at the multiplier nodes (slave surface only).
     std::vector<types::global_dof_index> multiplier_dofs;
+    /// Tangential-traction dofs at the same nodes (slave surface, with
+    /// friction only).
+    std::vector<types::global_dof_index> tangential_dofs;
     /// +1 or -1: n = orientation (dx_y, -dx_x) / |dx| is the outward normal.
     double orientation;
     /// Cyclic symmetry: a rotated copy of a segment of the sector carries

@@ -168,6 +168,7 @@ namespace RingContact
     std::vector<IntegrationScheme> schemes;
     bool                           smooth_master_normals;
     double                         complementarity_constant; ///< 0: automatic
+    double                         friction_coefficient;     ///< mu; 0: none
     PressureMeasure                reported_pressure;
     Point<2>                       probe_point;
 

@@ -132,9 +132,10 @@ namespace RingContact
   enum class ProblemQuantity
   {
     none,
-    contact_pressure,   ///< at the slave node nearest to the point
-    contact_half_width, ///< farthest extent of the contact from the point
-    resultant_force_x,  ///< sum of the nodal forces of a boundary
+    contact_pressure,    ///< at the slave node nearest to the point
+    tangential_traction, ///< friction: at the slave node nearest to the point
+    contact_half_width,  ///< farthest extent of the contact from the point
+    resultant_force_x,   ///< sum of the nodal forces of a boundary
     resultant_force_y,
     displacement_x, ///< at the point (reference coordinates)
     displacement_y
