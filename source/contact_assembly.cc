@@ -104,7 +104,8 @@ namespace RingContact
       residual(
         const double                                        c,
         const std::function<bool(types::global_dof_index)> &active,
-        const std::function<bool(types::global_dof_index)> &sticks) const;
+        const std::function<int(types::global_dof_index)>  &friction_state,
+        const double                                        mu) const;
       /// Phi_k at the slave point and the local index of each multiplier.
       AD
       multiplier_basis(const unsigned int k) const
@@ -493,7 +494,8 @@ namespace RingContact
     ContactElement::residual(
       const double                                        c,
       const std::function<bool(types::global_dof_index)> &active,
-      const std::function<bool(types::global_dof_index)> &sticks) const
+      const std::function<int(types::global_dof_index)>  &friction_state,
+      const double                                        mu) const
     {
       // The traction the master exerts on the slave, per current length:
       // lambda n, and with friction - lambda_t tau, tau = (-n_y, n_x).
@@ -527,14 +529,22 @@ namespace RingContact
       for (unsigned int k = 0; k < nl; ++k)
         if (active(s_seg.multiplier_dofs[k]))
           r[lambda_offset + k] = c * Phi_eta[k] * gap * ds;
-      // Friction: the sticking nodes' rows c s~_k (the others are written
-      // per node, see ContactInterface::assemble()).
+      // Friction: the sticking nodes' rows c s~_k, and the sliding nodes'
+      // part of w lambda_t - sign mu (w lambda - c g~_k) that the points
+      // carry (the rest is written per node, see
+      // ContactInterface::assemble()).
       if (converged)
         {
           const AD s = slip();
           for (unsigned int k = 0; k < nl; ++k)
-            if (sticks(s_seg.multiplier_dofs[k]))
-              r[tangential_offset + k] = c * Phi_eta[k] * s * ds;
+            {
+              const int state = friction_state(s_seg.multiplier_dofs[k]);
+              if (state == 0)
+                r[tangential_offset + k] = c * Phi_eta[k] * s * ds;
+              else if (state == 1 || state == -1)
+                r[tangential_offset + k] =
+                  state * mu * c * Phi_eta[k] * gap * ds;
+            }
         }
       return r;
     }
@@ -572,6 +582,8 @@ namespace RingContact
     }
   } // namespace
 
+  constexpr double stick_regularisation = 1e-12;
+
   void
   ContactInterface::assemble(const Vector<double>            &solution,
                              const AffineConstraints<double> &constraints,
@@ -580,9 +592,10 @@ namespace RingContact
     const auto is_active = [this](const types::global_dof_index dof) {
       return static_cast<bool>(active[multiplier_index.at(dof)]);
     };
-    const auto sticks = [this](const types::global_dof_index dof) {
+    // 0 sticking, +1 or -1 sliding, 2 open.
+    const auto friction_state = [this](const types::global_dof_index dof) {
       const unsigned int k = multiplier_index.at(dof);
-      return active[k] && slip_sign[k] == 0;
+      return active[k] ? slip_sign[k] : 2;
     };
     const bool friction = friction_coefficient > 0;
     const auto process  = this_process(system.get_communicator());
@@ -606,8 +619,10 @@ namespace RingContact
         element.gather_unknowns(solution);
         element.evaluate_slave_point();
         element.evaluate_partner_and_normal();
-        std::vector<AD> residual =
-          element.residual(complementarity_constant, is_active, sticks);
+        std::vector<AD> residual = element.residual(complementarity_constant,
+                                                    is_active,
+                                                    friction_state,
+                                                    friction_coefficient);
         element.scatter(residual, constraints, system);
       }
 
@@ -630,9 +645,20 @@ namespace RingContact
           continue;
         if (!active[k])
           system.add_diagonal(t, w, -w * solution(t));
-        else if (slip_sign[k] != 0)
+        else if (slip_sign[k] == 0)
+          // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. A
+          // node whose tangential motion is held on both sides (on a
+          // symmetry plane) has s~_k = 0 whatever the unknowns, and its
+          // lambda_t no equation; eps = 1e-12 gives it lambda_t = 0 and
+          // elsewhere allows a slip of 1e-12 w lambda_t / c (measured:
+          // Hertz with mu = 0.2 was singular at its first step).
+          system.add_diagonal(t,
+                              stick_regularisation * w,
+                              -stick_regularisation * w * solution(t));
+        else
           {
-            // Sliding: w lambda_t - sign mu w lambda = 0.
+            // Sliding: w lambda_t - sign mu (w lambda - c g~) = 0, the
+            // points' sum of sign mu c Phi_k g ds already in the row.
             const double       b = slip_sign[k] * friction_coefficient * w;
             FullMatrix<double> matrix(2, 2);
             Vector<double>     rhs(2);

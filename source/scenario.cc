@@ -216,7 +216,7 @@ namespace RingContact
           dof_handler,
           Ids::inner_boundary,
           Functions::ConstantFunction<2>(
-            std::vector<double>{0, -shortening, 0}), // u_x, u_y, multiplier
+            std::vector<double>{0, -shortening, 0, 0}), // u, the multipliers
           values,
           vertical);
         for (const auto &cell : dof_handler.active_cell_iterators())
