@@ -10,7 +10,8 @@
 // being Lame's for the radial data the rotation imposes in small strain:
 // u_r(R1) = f(R1), u_r(R3) = (R3 + f(R3)) cos(alpha) - R3.
 //
-// For three ring pairs (C's, C's in plane strain, D's materials), three
+// For four ring pairs (C's, C's in plane strain, D's materials, steel on
+// aluminium in plane strain with radii 2, 1.5, 0.8), three
 // friction coefficients and three integration schemes, on C's mesh refined
 // once (80 around): the traction at node A while sticking within 1 % of
 // K sin(alpha) at every stick step; no node sliding at 0.92 alpha_s, every
@@ -36,6 +37,7 @@ namespace
     std::string name;
     double      E_outer, nu_outer, E_inner, nu_inner;
     std::string plane;
+    double      R1 = 1.0, R2 = 0.6, R3 = 0.2; ///< SSNP152's radii
   };
 
   // The closed form: tau(R2) / sin(alpha) for the imposed radius R3 + f3.
@@ -63,7 +65,7 @@ namespace
   double
   lame_contact_pressure(const Rings &rings, const double f1, const double f3)
   {
-    const double R1 = 1.0, R2 = 0.6, R3 = 0.2;
+    const double R1 = rings.R1, R2 = rings.R2, R3 = rings.R3;
     const bool   strain    = rings.plane == "plane strain";
     const auto   constants = [&](const double E, const double nu) {
       const double Ee = strain ? E / (1 - nu * nu) : E;
@@ -97,7 +99,9 @@ namespace
     std::ostringstream prm;
     prm << std::setprecision(17)
         << "subsection Mesh\n set Global refinements = " << refinements
-        << "\nend\n"
+        << "\n set Outer radius = " << rings.R1
+        << "\n set Interface radius = " << rings.R2
+        << "\n set Inner radius = " << rings.R3 << "\nend\n"
         << "subsection Materials\n"
         << " set Young's modulus outer ring = " << rings.E_outer << '\n'
         << " set Poisson's ratio outer ring = " << rings.nu_outer << '\n'
@@ -116,9 +120,9 @@ namespace
   AnalyticSolution
   analytic_for(const Rings &rings)
   {
-    return AnalyticSolution(1.0,
-                            0.6,
-                            0.2,
+    return AnalyticSolution(rings.R1,
+                            rings.R2,
+                            rings.R3,
                             rings.E_outer,
                             rings.nu_outer,
                             rings.E_inner,
@@ -136,7 +140,16 @@ main()
   const std::vector<Rings> ring_pairs = {
     {"C", 1e9, 0.2, 1e9, 0.2, "plane stress"},
     {"C plane strain", 1e9, 0.2, 1e9, 0.2, "plane strain"},
-    {"D", 1e9, 0.3, 1e8, 0.2, "plane stress"}};
+    {"D", 1e9, 0.3, 1e8, 0.2, "plane stress"},
+    {"steel on aluminium, radii 2/1.5/0.8",
+     2e11,
+     0.3,
+     7e10,
+     0.33,
+     "plane strain",
+     2.0,
+     1.5,
+     0.8}};
   auto &log = RingContactTests::deallog_file;
   log << std::scientific << std::setprecision(2);
 
@@ -215,7 +228,7 @@ main()
                   slide_exact =
                     std::max(slide_exact,
                              std::abs(traction / (-mu * row.pressure_A) - 1));
-                  const double R3 = 0.2;
+                  const double R3 = rings.R3;
                   const double sigma_n_alpha =
                     lame_contact_pressure(rings,
                                           f1,
