@@ -101,20 +101,25 @@ def triangulated_measure(cell, points):
     return signed, absolute
 
 
-def pvtu_pieces(path):
-    """The piece files a .pvtu lists (an MPI run's pieces), each checked to
-    exist."""
+def listed_files(path, element, attribute):
+    """The files an XML index (.pvd, .pvtu) lists in `attribute` of its
+    `element`s, each checked to exist beside it."""
     try:
         root = ET.parse(path).getroot()
     except ET.ParseError as e:
         fail(f"{path}: not whole XML ({e})")
-    pieces = [p.get("Source") for p in root.iter("Piece")]
-    if not pieces:
-        fail(f"{path}: lists no piece")
-    for name in pieces:
+    files = [e.get(attribute) for e in root.iter(element)]
+    if not files:
+        fail(f"{path}: lists no {element.lower()}")
+    for name in files:
         if not os.path.isfile(os.path.join(os.path.dirname(path), name)):
             fail(f"{path}: lists {name}, which does not exist")
-    return pieces
+    return files
+
+
+def pvtu_pieces(path):
+    """The piece files a .pvtu lists (an MPI run's pieces)."""
+    return listed_files(path, "Piece", "Source")
 
 
 def check_vtu(path):
@@ -193,18 +198,7 @@ def check_vtu(path):
 
 
 def check_pvd(path):
-    try:
-        root = ET.parse(path).getroot()
-    except ET.ParseError as e:
-        fail(f"{path}: not whole XML ({e})")
-    files = [d.get("file") for d in root.iter("DataSet")]
-    if not files:
-        fail(f"{path}: lists no file")
-    folder = os.path.dirname(path)
-    for name in files:
-        if not os.path.isfile(os.path.join(folder, name)):
-            fail(f"{path}: lists {name}, which does not exist")
-    return files
+    return listed_files(path, "DataSet", "file")
 
 
 def check_measure(path, info, expected, tolerance, what):
