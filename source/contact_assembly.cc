@@ -93,7 +93,8 @@ namespace RingContact
       {}
 
       void
-      gather_unknowns(const Vector<double> &solution);
+      gather_unknowns(const Vector<double> &solution,
+                      const bool            derivatives = true);
       void
       evaluate_slave_point();
       void
@@ -171,13 +172,15 @@ namespace RingContact
     // Local layout. Master segments whose displacement enters: the
     // partner, and the neighbours that define the normal (at a vertex: the
     // other segment there; smoothed normals and segment-based pieces: both
-    // neighbours of the partner). The local unknowns become AD variables; a
+    // neighbours of the partner). The local unknowns become AD variables
+    // (or AD constants, when only values are wanted); a
     // rotated copy of a master segment (cyclic symmetry) moves by v = R a,
     // a the unknowns of the original: its displacements are written in
     // those (so that the derivatives are with respect to a), and its rows
     // are turned back, r_a = R^T r_v, once the residual is known.
     void
-    ContactElement::gather_unknowns(const Vector<double> &solution)
+    ContactElement::gather_unknowns(const Vector<double> &solution,
+                                    const bool            derivatives)
     {
       std::vector<unsigned int> master_segments = {projection.segment};
       if (smooth || segment_based)
@@ -228,7 +231,8 @@ namespace RingContact
       const unsigned int n = local_dofs.size();
       u.resize(n);
       for (unsigned int i = 0; i < n; ++i)
-        u[i] = AD(n, i, solution(local_dofs[i]));
+        u[i] = derivatives ? AD(n, i, solution(local_dofs[i])) :
+                             AD(solution(local_dofs[i]));
       turn_copies(u, false);
     }
 
@@ -502,27 +506,23 @@ namespace RingContact
       std::vector<AD>    r(local_dofs.size(), AD(0.0));
       const unsigned int nm = m_seg.dofs_x.size();
       const unsigned int mo = offset_of.at(projection.segment);
+      ADVector           tau;
+      tau[0] = -normal[1];
+      tau[1] = normal[0];
       for (unsigned int i = 0; i < ns; ++i)
         for (unsigned int dim = 0; dim < 2; ++dim)
-          r[dim * ns + i] = -lambda * N_eta[i] * normal[dim] * ds;
+          {
+            r[dim * ns + i] = -lambda * N_eta[i] * normal[dim] * ds;
+            if (converged)
+              r[dim * ns + i] += lambda_t * N_eta[i] * tau[dim] * ds;
+          }
       for (unsigned int i = 0; i < nm; ++i)
         {
           const AD Nm_xi = Nm[i] + dNm[i] * dxi;
           for (unsigned int dim = 0; dim < 2; ++dim)
-            r[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
-        }
-      if (converged)
-        {
-          ADVector tau;
-          tau[0] = -normal[1];
-          tau[1] = normal[0];
-          for (unsigned int i = 0; i < ns; ++i)
-            for (unsigned int dim = 0; dim < 2; ++dim)
-              r[dim * ns + i] += lambda_t * N_eta[i] * tau[dim] * ds;
-          for (unsigned int i = 0; i < nm; ++i)
             {
-              const AD Nm_xi = Nm[i] + dNm[i] * dxi;
-              for (unsigned int dim = 0; dim < 2; ++dim)
+              r[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
+              if (converged)
                 r[mo + dim * nm + i] -= lambda_t * Nm_xi * tau[dim] * ds;
             }
         }
@@ -687,7 +687,7 @@ namespace RingContact
                                !geometrically_linear,
                                segment_based,
                                &converged);
-        element.gather_unknowns(solution);
+        element.gather_unknowns(solution, false); // values, no derivatives
         element.evaluate_slave_point();
         element.evaluate_partner_and_normal();
         const double s   = element.slip().val();
