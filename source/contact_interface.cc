@@ -498,6 +498,13 @@ namespace RingContact
     return std::count(active.begin(), active.end(), true);
   }
 
+  bool
+  ContactInterface::is_active(const types::global_dof_index dof) const
+  {
+    const auto k = multiplier_index.find(dof);
+    return k != multiplier_index.end() && active[k->second];
+  }
+
   types::global_dof_index
   ContactInterface::multiplier_dof_nearest_to(const Point<2> &point,
                                               double         *distance) const

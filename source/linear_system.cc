@@ -11,6 +11,7 @@ namespace RingContact
     needs_trilinos(const MPI_Comm communicator, const LinearSolverType solver)
     {
       return solver == LinearSolverType::mumps ||
+             solver == LinearSolverType::iterative ||
              (solver == LinearSolverType::automatic &&
               n_processes(communicator) > 1);
     }
@@ -42,7 +43,8 @@ namespace RingContact
   }
 
   LinearSystem::LinearSystem(const MPI_Comm         communicator,
-                             const LinearSolverType solver)
+                             const LinearSolverType solver,
+                             const double           linear_tolerance)
       : communicator(communicator)
       , use_trilinos(needs_trilinos(communicator, solver))
   {
@@ -52,17 +54,34 @@ namespace RingContact
         "processes use MUMPS (or auto)");
     if (use_trilinos && !dealii::Utilities::MPI::job_supports_mpi())
       throw std::runtime_error(
-        "Newton/Linear solver = MUMPS needs MPI, which was not started");
+        "Newton/Linear solver = MUMPS or iterative needs MPI, which was not "
+        "started");
     if (use_trilinos)
       {
         distributed_part = std::make_unique<Distributed>();
         // Trilinos and MUMPS communicate on a communicator of their own,
         // apart from the program's sums and gathers.
         MPI_Comm_dup(communicator, &distributed_part->communicator);
+        if (solver == LinearSolverType::iterative)
+          block_solver =
+            std::make_unique<BlockSolver>(distributed_part->communicator,
+                                          linear_tolerance);
       }
   }
 
-  LinearSystem::~LinearSystem() = default;
+  LinearSystem::~LinearSystem()
+  {
+    // The solver's Trilinos objects go before the communicator.
+    block_solver.reset();
+  }
+
+  void
+  LinearSystem::set_kinds(const std::vector<BlockSolver::Kind> &kinds,
+                          const std::vector<Point<2>>          &positions)
+  {
+    if (block_solver)
+      block_solver->set_kinds(kinds, positions);
+  }
 
   LinearSystem::Distributed::~Distributed()
   {
@@ -90,7 +109,7 @@ namespace RingContact
         auto &d = *distributed_part;
         // Each process's rows of other processes go to their owners.
         d.matrix.reinit(owned, owned, dsp, d.communicator, true);
-        if (!d.mumps)
+        if (!d.mumps && !block_solver)
           d.mumps = std::make_unique<MumpsSolver>(d.communicator);
         rhs_added.reinit(n);
       }
@@ -171,8 +190,14 @@ namespace RingContact
       }
 
     auto &d = *distributed_part;
-    d.mumps->factorize(d.matrix.trilinos_matrix(), pattern_version);
-    d.mumps->solve(rhs_vector, x);
+    if (block_solver)
+      iterations =
+        block_solver->solve(d.matrix, owned, pattern_version, rhs_vector, x);
+    else
+      {
+        d.mumps->factorize(d.matrix.trilinos_matrix(), pattern_version);
+        d.mumps->solve(rhs_vector, x);
+      }
     // |K x - rhs|, each process its own rows.
     double squares[2] = {0, 0};
     for (const auto i : owned)

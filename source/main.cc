@@ -231,7 +231,8 @@ main(int argc, char **argv)
                   << std::endl;
       return 1;
     }
-  if (!mpi && parameters.newton.linear_solver == LinearSolverType::mumps)
+  if (!mpi && (parameters.newton.linear_solver == LinearSolverType::mumps ||
+               parameters.newton.linear_solver == LinearSolverType::iterative))
     mpi =
       std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
   const MPI_Comm     world = MPI_COMM_WORLD;

@@ -928,13 +928,24 @@ namespace RingContact
       prm.declare_entry(
         "Linear solver",
         "auto",
-        Patterns::Selection("auto|UMFPACK|MUMPS"),
-        "The direct solver of the Newton systems. auto: UMFPACK on one "
-        "process, MUMPS on several (mpirun -np N ring_contact file.prm). "
-        "UMFPACK is serial; MUMPS factorizes on every process together, and "
-        "also runs on one (MPI is then started for it). Both keep their "
-        "analysis of the matrix while the sparsity pattern does not "
-        "change.");
+        Patterns::Selection("auto|UMFPACK|MUMPS|iterative"),
+        "The solver of the Newton systems. auto: UMFPACK on one process, "
+        "MUMPS on several (mpirun -np N ring_contact file.prm). UMFPACK is "
+        "serial; MUMPS factorizes on every process together, and also runs "
+        "on one (MPI is then started for it). Both keep their analysis of "
+        "the matrix while the sparsity pattern does not change. iterative: "
+        "GMRES with a block preconditioner (algebraic multigrid on the "
+        "displacements, an approximate Schur complement for the "
+        "multipliers), for meshes too large to factorize; one or several "
+        "processes; its iterations are printed with the Newton iterations.");
+      prm.declare_entry("Linear tolerance",
+                        "1e-8",
+                        Patterns::Double(),
+                        "Linear solver = iterative: GMRES stops when the "
+                        "relative residual |K x - b| / |b| is below this "
+                        "(1e-14 to 1e-7; the Newton iteration converges as "
+                        "with a direct solver when it is well below the "
+                        "Newton tolerance).");
     }
     prm.leave_subsection();
   }
@@ -950,9 +961,16 @@ namespace RingContact
       extrapolate    = prm.get_bool("Extrapolate");
       verbose        = prm.get_bool("Verbose");
       const std::string solver = prm.get("Linear solver");
-      linear_solver = solver == "UMFPACK" ? LinearSolverType::umfpack :
-                      solver == "MUMPS"   ? LinearSolverType::mumps :
-                                            LinearSolverType::automatic;
+      linear_solver    = solver == "UMFPACK"   ? LinearSolverType::umfpack :
+                         solver == "MUMPS"     ? LinearSolverType::mumps :
+                         solver == "iterative" ? LinearSolverType::iterative :
+                                                 LinearSolverType::automatic;
+      linear_tolerance = get_double(prm, "Newton", "Linear tolerance");
+      require(linear_tolerance >= 1e-14 && linear_tolerance <= 1e-7,
+              "Newton",
+              "Linear tolerance",
+              "must be between 1e-14 and 1e-7, got " +
+                to_text(linear_tolerance));
       require(tolerance > 0, "Newton", "Tolerance", "must be positive");
     }
     prm.leave_subsection();

@@ -208,7 +208,32 @@ namespace RingContact
     else
       locally_owned_dofs = complete_index_set(dof_handler.n_dofs());
     system = std::make_unique<LinearSystem>(communicator,
-                                            parameters.newton.linear_solver);
+                                            parameters.newton.linear_solver,
+                                            parameters.newton.linear_tolerance);
+    if (system->iterative())
+      {
+        // The iterative solver's blocks: each displacement component, and
+        // the multipliers (pressure and tangential traction).
+        std::vector<BlockSolver::Kind> kinds(dof_handler.n_dofs(),
+                                             BlockSolver::multiplier);
+        for (const auto i :
+             DoFTools::extract_dofs(dof_handler,
+                                    Components::displacement_mask(true, false)))
+          kinds[i] = BlockSolver::displacement_x;
+        for (const auto i :
+             DoFTools::extract_dofs(dof_handler,
+                                    Components::displacement_mask(false, true)))
+          kinds[i] = BlockSolver::displacement_y;
+        std::map<types::global_dof_index, Point<2>> support_points;
+        DoFTools::map_dofs_to_support_points(mapping_collection,
+                                             dof_handler,
+                                             support_points,
+                                             Components::displacement_mask());
+        std::vector<Point<2>> positions(dof_handler.n_dofs());
+        for (const auto &[i, point] : support_points)
+          positions[i] = point;
+        system->set_kinds(kinds, positions);
+      }
 
     // Cyclic symmetry: the nodes of the sector's two sides, and the master
     // surface continued far enough for the rotation of the load program.
@@ -366,9 +391,10 @@ namespace RingContact
   // frictionless contact holds it along the contact normal only. Said once
   // per run, so that a body left free by mistake (a support forgotten) is
   // named, not only a Newton iteration that fails.
-  void
+  unsigned int
   RingContactProblem::report_rigid_body_modes() const
   {
+    unsigned int                                n_free = 0;
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(mapping_collection,
                                          dof_handler,
@@ -463,8 +489,10 @@ namespace RingContact
               log << "Note: " << body.name << " (material " << body.material_id
                   << "): no imposed displacement fixes " << what.str()
                   << "; only the contact holds it there\n";
+              ++n_free;
             }
       }
+    return n_free;
   }
 
   // The first update of a load step carries the boundary increment, the
@@ -881,6 +909,22 @@ namespace RingContact
     try
       {
         relative_residual = system->solve(newton_update);
+        if (system->iterative())
+          {
+            linear_iterations += system->last_iterations();
+            ++linear_solves;
+            if (parameters.newton.verbose)
+              log << "      GMRES: " << system->last_iterations()
+                  << " iterations\n";
+          }
+      }
+    catch (const IterativeSolverFailure &e)
+      {
+        failure_reason = "the iterative linear solver failed (" +
+                         one_line_message(e) +
+                         "): a direct solver (Newton/Linear solver = auto) "
+                         "tells whether the tangent is singular";
+        return false;
       }
     catch (const std::exception &e)
       {
@@ -896,7 +940,8 @@ namespace RingContact
       {
         std::ostringstream reason;
         reason << "the tangent matrix is singular to working precision (the "
-                  "direct solve leaves a relative residual of "
+               << (system->iterative() ? "iterative" : "direct")
+               << " solve leaves a relative residual of "
                << std::setprecision(3) << relative_residual << ")" << advice;
         failure_reason = reason.str();
         return false;
@@ -1417,10 +1462,11 @@ namespace RingContact
             return dof == numbers::invalid_dof_index ? 0.0 : solution(dof);
           }
 
-          // The farthest slave node in contact (positive pressure) from the
-          // point, or, where a node in contact is next to an open one on a
-          // segment, the midpoint between the two: the edge of the contact
-          // to half a node spacing.
+          // The farthest slave node in contact (active, with a positive
+          // pressure) from the point, or, where a node in contact is next to
+          // an open one on a segment, the midpoint between the two: the edge
+          // of the contact to half a node spacing. (An open node's pressure
+          // is zero to the linear solver's accuracy, of either sign.)
         case ProblemQuantity::contact_half_width:
           {
             double              width = 0;
@@ -1440,8 +1486,13 @@ namespace RingContact
                 };
                 for (unsigned int k = 0; k < t.size(); ++k)
                   {
-                    const Point<2> x  = slave.reference_point(s, t[k]).x;
-                    const bool     in = reported_pressure(dof_at(t[k])) > 0;
+                    const Point<2> x = slave.reference_point(s, t[k]).x;
+                    const auto     in_contact =
+                      [&](const types::global_dof_index dof) {
+                        return contact_of(dof).is_active(dof) &&
+                               reported_pressure(dof) > 0;
+                      };
+                    const bool in = in_contact(dof_at(t[k]));
                     if (in)
                       width = std::max(width, x.distance(check.point));
                     for (const int side : {-1, 1})
@@ -1449,7 +1500,7 @@ namespace RingContact
                         const int j = static_cast<int>(k) + side;
                         if (!in || j < 0 || j >= static_cast<int>(t.size()))
                           continue;
-                        if (reported_pressure(dof_at(t[j])) > 0)
+                        if (in_contact(dof_at(t[j])))
                           continue;
                         const Point<2> edge =
                           slave.reference_point(s, 0.5 * (t[k] + t[j])).x;
@@ -1576,6 +1627,11 @@ namespace RingContact
       }
     if (!ok && parameters.output.vtu_interval > 0)
       output_results(history_rows.empty() ? 0 : history_rows.back().step);
+    if (system->iterative() && linear_solves > 0)
+      log << "GMRES: " << linear_iterations << " iterations in "
+          << linear_solves << " solves (" << std::fixed << std::setprecision(1)
+          << double(linear_iterations) / linear_solves << " per solve)\n"
+          << std::defaultfloat;
     return ok;
   }
 } // namespace RingContact

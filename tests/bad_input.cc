@@ -124,6 +124,10 @@ main()
                "subsection Mesh\n set Sector elements = 4\nend\n"
                "subsection Contact\n set Friction coefficient = 0.1\nend\n",
                "friction is not implemented with cyclic symmetry");
+  expect_error("linear_tolerance_too_large",
+               "subsection Newton\n set Linear solver = iterative\n"
+               " set Linear tolerance = 1e-3\nend\n",
+               "Linear tolerance");
   expect_error("sector_too_wide",
                "subsection Mesh\n set Sector elements = 41\nend\n",
                "at most 'Elements around'");

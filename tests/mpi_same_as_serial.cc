@@ -10,12 +10,15 @@
 // contact pairs (a general problem: tractions, resultant forces), and
 // Coulomb friction: C with mu = 0.2 (nodal and segment-based) and the
 // frictional patch test.
-// Also MUMPS on one process against UMFPACK, for A.
+// Also MUMPS on one process against UMFPACK, for A; and the iterative
+// solver (GMRES, block preconditioner) on two processes against UMFPACK on
+// one, for A and C (nodal, segment-based), at a linear tolerance of 1e-12.
 #include <deal.II/base/mpi.h>
 
 #include <ring_contact/config.h>
 #include <ring_contact/ring_contact_problem.h>
 
+#include "compare_histories.h"
 #include "run_problem.h"
 
 #include <algorithm>
@@ -23,6 +26,7 @@
 
 using namespace RingContact;
 using RingContactTests::check;
+using RingContactTests::difference;
 using RingContactTests::modelisation;
 
 namespace
@@ -46,49 +50,6 @@ namespace
         histories.push_back(problem.history());
       }
     return histories;
-  }
-
-  // The largest difference of two histories, relative to the scale of
-  // each quantity; -1 if the steps or the Newton iterations differ.
-  double
-  difference(const std::vector<HistoryRow> &a, const std::vector<HistoryRow> &b)
-  {
-    if (a.size() != b.size())
-      return -1;
-    double              pressure_scale = 0;
-    std::vector<double> quantity_scale(a.empty() ? 0 : a[0].quantities.size());
-    for (const auto &row : a)
-      {
-        pressure_scale =
-          std::max({pressure_scale,
-                    std::isfinite(row.analytic) ? std::abs(row.analytic) : 0.,
-                    std::abs(row.pressure_max)});
-        for (unsigned int k = 0; k < quantity_scale.size(); ++k)
-          quantity_scale[k] =
-            std::max(quantity_scale[k], std::abs(row.quantities[k]));
-      }
-    double d = 0;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        if (a[i].step != b[i].step ||
-            a[i].newton_iterations != b[i].newton_iterations ||
-            a[i].active_nodes != b[i].active_nodes)
-          return -1;
-        for (const auto &[x, y] :
-             {std::make_pair(a[i].pressure_A, b[i].pressure_A),
-              std::make_pair(a[i].pressure_min, b[i].pressure_min),
-              std::make_pair(a[i].pressure_max, b[i].pressure_max)})
-          d = std::max(d, std::abs(x - y) / pressure_scale);
-        if (std::isfinite(a[i].l2_relative_error))
-          d =
-            std::max(d,
-                     std::abs(a[i].l2_relative_error - b[i].l2_relative_error));
-        for (unsigned int k = 0; k < quantity_scale.size(); ++k)
-          d = std::max(d,
-                       std::abs(a[i].quantities[k] - b[i].quantities[k]) /
-                         std::max(quantity_scale[k], 1e-300));
-      }
-    return d;
   }
 
   void
@@ -164,6 +125,14 @@ main(int argc, char **argv)
                        "subsection Contact\n set Integration schemes = nodal, "
                        "segment-based 2\n set Friction coefficient = 0.2\n"
                        "end"));
+  const std::string iterative =
+    "subsection Newton\n set Linear solver = iterative\n"
+    " set Linear tolerance = 1e-12\nend\n";
+  compare("A, iterative", modelisation('a', iterative));
+  compare("C, iterative",
+          modelisation('c',
+                       iterative + "subsection Contact\n set Integration "
+                                   "schemes = nodal, segment-based 2\nend"));
   compare("the frictional patch test",
           std::string("include ") + RING_CONTACT_SOURCE_DIR +
             "/prm/two_blocks_friction.prm\nsubsection Mesh\n set Mesh file = " +

@@ -151,6 +151,10 @@ namespace RingContact
     unsigned int
     n_active() const;
 
+    /// Whether the multiplier node `dof` (of this interface) is active.
+    bool
+    is_active(const types::global_dof_index dof) const;
+
     /// Friction: the converged state of a step (or of its part) becomes the
     /// one the next slips are measured from.
     void

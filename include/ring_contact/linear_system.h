@@ -29,6 +29,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/block_solver.h>
 #include <ring_contact/direct_solver.h>
 #include <ring_contact/mumps_solver.h>
 #include <ring_contact/parameters.h>
@@ -56,9 +57,12 @@ namespace RingContact
   {
   public:
     /// `solver`: Newton/Linear solver (auto is UMFPACK on one process and
-    /// MUMPS on several). MUMPS needs MPI started (main() does it when the
-    /// file asks for MUMPS).
-    LinearSystem(const MPI_Comm communicator, const LinearSolverType solver);
+    /// MUMPS on several). MUMPS and the iterative solver need MPI started
+    /// (main() does it when the file asks for them). `linear_tolerance`:
+    /// the iterative solver's relative residual.
+    LinearSystem(const MPI_Comm         communicator,
+                 const LinearSolverType solver,
+                 const double           linear_tolerance = 1e-8);
     ~LinearSystem();
     LinearSystem(const LinearSystem &) = delete;
     LinearSystem &
@@ -114,11 +118,30 @@ namespace RingContact
     void
     for_each_entry(const types::global_dof_index i, const Function &f) const;
 
+    /// The iterative solver's blocks: the kind of every unknown (whole).
+    /// Ignored by the direct solvers.
+    void
+    set_kinds(const std::vector<BlockSolver::Kind> &kinds,
+              const std::vector<Point<2>>          &positions);
+
     /// x = K^-1 rhs, whole on every process. Throws std::runtime_error when
-    /// the solver fails or the matrix is singular. Returns |K x - rhs| /
-    /// |rhs|.
+    /// the solver fails or the matrix is singular (IterativeSolverFailure
+    /// when GMRES does not converge). Returns |K x - rhs| / |rhs|.
     double
     solve(Vector<double> &x);
+
+    /// Whether the solver is iterative, and its iterations in the last
+    /// solve.
+    bool
+    iterative() const
+    {
+      return block_solver != nullptr;
+    }
+    unsigned int
+    last_iterations() const
+    {
+      return iterations;
+    }
 
     /// The matrix on one process (deal.II's): for tests.
     const SparseMatrix<double> &
@@ -156,6 +179,9 @@ namespace RingContact
       ~Distributed();
     };
     std::unique_ptr<Distributed> distributed_part;
+    /// Linear solver = iterative (on Trilinos's matrix).
+    std::unique_ptr<BlockSolver> block_solver;
+    unsigned int                 iterations = 0;
     /// The right-hand side, whole; and (several processes) what this
     /// process added since the last compress().
     Vector<double> rhs_vector;

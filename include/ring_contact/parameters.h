@@ -67,7 +67,8 @@ namespace RingContact
   {
     automatic, ///< UMFPACK on one process, MUMPS on several
     umfpack,   ///< SuiteSparse's UMFPACK (one process)
-    mumps      ///< MUMPS through Trilinos Amesos (one or several processes)
+    mumps,     ///< MUMPS through Trilinos Amesos (one or several processes)
+    iterative  ///< GMRES with a block preconditioner (AMG; see BlockSolver)
   };
 
   /// The checked quantity of a verdict.
@@ -205,6 +206,8 @@ namespace RingContact
     bool             extrapolate;
     bool             verbose;
     LinearSolverType linear_solver;
+    /// GMRES's relative residual (Linear solver = iterative).
+    double linear_tolerance;
 
     static void
     declare_parameters(ParameterHandler &prm);

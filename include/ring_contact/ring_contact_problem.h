@@ -199,7 +199,9 @@ namespace RingContact
     make_lifting_constraints();
     void
     set_boundary_target();
-    void
+    /// Notes the rigid-body motions that no imposed displacement fixes;
+    /// returns their number.
+    unsigned int
     report_rigid_body_modes() const;
     const AffineConstraints<double> &
     update_constraints() const
@@ -337,6 +339,9 @@ namespace RingContact
     Vector<double> position_magnitude;
     unsigned int   n_inverted = 0;
     double         min_det_F  = 1;
+    /// Linear solver = iterative: GMRES's iterations and solves in the run.
+    unsigned int linear_iterations = 0;
+    unsigned int linear_solves     = 0;
     /// Why the last Newton solve stopped without converging.
     std::string failure_reason;
     /// The contact points keep their partners (pairing cycles).
