@@ -45,6 +45,8 @@ namespace RingContact
           return make_linear_elasticity(constants);
         case Kinematics::logarithmic_strain:
           return make_logarithmic_strain(constants);
+        case Kinematics::neo_hookean:
+          return make_neo_hookean(constants);
       }
     return nullptr;
   }

@@ -523,7 +523,10 @@ namespace RingContact
                         "Hencky, the linear law on the logarithmic strain "
                         "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
                         "stress the out-of-plane stress conjugate to it is "
-                        "zero).");
+                        "zero); neo-Hookean: the compressible neo-Hookean "
+                        "law W = mu/2 (tr C - 3 - 2 ln J) + lambda/2 (ln "
+                        "J)^2 (finite strain; linear elasticity at small "
+                        "strain; in plane stress F33 from sigma33 = 0).");
       prm.declare_entry("Plane assumption",
                         "plane stress",
                         Patterns::Selection("plane stress|plane strain"),

@@ -242,7 +242,7 @@ namespace RingContact
                       "geometrically linear only when both bodies are in "
                       "small strain), and a pressure load on a body follows "
                       "its surface when that body is in finite or "
-                      "logarithmic strain.");
+                      "logarithmic strain or neo-Hookean.");
   }
 
   void

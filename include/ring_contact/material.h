@@ -2,13 +2,16 @@
 // displacement gradient H = Grad u to the stress conjugate to it in the
 // virtual work (the first Piola-Kirchhoff stress P, or sigma in small
 // strain) and its consistent tangent A = dP/dH, and gives the Cauchy stress
-// for output. Two laws, each in its own file:
+// for output. Four laws, each in its own file:
 // - Saint Venant-Kirchhoff in total Lagrangian form (Green-Lagrange strain
 //   E, second Piola-Kirchhoff stress S, the linear isotropic law;
 //   saint_venant_kirchhoff.cc), the original's GROT_GDEP;
 // - small-strain linear elasticity (linear_elasticity.cc);
 // - Hencky: the linear law on the logarithmic strain ln(C) / 2, the
-//   current Code_Aster's GDEF_LOG (logarithmic_strain.cc).
+//   current Code_Aster's GDEF_LOG (logarithmic_strain.cc);
+// - compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
+//   (ln J)^2, the law of the published large-sliding benchmarks
+//   (neo_hookean.cc).
 // Each in plane stress (the out-of-plane stress zero) or plane strain (E33 =
 // 0). Adding a law is
 // one new file with its class and one line in make_material_law()
@@ -73,7 +76,8 @@ namespace RingContact
   };
 
   /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
-  /// linear elasticity for small strain, Hencky for logarithmic strain.
+  /// linear elasticity for small strain, Hencky for logarithmic strain,
+  /// and the neo-Hookean law.
   std::shared_ptr<const MaterialLaw>
   make_material_law(const ElasticConstants &constants,
                     const Kinematics        kinematics);
@@ -90,6 +94,10 @@ namespace RingContact
   /// (logarithmic_strain.cc).
   std::shared_ptr<const MaterialLaw>
   make_logarithmic_strain(const ElasticConstants &constants);
+
+  /// The compressible neo-Hookean law (neo_hookean.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_neo_hookean(const ElasticConstants &constants);
 
   /// A body's material: its constants and its law, a value that can be
   /// copied and stored (the law is shared, it has no state).

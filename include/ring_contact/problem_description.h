@@ -59,12 +59,15 @@ namespace RingContact
     small_strain,  ///< linear elasticity
     /// Hencky: the linear law on the logarithmic strain ln(C) / 2
     /// (GDEF_LOG)
-    logarithmic_strain
+    logarithmic_strain,
+    /// compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
+    /// (ln J)^2
+    neo_hookean
   };
 
   /// The names of the kinematics in a .prm, as a Patterns::Selection.
   constexpr const char *kinematics_names =
-    "finite strain|small strain|logarithmic strain";
+    "finite strain|small strain|logarithmic strain|neo-Hookean";
 
   /// The kinematics of one of kinematics_names.
   inline Kinematics
@@ -72,6 +75,7 @@ namespace RingContact
   {
     return name == "small strain"       ? Kinematics::small_strain :
            name == "logarithmic strain" ? Kinematics::logarithmic_strain :
+           name == "neo-Hookean"        ? Kinematics::neo_hookean :
                                           Kinematics::finite_strain;
   }
 
