@@ -26,6 +26,22 @@ namespace RingContact
              dealii::Utilities::MPI::n_mpi_processes(communicator) > 1;
     }
 
+    /// f(j, value) for the stored entries (global column j) of the owned
+    /// row i of k.
+    template <typename Function>
+    void
+    for_each_entry(const Epetra_CrsMatrix       &k,
+                   const types::global_dof_index i,
+                   const Function               &f)
+    {
+      int     n;
+      double *values;
+      int    *columns;
+      k.ExtractMyRowView(k.LRID(static_cast<int>(i)), n, values, columns);
+      for (int e = 0; e < n; ++e)
+        f(static_cast<types::global_dof_index>(k.GCID(columns[e])), values[e]);
+    }
+
     /// Every process's triplets (row, column, value), one after the other.
     std::vector<double>
     gather_triplets(const std::vector<double> &mine,
@@ -98,22 +114,13 @@ namespace RingContact
     std::vector<double> C_pattern;
     for (const auto i : owned)
       if (kinds[i] == multiplier)
-        {
-          int     n;
-          double *values;
-          int    *columns;
-          k.ExtractMyRowView(k.LRID(static_cast<int>(i)), n, values, columns);
-          for (int e = 0; e < n; ++e)
-            {
-              const auto j =
-                static_cast<types::global_dof_index>(k.GCID(columns[e]));
-              if (kinds[j] != multiplier)
-                C_pattern.insert(C_pattern.end(),
-                                 {static_cast<double>(block_index[i]),
-                                  static_cast<double>(block_index[j]),
-                                  0.0});
-            }
-        }
+        for_each_entry(k, i, [&](const auto j, double) {
+          if (kinds[j] != multiplier)
+            C_pattern.insert(C_pattern.end(),
+                             {static_cast<double>(block_index[i]),
+                              static_cast<double>(block_index[j]),
+                              0.0});
+        });
     std::unordered_map<types::global_dof_index,
                        std::vector<types::global_dof_index>>
                               C_columns_of_row;
@@ -125,23 +132,14 @@ namespace RingContact
     DynamicSparsityPattern dsp(n_displacements, n_displacements, owned_in_A);
     for (const auto i : owned)
       if (kinds[i] != multiplier)
-        {
-          int     n;
-          double *values;
-          int    *columns;
-          k.ExtractMyRowView(k.LRID(static_cast<int>(i)), n, values, columns);
-          for (int e = 0; e < n; ++e)
-            {
-              const auto j =
-                static_cast<types::global_dof_index>(k.GCID(columns[e]));
-              if (kinds[j] != multiplier)
-                dsp.add(block_index[i], block_index[j]);
-              else if (const auto row = C_columns_of_row.find(block_index[j]);
-                       row != C_columns_of_row.end())
-                for (const auto l : row->second)
-                  dsp.add(block_index[i], l);
-            }
-        }
+        for_each_entry(k, i, [&](const auto j, double) {
+          if (kinds[j] != multiplier)
+            dsp.add(block_index[i], block_index[j]);
+          else if (const auto row = C_columns_of_row.find(block_index[j]);
+                   row != C_columns_of_row.end())
+            for (const auto l : row->second)
+              dsp.add(block_index[i], l);
+        });
     A.reinit(owned_in_A, owned_in_A, dsp, communicator, false);
     amg.clear();
     amg_built = false;
@@ -169,32 +167,24 @@ namespace RingContact
       unsigned int q = 0; // A's local row
       for (const auto i : rows)
         {
-          int     n;
-          double *values;
-          int    *columns;
-          k.ExtractMyRowView(k.LRID(static_cast<int>(i)), n, values, columns);
-          for (int e = 0; e < n; ++e)
-            {
-              const auto j =
-                static_cast<types::global_dof_index>(k.GCID(columns[e]));
-              if (kinds[i] != multiplier && kinds[j] == multiplier)
-                {
-                  B_row.push_back(q);
-                  B_column.push_back(block_index[j]);
-                  B_value.push_back(values[e]);
-                }
-              else if (kinds[i] != multiplier && j == i)
-                A_diagonal[block_index[i]] = values[e];
-              else if (kinds[i] == multiplier)
-                {
-                  auto &target =
-                    kinds[j] == multiplier ? S_triplets : C_triplets;
-                  target.insert(target.end(),
-                                {static_cast<double>(block_index[i]),
-                                 static_cast<double>(block_index[j]),
-                                 values[e]});
-                }
-            }
+          for_each_entry(k, i, [&](const auto j, const double value) {
+            if (kinds[i] != multiplier && kinds[j] == multiplier)
+              {
+                B_row.push_back(q);
+                B_column.push_back(block_index[j]);
+                B_value.push_back(value);
+              }
+            else if (kinds[i] != multiplier && j == i)
+              A_diagonal[block_index[i]] = value;
+            else if (kinds[i] == multiplier)
+              {
+                auto &target = kinds[j] == multiplier ? S_triplets : C_triplets;
+                target.insert(target.end(),
+                              {static_cast<double>(block_index[i]),
+                               static_cast<double>(block_index[j]),
+                               value});
+              }
+          });
           if (kinds[i] != multiplier)
             ++q;
         }
@@ -263,38 +253,40 @@ namespace RingContact
       for (const auto i : rows)
         if (kinds[i] != multiplier)
           {
-            int     n;
-            double *values;
-            int    *columns;
-            k.ExtractMyRowView(k.LRID(static_cast<int>(i)), n, values, columns);
-            row_sum.clear();
-            for (int c = 0; c < n; ++c)
-              {
-                const auto j =
-                  static_cast<types::global_dof_index>(k.GCID(columns[c]));
-                if (kinds[j] != multiplier)
-                  row_sum[block_index[j]] += values[c];
-              }
-            for (; e < B_row.size() && B_row[e] == q; ++e)
-              if (const auto row = C_row.find(B_column[e]);
-                  row != C_row.end() && gamma_k[B_column[e]] != 0)
-                for (const auto &[l, c] : row->second)
-                  row_sum[l] += B_value[e] * gamma_k[B_column[e]] * c;
+            // A's row; where B couples it, plus B Gamma C (summed by column).
             columns_A.clear();
             values_A.clear();
-            for (const auto &[l, value] : row_sum)
+            for_each_entry(k, i, [&](const auto j, const double value) {
+              if (kinds[j] != multiplier)
+                {
+                  columns_A.push_back(block_index[j]);
+                  values_A.push_back(value);
+                }
+            });
+            if (e < B_row.size() && B_row[e] == q)
               {
-                columns_A.push_back(l);
-                values_A.push_back(value);
+                row_sum.clear();
+                for (std::size_t c = 0; c < columns_A.size(); ++c)
+                  row_sum[columns_A[c]] += values_A[c];
+                for (; e < B_row.size() && B_row[e] == q; ++e)
+                  if (const auto row = C_row.find(B_column[e]);
+                      row != C_row.end() && gamma_k[B_column[e]] != 0)
+                    for (const auto &[l, c] : row->second)
+                      row_sum[l] += B_value[e] * gamma_k[B_column[e]] * c;
+                columns_A.clear();
+                values_A.clear();
+                for (const auto &[l, value] : row_sum)
+                  {
+                    columns_A.push_back(l);
+                    values_A.push_back(value);
+                  }
+                A_diagonal[block_index[i]] = row_sum[block_index[i]];
               }
             A.set(block_index[i],
                   columns_A.size(),
                   columns_A.data(),
                   values_A.data(),
                   false);
-            if (const auto d = A_diagonal.find(block_index[i]);
-                d != A_diagonal.end())
-              d->second = row_sum[block_index[i]];
             ++q;
           }
     }
