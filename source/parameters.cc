@@ -769,7 +769,10 @@ namespace RingContact
                         Patterns::Anything(),
                         "Program = steps: the pseudo-times at the ends of "
                         "the steps, increasing from above 0, e.g. '0.1, "
-                        "0.5, 1' (empty: 'Number of steps' equal steps).");
+                        "0.5, 1', and ranges from:step:to of equal steps "
+                        "after 'from' up to 'to', e.g. '0:0.02:1, "
+                        "1:0.005:2' (empty: 'Number of steps' equal "
+                        "steps).");
       prm.declare_entry(
         "Loading",
         "imposed displacements",
@@ -832,15 +835,44 @@ namespace RingContact
       else
         for (const auto &item : Utilities::split_string_list(points_text))
           {
-            double t = std::nan("");
-            try
+            const double previous =
+              time_points.empty() ? 0.0 : time_points.back();
+            const auto number = [&](const std::string &text) {
+              double t = std::nan("");
+              try
+                {
+                  t = Utilities::string_to_double(Utilities::trim(text));
+                }
+              catch (...)
+                {}
+              return t;
+            };
+            const auto parts = Utilities::split_string_list(item, ':');
+            if (parts.size() == 3)
               {
-                t = Utilities::string_to_double(item);
+                // from:step:to, the points after `from` up to `to`.
+                const double from = number(parts[0]), step = number(parts[1]),
+                             to = number(parts[2]);
+                const double n =
+                  std::round((to - from) / std::max(step, 1e-300));
+                require(std::isfinite(from) && std::isfinite(step) &&
+                          std::isfinite(to) && from >= previous && step > 0 &&
+                          to > from && n <= 100000 &&
+                          std::abs(n * step - (to - from)) <=
+                            1e-9 * (to - from),
+                        "Load program",
+                        "Time points",
+                        "has the range '" + printable(item) +
+                          "': a range is from:step:to with from at or after "
+                          "the previous point, step > 0 dividing to - from "
+                          "(e.g. 0:0.02:1, 1:0.005:2)");
+                for (unsigned int k = 1; k <= n; ++k)
+                  time_points.push_back(k == n ? to :
+                                                 from + (to - from) * k / n);
+                continue;
               }
-            catch (...)
-              {}
-            require(std::isfinite(t) && std::abs(t) < 1e300 &&
-                      t > (time_points.empty() ? 0.0 : time_points.back()),
+            const double t = parts.size() == 1 ? number(item) : std::nan("");
+            require(std::isfinite(t) && std::abs(t) < 1e300 && t > previous,
                     "Load program",
                     "Time points",
                     "must be increasing finite numbers above 0, got '" +

@@ -124,6 +124,11 @@ main()
                "subsection Mesh\n set Sector elements = 4\nend\n"
                "subsection Contact\n set Friction coefficient = 0.1\nend\n",
                "friction is not implemented with cyclic symmetry");
+  expect_error("time_point_range_not_divided",
+               "subsection Problem\n set Scenario = general\nend\n"
+               "subsection Load program\n set Program = steps\n"
+               " set Time points = 0:0.3:1\nend\n",
+               "a range is from:step:to");
   expect_error("linear_tolerance_too_large",
                "subsection Newton\n set Linear solver = iterative\n"
                " set Linear tolerance = 1e-3\nend\n",
