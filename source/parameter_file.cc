@@ -172,6 +172,11 @@ namespace RingContact
               {
                 prm.set(entry, value);
               }
+            catch (const ParameterError &e)
+              {
+                // The entry's own check (its action) refused the value.
+                fail(file, line_number, e.what());
+              }
             catch (const ParameterHandler::ExcEntryUndeclared &)
               {
                 fail(file,

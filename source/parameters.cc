@@ -42,33 +42,39 @@ namespace RingContact
                                subsection + "' " + what);
     }
 
+    Condition
+    positive(const std::string &what)
+    {
+      return {[](const double x) { return x > 0; }, what};
+    }
+
+    Condition
+    not_negative()
+    {
+      return {nullptr, "", 0};
+    }
+
     // The value of an entry as a finite double. The pattern has accepted
     // the text, but e.g. 1e-320 (a denormal) or 1e999 still cannot be
     // converted by deal.II: say so, naming the entry and the value.
     double
-    get_double(ParameterHandler  &prm,
-               const std::string &subsection,
-               const std::string &entry)
+    number_from_text(const std::string &text,
+                     const std::string &subsection,
+                     const std::string &entry)
     {
-      const std::string text  = prm.get(entry);
-      double            value = 0;
-      bool              ok    = true;
+      double value = 0;
+      bool   ok    = true;
       try
         {
-          value = prm.get_double(entry);
+          value = Utilities::string_to_double(text);
         }
       catch (...)
         {
           ok = false;
         }
-      require(ok && std::isfinite(value),
-              subsection,
-              entry,
-              "has the value '" + printable(text) +
-                "', which is not a usable number (a floating-point number "
-                "between 1e-300 and 1e300 in magnitude, or 0)");
-      require(value == 0 ||
-                (std::abs(value) >= 1e-300 && std::abs(value) <= 1e300),
+      require(ok && std::isfinite(value) &&
+                (value == 0 ||
+                 (std::abs(value) >= 1e-300 && std::abs(value) <= 1e300)),
               subsection,
               entry,
               "has the value '" + printable(text) +
@@ -77,35 +83,96 @@ namespace RingContact
       return value;
     }
 
-    // The value of an integer entry, in [lowest, highest].
-    unsigned int
-    get_count(ParameterHandler  &prm,
-              const std::string &subsection,
-              const std::string &entry,
-              const long         lowest,
-              const long         highest)
+    Subsection::Subsection(ParameterHandler &prm, const std::string &name)
+        : name(name)
+        , prm(prm)
     {
-      const std::string text  = prm.get(entry);
-      long              value = 0;
-      bool              ok    = true;
-      try
-        {
-          value = prm.get_integer(entry);
-        }
-      catch (...)
-        {
-          ok = false;
-        }
-      require(ok,
-              subsection,
-              entry,
-              "has the value '" + printable(text) + "', not an integer");
-      require(value >= lowest && value <= highest,
-              subsection,
-              entry,
-              "must be between " + std::to_string(lowest) + " and " +
-                std::to_string(highest) + ", got " + std::to_string(value));
-      return static_cast<unsigned int>(value);
+      prm.enter_subsection(name);
+    }
+
+    Subsection::~Subsection()
+    {
+      prm.leave_subsection();
+    }
+
+    void
+    Subsection::add(const std::string           &entry,
+                    const std::string           &default_value,
+                    const Patterns::PatternBase &pattern,
+                    const std::string           &documentation,
+                    const std::function<void(const std::string &)> &read)
+    {
+      prm.declare_entry(entry, default_value, pattern, documentation);
+      // Run on the default now, and on every value the file sets.
+      prm.add_action(entry, read);
+    }
+
+    void
+    Subsection::add(const std::string &entry,
+                    double            &variable,
+                    const std::string &default_value,
+                    const std::string &documentation,
+                    const Condition   &condition)
+    {
+      const std::string section = name;
+      add(entry,
+          default_value,
+          Patterns::Double(condition.lowest),
+          documentation,
+          [&variable, section, entry, condition](const std::string &text) {
+            const double value = number_from_text(text, section, entry);
+            require(!condition.holds || condition.holds(value),
+                    section,
+                    entry,
+                    condition.what + ", got " + to_text(value));
+            variable = value;
+          });
+    }
+
+    void
+    Subsection::add(const std::string &entry,
+                    unsigned int      &variable,
+                    const std::string &default_value,
+                    const int          lowest,
+                    const int          highest,
+                    const std::string &documentation)
+    {
+      add(entry,
+          default_value,
+          Patterns::Integer(lowest, highest),
+          documentation,
+          [&variable](const std::string &text) {
+            variable = Utilities::string_to_int(text);
+          });
+    }
+
+    void
+    Subsection::add(const std::string &entry,
+                    bool              &variable,
+                    const std::string &default_value,
+                    const std::string &documentation)
+    {
+      add(entry,
+          default_value,
+          Patterns::Bool(),
+          documentation,
+          [&variable](const std::string &text) {
+            variable = (text == "true" || text == "yes");
+          });
+    }
+
+    void
+    Subsection::add(const std::string           &entry,
+                    std::string                 &variable,
+                    const std::string           &default_value,
+                    const std::string           &documentation,
+                    const Patterns::PatternBase &pattern)
+    {
+      add(entry,
+          default_value,
+          pattern,
+          documentation,
+          [&variable](const std::string &text) { variable = text; });
     }
 
     std::vector<std::pair<std::string, std::string>>
@@ -150,13 +217,13 @@ namespace RingContact
     }
 
     void
-    get_steps(ParameterHandler          &prm,
-              const std::string         &subsection,
-              const std::string         &entry,
-              bool                      &every_step,
-              std::vector<unsigned int> &steps)
+    steps_from_text(const std::string         &text,
+                    const std::string         &subsection,
+                    const std::string         &entry,
+                    bool                      &every_step,
+                    std::vector<unsigned int> &steps)
     {
-      const std::string steps_text = Utilities::trim(prm.get(entry));
+      const std::string steps_text = Utilities::trim(text);
       require(!steps_text.empty(),
               subsection,
               entry,
@@ -197,12 +264,11 @@ namespace RingContact
     }
 
     std::array<double, 2>
-    get_point(ParameterHandler  &prm,
-              const std::string &subsection,
-              const std::string &entry)
+    point_from_text(const std::string &text,
+                    const std::string &subsection,
+                    const std::string &entry)
     {
-      const std::string     text = prm.get(entry);
-      const auto            xy   = Utilities::split_string_list(text);
+      const auto            xy = Utilities::split_string_list(text);
       std::array<double, 2> point;
       for (unsigned int d = 0; d < 2; ++d)
         {
@@ -287,99 +353,115 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  MeshParameters::declare_parameters(ParameterHandler &prm)
+  MeshParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Mesh");
-    {
-      prm.declare_entry("Mesh source",
-                        "generated",
-                        Patterns::Selection("generated|gmsh file|patch test"),
-                        "generated: the two rings are built in code; gmsh "
-                        "file: read from 'Mesh file'; patch test: instead of "
-                        "the rings, two 1 x 0.5 m blocks with non-matching "
-                        "meshes pressed together (the upper one is the slave "
-                        "body, 101, the lower one the master, 100).");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::Anything(),
-                        "gmsh mesh with the physical tags of SSNP152 (100, "
-                        "101, 200, 300, 400, 500), read by gmsh's own "
-                        "library: a .msh file (formats 1, 2.2 and 4.1, "
-                        "ASCII or binary; quadrilaterals of 4, 8 or 9 nodes "
-                        "and lines of 2 or 3 nodes), or a gmsh script "
-                        "(.geo) that gmsh meshes in 2d when the program "
-                        "reads it, with elements of order 1 if both rings "
-                        "have displacement degree 1 and 2 otherwise (see "
-                        "'Geo parameters'; a script is a program: give only "
-                        "trusted ones). The cells are the vertices only: "
-                        "the circles come from the polar geometry, and "
-                        "quadratic nodes on the circles are checked to lie "
-                        "on them. A relative path is taken from the folder "
-                        "of the .prm file that sets it (an included file's "
-                        "own folder).");
-      prm.declare_entry("Geo parameters",
-                        "",
-                        Patterns::Anything(),
-                        "Numbers handed to a .geo 'Mesh file', as gmsh's "
-                        "'-setnumber name value' does: comma-separated "
-                        "'name = value' pairs, e.g. 'Ne = 80, Nr1 = 6'. "
-                        "Each name must be set in the script with "
-                        "DefineConstant[] (a plain assignment in the script "
-                        "overrides the number) and must occur in it. Empty: "
-                        "the script's own values. Only with a .geo file.");
-      prm.declare_entry("Elements around",
-                        "40",
-                        Patterns::Integer(3),
-                        "Number of elements around every circle (generated "
-                        "mesh).");
-      prm.declare_entry("Radial elements outer ring",
-                        "3",
-                        Patterns::Integer(1),
-                        "Elements across the outer ring (generated mesh).");
-      prm.declare_entry("Radial elements inner ring",
-                        "3",
-                        Patterns::Integer(1),
-                        "Elements across the inner ring (generated mesh).");
-      prm.declare_entry("Global refinements",
-                        "0",
-                        Patterns::Integer(0, 8),
-                        "Uniform refinements of the mesh; new vertices are "
-                        "placed on the circles.");
-      prm.declare_entry(
-        "Sector elements",
-        "0",
-        Patterns::Integer(0),
-        "Cyclic symmetry (generated mesh): model only a sector of this many "
-        "elements around, from angle 0, with the displacements of its two "
-        "radial sides tied by the rotation through the sector angle and the "
-        "master surface continued by rotated copies. The rings, their "
-        "meshes and the loads repeat every element, so the solution is the "
-        "whole rings' (to round-off) at a fraction of the cost. 0: the "
-        "whole rings.");
-      prm.declare_entry("Patch test elements lower block",
-                        "5",
-                        Patterns::Integer(1),
-                        "Patch test: elements along the interface, lower "
-                        "(master) block.");
-      prm.declare_entry("Patch test elements upper block",
-                        "7",
-                        Patterns::Integer(1),
-                        "Patch test: elements along the interface, upper "
-                        "(slave) block.");
-      prm.declare_entry("Outer radius",
-                        "1.0",
-                        Patterns::Double(),
-                        "R1, outer radius of the outer ring [m].");
-      prm.declare_entry("Interface radius",
-                        "0.6",
-                        Patterns::Double(),
-                        "R2, radius of the contact interface [m].");
-      prm.declare_entry("Inner radius",
-                        "0.2",
-                        Patterns::Double(),
-                        "R3, inner radius of the inner ring [m].");
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Mesh");
+    s.add("Mesh source",
+          source,
+          "generated",
+          {{"generated", MeshSource::generated},
+           {"gmsh file", MeshSource::gmsh_file},
+           {"patch test", MeshSource::patch_test}},
+          "generated: the two rings are built in code; gmsh "
+          "file: read from 'Mesh file'; patch test: instead of "
+          "the rings, two 1 x 0.5 m blocks with non-matching "
+          "meshes pressed together (the upper one is the slave "
+          "body, 101, the lower one the master, 100).");
+    s.add("Mesh file",
+          mesh_file,
+          "",
+          "gmsh mesh with the physical tags of SSNP152 (100, "
+          "101, 200, 300, 400, 500), read by gmsh's own "
+          "library: a .msh file (formats 1, 2.2 and 4.1, "
+          "ASCII or binary; quadrilaterals of 4, 8 or 9 nodes "
+          "and lines of 2 or 3 nodes), or a gmsh script "
+          "(.geo) that gmsh meshes in 2d when the program "
+          "reads it, with elements of order 1 if both rings "
+          "have displacement degree 1 and 2 otherwise (see "
+          "'Geo parameters'; a script is a program: give only "
+          "trusted ones). The cells are the vertices only: "
+          "the circles come from the polar geometry, and "
+          "quadratic nodes on the circles are checked to lie "
+          "on them. A relative path is taken from the folder "
+          "of the .prm file that sets it (an included file's "
+          "own folder).");
+    s.add("Geo parameters",
+          "",
+          Patterns::Anything(),
+          "Numbers handed to a .geo 'Mesh file', as gmsh's "
+          "'-setnumber name value' does: comma-separated "
+          "'name = value' pairs, e.g. 'Ne = 80, Nr1 = 6'. "
+          "Each name must be set in the script with "
+          "DefineConstant[] (a plain assignment in the script "
+          "overrides the number) and must occur in it. Empty: "
+          "the script's own values. Only with a .geo file.",
+          [this](const std::string &text) {
+            geo_numbers = parse_geo_numbers(text);
+          });
+    s.add("Elements around",
+          elements_around,
+          "40",
+          3,
+          10000000,
+          "Number of elements around every circle (generated mesh).");
+    s.add("Radial elements outer ring",
+          radial_elements_outer,
+          "3",
+          1,
+          10000000,
+          "Elements across the outer ring (generated mesh).");
+    s.add("Radial elements inner ring",
+          radial_elements_inner,
+          "3",
+          1,
+          10000000,
+          "Elements across the inner ring (generated mesh).");
+    s.add("Global refinements",
+          global_refinements,
+          "0",
+          0,
+          8,
+          "Uniform refinements of the mesh; new vertices are "
+          "placed on the circles.");
+    s.add("Sector elements",
+          sector_elements,
+          "0",
+          0,
+          10000000,
+          "Cyclic symmetry (generated mesh): model only a sector of this many "
+          "elements around, from angle 0, with the displacements of its two "
+          "radial sides tied by the rotation through the sector angle and the "
+          "master surface continued by rotated copies. The rings, their "
+          "meshes and the loads repeat every element, so the solution is the "
+          "whole rings' (to round-off) at a fraction of the cost. 0: the "
+          "whole rings.");
+    s.add("Patch test elements lower block",
+          patch_elements_lower,
+          "5",
+          1,
+          100000,
+          "Patch test: elements along the interface, lower "
+          "(master) block.");
+    s.add("Patch test elements upper block",
+          patch_elements_upper,
+          "7",
+          1,
+          100000,
+          "Patch test: elements along the interface, upper "
+          "(slave) block.");
+    s.add("Outer radius",
+          outer_radius,
+          "1.0",
+          "R1, outer radius of the outer ring [m].");
+    s.add("Interface radius",
+          interface_radius,
+          "0.6",
+          "R2, radius of the contact interface [m].");
+    s.add("Inner radius",
+          inner_radius,
+          "0.2",
+          "R3, inner radius of the inner ring [m].",
+          positive("must be positive (R3 > 0)"));
   }
 
   double
@@ -389,103 +471,74 @@ namespace RingContact
   }
 
   void
-  MeshParameters::parse_parameters(ParameterHandler  &prm,
-                                   const std::string &prm_folder)
+  MeshParameters::finish(const std::string &prm_folder)
   {
-    prm.enter_subsection("Mesh");
-    {
-      const std::string source_name = prm.get("Mesh source");
-      source = source_name == "generated"  ? MeshSource::generated :
-               source_name == "patch test" ? MeshSource::patch_test :
-                                             MeshSource::gmsh_file;
-      patch_elements_lower =
-        get_count(prm, "Mesh", "Patch test elements lower block", 1, 100000);
-      patch_elements_upper =
-        get_count(prm, "Mesh", "Patch test elements upper block", 1, 100000);
-      mesh_file = prm.get("Mesh file");
-      if (source == MeshSource::gmsh_file)
-        {
-          require(!mesh_file.empty(),
+    if (source == MeshSource::gmsh_file)
+      {
+        require(!mesh_file.empty(),
+                "Mesh",
+                "Mesh file",
+                "is empty but 'Mesh source' is 'gmsh file'");
+        std::filesystem::path path(mesh_file);
+        if (path.is_relative())
+          path = std::filesystem::path(prm_folder) / path;
+        mesh_file = path.lexically_normal().string();
+        std::error_code error;
+        require(std::filesystem::exists(mesh_file, error),
+                "Mesh",
+                "Mesh file",
+                "names a file that does not exist: " + printable(mesh_file));
+        require(std::filesystem::is_regular_file(mesh_file, error),
+                "Mesh",
+                "Mesh file",
+                "names something that is not a regular file: " +
+                  printable(mesh_file));
+      }
+    require(geo_numbers.empty() || (source == MeshSource::gmsh_file &&
+                                    Geometry::is_geo_file(mesh_file)),
+            "Mesh",
+            "Geo parameters",
+            "needs a gmsh script as mesh ('Mesh source' = gmsh file and "
+            "a 'Mesh file' ending in .geo)");
+    if (!geo_numbers.empty())
+      {
+        // gmsh 4.8's API cannot list a script's variables, and gmsh
+        // ignores a number the script does not use: at least catch a
+        // misspelt name.
+        const std::string script =
+          read_text_file(mesh_file, "mesh file", max_geo_file_bytes);
+        for (const auto &[name, value] : geo_numbers)
+          require(occurs_as_word(script, name),
                   "Mesh",
-                  "Mesh file",
-                  "is empty but 'Mesh source' is 'gmsh file'");
-          std::filesystem::path path(mesh_file);
-          if (path.is_relative())
-            path = std::filesystem::path(prm_folder) / path;
-          mesh_file = path.lexically_normal().string();
-          std::error_code error;
-          require(std::filesystem::exists(mesh_file, error),
-                  "Mesh",
-                  "Mesh file",
-                  "names a file that does not exist: " + printable(mesh_file));
-          require(std::filesystem::is_regular_file(mesh_file, error),
-                  "Mesh",
-                  "Mesh file",
-                  "names something that is not a regular file: " +
-                    printable(mesh_file));
-        }
-      geo_numbers = parse_geo_numbers(prm.get("Geo parameters"));
-      require(geo_numbers.empty() || (source == MeshSource::gmsh_file &&
-                                      Geometry::is_geo_file(mesh_file)),
-              "Mesh",
-              "Geo parameters",
-              "needs a gmsh script as mesh ('Mesh source' = gmsh file and "
-              "a 'Mesh file' ending in .geo)");
-      if (!geo_numbers.empty())
-        {
-          // gmsh 4.8's API cannot list a script's variables, and gmsh
-          // ignores a number the script does not use: at least catch a
-          // misspelt name.
-          const std::string script =
-            read_text_file(mesh_file, "mesh file", max_geo_file_bytes);
-          for (const auto &[name, value] : geo_numbers)
-            require(occurs_as_word(script, name),
-                    "Mesh",
-                    "Geo parameters",
-                    "names '" + name + "', which does not occur in " +
-                      printable(mesh_file, 200));
-        }
-      elements_around = get_count(prm, "Mesh", "Elements around", 3, 10000000);
-      radial_elements_outer =
-        get_count(prm, "Mesh", "Radial elements outer ring", 1, 10000000);
-      radial_elements_inner =
-        get_count(prm, "Mesh", "Radial elements inner ring", 1, 10000000);
-      global_refinements = get_count(prm, "Mesh", "Global refinements", 0, 8);
-      sector_elements = get_count(prm, "Mesh", "Sector elements", 0, 10000000);
-      require(sector_elements == 0 || source == MeshSource::generated,
-              "Mesh",
-              "Sector elements",
-              "needs 'Mesh source' = generated (a sector is built in code)");
-      require(sector_elements <= elements_around,
-              "Mesh",
-              "Sector elements",
-              "must be at most 'Elements around' (0: the whole rings)");
-      outer_radius     = get_double(prm, "Mesh", "Outer radius");
-      interface_radius = get_double(prm, "Mesh", "Interface radius");
-      inner_radius     = get_double(prm, "Mesh", "Inner radius");
-      require(inner_radius > 0,
-              "Mesh",
-              "Inner radius",
-              "must be positive (R3 > 0), got " + to_text(inner_radius));
-      require(inner_radius < interface_radius,
-              "Mesh",
-              "Inner radius",
-              "must be smaller than 'Interface radius' (R3 < R2)");
-      require(interface_radius < outer_radius,
-              "Mesh",
-              "Interface radius",
-              "must be smaller than 'Outer radius' (R2 < R1)");
-      // The meshes identify their circles to 1e-8 R1: each ring must be
-      // much thicker than that.
-      require(interface_radius - inner_radius >= 1e-4 * outer_radius &&
-                outer_radius - interface_radius >= 1e-4 * outer_radius,
-              "Mesh",
-              "Interface radius",
-              "leaves a ring thinner than 1e-4 R1 (R1 = " +
-                to_text(outer_radius) + ", R2 = " + to_text(interface_radius) +
-                ", R3 = " + to_text(inner_radius) + ")");
-    }
-    prm.leave_subsection();
+                  "Geo parameters",
+                  "names '" + name + "', which does not occur in " +
+                    printable(mesh_file, 200));
+      }
+    require(sector_elements == 0 || source == MeshSource::generated,
+            "Mesh",
+            "Sector elements",
+            "needs 'Mesh source' = generated (a sector is built in code)");
+    require(sector_elements <= elements_around,
+            "Mesh",
+            "Sector elements",
+            "must be at most 'Elements around' (0: the whole rings)");
+    require(inner_radius < interface_radius,
+            "Mesh",
+            "Inner radius",
+            "must be smaller than 'Interface radius' (R3 < R2)");
+    require(interface_radius < outer_radius,
+            "Mesh",
+            "Interface radius",
+            "must be smaller than 'Outer radius' (R2 < R1)");
+    // The meshes identify their circles to 1e-8 R1: each ring must be
+    // much thicker than that.
+    require(interface_radius - inner_radius >= 1e-4 * outer_radius &&
+              outer_radius - interface_radius >= 1e-4 * outer_radius,
+            "Mesh",
+            "Interface radius",
+            "leaves a ring thinner than 1e-4 R1 (R1 = " +
+              to_text(outer_radius) + ", R2 = " + to_text(interface_radius) +
+              ", R3 = " + to_text(inner_radius) + ")");
   }
 
   // ------------------------------------------------------------------
@@ -493,82 +546,55 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  MaterialParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Materials");
-    {
-      prm.declare_entry("Young's modulus outer ring",
-                        "1e9",
-                        Patterns::Double(),
-                        "E1 [Pa], > 0.");
-      prm.declare_entry("Poisson's ratio outer ring",
-                        "0.2",
-                        Patterns::Double(),
-                        "nu1 [-], -1 < nu1 < 0.5.");
-      prm.declare_entry("Young's modulus inner ring",
-                        "1e9",
-                        Patterns::Double(),
-                        "E2 [Pa], > 0.");
-      prm.declare_entry("Poisson's ratio inner ring",
-                        "0.2",
-                        Patterns::Double(),
-                        "nu2 [-], -1 < nu2 < 0.5.");
-      prm.declare_entry("Kinematics",
-                        "finite strain",
-                        Patterns::Selection(kinematics_names),
-                        "finite strain: total Lagrangian Saint Venant-"
-                        "Kirchhoff (Green-Lagrange strain, second Piola-"
-                        "Kirchhoff stress; the original's GROT_GDEP); small "
-                        "strain: linear elasticity; logarithmic strain: "
-                        "Hencky, the linear law on the logarithmic strain "
-                        "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
-                        "stress the out-of-plane stress conjugate to it is "
-                        "zero); neo-Hookean: the compressible neo-Hookean "
-                        "law W = mu/2 (tr C - 3 - 2 ln J) + lambda/2 (ln "
-                        "J)^2 (finite strain; linear elasticity at small "
-                        "strain; in plane stress F33 from sigma33 = 0).");
-      prm.declare_entry("Plane assumption",
-                        "plane stress",
-                        Patterns::Selection("plane stress|plane strain"),
-                        "plane stress (S33 = 0, C_PLAN) or plane strain "
-                        "(E33 = 0, D_PLAN).");
-    }
-    prm.leave_subsection();
-  }
-
-  void
-  MaterialParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Materials");
-    {
-      youngs_modulus_outer =
-        get_double(prm, "Materials", "Young's modulus outer ring");
-      poissons_ratio_outer =
-        get_double(prm, "Materials", "Poisson's ratio outer ring");
-      youngs_modulus_inner =
-        get_double(prm, "Materials", "Young's modulus inner ring");
-      poissons_ratio_inner =
-        get_double(prm, "Materials", "Poisson's ratio inner ring");
-      for (const auto &[E, name] :
-           {std::make_pair(youngs_modulus_outer, "outer"),
-            std::make_pair(youngs_modulus_inner, "inner")})
-        require(E > 0,
-                "Materials",
-                std::string("Young's modulus ") + name + " ring",
-                "must be positive, got " + to_text(E));
-      for (const auto &[nu, name] :
-           {std::make_pair(poissons_ratio_outer, "outer"),
-            std::make_pair(poissons_ratio_inner, "inner")})
-        require(nu > -1 && nu < 0.5,
-                "Materials",
-                std::string("Poisson's ratio ") + name + " ring",
-                "must satisfy -1 < nu < 0.5, got " + to_text(nu));
-      kinematics = kinematics_from_name(prm.get("Kinematics"));
-      plane      = prm.get("Plane assumption") == "plane stress" ?
-                     PlaneAssumption::plane_stress :
-                     PlaneAssumption::plane_strain;
-    }
-    prm.leave_subsection();
+    Subsection      s(prm, "Materials");
+    const Condition poisson = {[](const double nu) {
+                                 return nu > -1 && nu < 0.5;
+                               },
+                               "must satisfy -1 < nu < 0.5"};
+    s.add("Young's modulus outer ring",
+          youngs_modulus_outer,
+          "1e9",
+          "E1 [Pa], > 0.",
+          positive());
+    s.add("Poisson's ratio outer ring",
+          poissons_ratio_outer,
+          "0.2",
+          "nu1 [-], -1 < nu1 < 0.5.",
+          poisson);
+    s.add("Young's modulus inner ring",
+          youngs_modulus_inner,
+          "1e9",
+          "E2 [Pa], > 0.",
+          positive());
+    s.add("Poisson's ratio inner ring",
+          poissons_ratio_inner,
+          "0.2",
+          "nu2 [-], -1 < nu2 < 0.5.",
+          poisson);
+    s.add("Kinematics",
+          kinematics,
+          "finite strain",
+          kinematics_choices(),
+          "finite strain: total Lagrangian Saint Venant-"
+          "Kirchhoff (Green-Lagrange strain, second Piola-"
+          "Kirchhoff stress; the original's GROT_GDEP); small "
+          "strain: linear elasticity; logarithmic strain: "
+          "Hencky, the linear law on the logarithmic strain "
+          "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
+          "stress the out-of-plane stress conjugate to it is "
+          "zero); neo-Hookean: the compressible neo-Hookean "
+          "law W = mu/2 (tr C - 3 - 2 ln J) + lambda/2 (ln "
+          "J)^2 (finite strain; linear elasticity at small "
+          "strain; in plane stress F33 from sigma33 = 0).");
+    s.add("Plane assumption",
+          plane,
+          "plane stress",
+          {{"plane stress", PlaneAssumption::plane_stress},
+           {"plane strain", PlaneAssumption::plane_strain}},
+          "plane stress (S33 = 0, C_PLAN) or plane strain "
+          "(E33 = 0, D_PLAN).");
   }
 
   // ------------------------------------------------------------------
@@ -576,60 +602,47 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  FiniteElementParameters::declare_parameters(ParameterHandler &prm)
+  FiniteElementParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Finite elements");
-    {
-      prm.declare_entry("Displacement degree outer ring",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the displacement on the outer "
-                        "ring (1: Q1, 2: 9-node Q2).");
-      prm.declare_entry("Displacement degree inner ring",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the displacement on the inner "
-                        "ring.");
-      prm.declare_entry("Multiplier degree",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Degree of the contact pressure (Lagrange multiplier) "
-                        "on the slave surface; at most the slave's "
-                        "displacement degree.");
-      prm.declare_entry("Mapping degree",
-                        "1",
-                        Patterns::Integer(0, 4),
-                        "1: straight element edges (faceted circles, as the "
-                        "original's linear mesh); 2 or more: edges follow the "
-                        "circles (polar manifold); 0: isoparametric, each "
-                        "ring's mapping degree is its displacement degree "
-                        "(as the original's meshes: linear rings faceted, "
-                        "quadratic rings curved).");
-      prm.declare_entry("Reduced integration",
-                        "false",
-                        Patterns::Bool(),
-                        "Integrate the bulk with p x p Gauss points instead of "
-                        "(p+1) x (p+1).");
-    }
-    prm.leave_subsection();
-  }
-
-  void
-  FiniteElementParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Finite elements");
-    {
-      degree_outer = get_count(
-        prm, "Finite elements", "Displacement degree outer ring", 1, 2);
-      degree_inner = get_count(
-        prm, "Finite elements", "Displacement degree inner ring", 1, 2);
-      multiplier_degree =
-        get_count(prm, "Finite elements", "Multiplier degree", 1, 2);
-      mapping_degree =
-        get_count(prm, "Finite elements", "Mapping degree", 0, 4);
-      reduced_integration = prm.get_bool("Reduced integration");
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Finite elements");
+    s.add("Displacement degree outer ring",
+          degree_outer,
+          "1",
+          1,
+          2,
+          "Polynomial degree of the displacement on the outer "
+          "ring (1: Q1, 2: 9-node Q2).");
+    s.add("Displacement degree inner ring",
+          degree_inner,
+          "1",
+          1,
+          2,
+          "Polynomial degree of the displacement on the inner "
+          "ring.");
+    s.add("Multiplier degree",
+          multiplier_degree,
+          "1",
+          1,
+          2,
+          "Degree of the contact pressure (Lagrange multiplier) "
+          "on the slave surface; at most the slave's "
+          "displacement degree.");
+    s.add("Mapping degree",
+          mapping_degree,
+          "1",
+          0,
+          4,
+          "1: straight element edges (faceted circles, as the "
+          "original's linear mesh); 2 or more: edges follow the "
+          "circles (polar manifold); 0: isoparametric, each "
+          "ring's mapping degree is its displacement degree "
+          "(as the original's meshes: linear rings faceted, "
+          "quadratic rings curved).");
+    s.add("Reduced integration",
+          reduced_integration,
+          "false",
+          "Integrate the bulk with p x p Gauss points instead of "
+          "(p+1) x (p+1).");
   }
 
   // ------------------------------------------------------------------
@@ -637,289 +650,271 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  ContactParameters::declare_parameters(ParameterHandler &prm)
+  ContactParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Contact");
-    {
-      prm.declare_entry("Slave boundary",
-                        "400",
-                        Patterns::Integer(0),
-                        "Boundary id (gmsh physical tag) of the slave surface, "
-                        "which carries the contact pressure: 400 (S2R2, inner "
-                        "ring) or 300 (S1R2, outer ring).");
-      prm.declare_entry("Master boundary",
-                        "300",
-                        Patterns::Integer(0),
-                        "Boundary id of the master surface (the normal is the "
-                        "master's outward normal).");
-      prm.declare_entry("Integration schemes",
-                        "nodal",
-                        Patterns::List(Patterns::Anything(), 1),
-                        "Comma-separated list; one analysis is run per scheme. "
-                        "nodal: at the slave nodes; Gauss n: n Gauss points "
-                        "per slave segment (1-20); Simpson n: composite "
-                        "Simpson with n sub-intervals; Newton-Cotes n: closed "
-                        "Newton-Cotes of order 1, 2, 4 or 6; segment-based "
-                        "n: each slave segment cut where the lines through "
-                        "the master vertices along their normals cross it, "
-                        "n Gauss points on each piece (mortar "
-                        "integration).");
-      prm.declare_entry("Smooth master normals",
-                        "false",
-                        Patterns::Bool(),
-                        "Use averaged nodal normals on the master surface "
-                        "(the original's LISSAGE).");
-      prm.declare_entry("Complementarity constant",
-                        "0",
-                        Patterns::Double(0),
-                        "c [Pa/m] in the complementarity function "
-                        "lambda - max(0, lambda - c g); it decides the active "
-                        "set, not the converged solution. 0: automatic, the "
-                        "largest Young's modulus over the smallest slave "
-                        "segment length.");
-      prm.declare_entry(
-        "Friction coefficient",
-        "0",
-        Patterns::Double(0),
-        "Coulomb's mu: the tangential traction |t| <= mu p, sticking below "
-        "the bound and opposed to the slip at it (a second multiplier on "
-        "the slave surface). 0: frictionless, without that multiplier.");
-      prm.declare_entry("Reported pressure",
-                        "Cauchy",
-                        Patterns::Selection("Cauchy|nominal"),
-                        "Cauchy: force per current length of the slave "
-                        "surface (the multiplier itself); nominal: force per "
-                        "reference length.");
-      prm.declare_entry("Probe point",
-                        "0.6, 0",
-                        Patterns::List(Patterns::Double(), 2, 2),
-                        "Reference position [m] of node A, the slave node "
-                        "whose pressure is checked (the nearest slave node is "
-                        "used). Not set: (R2, 0), node A of SSNP152 for any "
-                        "interface radius.");
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Contact");
+    s.add("Slave boundary",
+          slave_boundary_id,
+          "400",
+          0,
+          max_tag,
+          "Boundary id (gmsh physical tag) of the slave surface, "
+          "which carries the contact pressure: 400 (S2R2, inner "
+          "ring) or 300 (S1R2, outer ring).");
+    s.add("Master boundary",
+          master_boundary_id,
+          "300",
+          0,
+          max_tag,
+          "Boundary id of the master surface (the normal is the "
+          "master's outward normal).");
+    s.add("Integration schemes",
+          "nodal",
+          Patterns::List(Patterns::Anything(), 1),
+          "Comma-separated list; one analysis is run per scheme. "
+          "nodal: at the slave nodes; Gauss n: n Gauss points "
+          "per slave segment (1-20); Simpson n: composite "
+          "Simpson with n sub-intervals; Newton-Cotes n: closed "
+          "Newton-Cotes of order 1, 2, 4 or 6; segment-based "
+          "n: each slave segment cut where the lines through "
+          "the master vertices along their normals cross it, "
+          "n Gauss points on each piece (mortar "
+          "integration).",
+          [this](const std::string &text) {
+            schemes.clear();
+            for (const auto &entry : Utilities::split_string_list(text))
+              {
+                try
+                  {
+                    schemes.push_back(IntegrationScheme::parse(entry));
+                  }
+                catch (const std::exception &e)
+                  {
+                    require(false, "Contact", "Integration schemes", e.what());
+                  }
+              }
+          });
+    s.add("Smooth master normals",
+          smooth_master_normals,
+          "false",
+          "Use averaged nodal normals on the master surface "
+          "(the original's LISSAGE).");
+    s.add("Complementarity constant",
+          complementarity_constant,
+          "0",
+          "c [Pa/m] in the complementarity function "
+          "lambda - max(0, lambda - c g); it decides the active "
+          "set, not the converged solution. 0: automatic, the "
+          "largest Young's modulus over the smallest slave "
+          "segment length.",
+          not_negative());
+    s.add("Friction coefficient",
+          friction_coefficient,
+          "0",
+          "Coulomb's mu: the tangential traction |t| <= mu p, sticking below "
+          "the bound and opposed to the slip at it (a second multiplier on "
+          "the slave surface). 0: frictionless, without that multiplier.",
+          not_negative());
+    s.add("Reported pressure",
+          reported_pressure,
+          "Cauchy",
+          {{"Cauchy", PressureMeasure::cauchy},
+           {"nominal", PressureMeasure::nominal}},
+          "Cauchy: force per current length of the slave "
+          "surface (the multiplier itself); nominal: force per "
+          "reference length.");
+    s.add("Probe point",
+          "0.6, 0",
+          Patterns::List(Patterns::Double(), 2, 2),
+          "Reference position [m] of node A, the slave node "
+          "whose pressure is checked (the nearest slave node is "
+          "used). Not set: (R2, 0), node A of SSNP152 for any "
+          "interface radius.",
+          [this](const std::string &text) {
+            const auto xy = point_from_text(text, "Contact", "Probe point");
+            probe_point   = Point<2>(xy[0], xy[1]);
+          });
   }
 
   void
-  ContactParameters::parse_parameters(ParameterHandler &prm)
+  ContactParameters::finish() const
   {
-    prm.enter_subsection("Contact");
-    {
-      slave_boundary_id =
-        get_count(prm, "Contact", "Slave boundary", 0, 1000000000);
-      master_boundary_id =
-        get_count(prm, "Contact", "Master boundary", 0, 1000000000);
-      require(slave_boundary_id != master_boundary_id,
-              "Contact",
-              "Slave boundary",
-              "must differ from 'Master boundary' (both are " +
-                std::to_string(slave_boundary_id) + ")");
-      schemes.clear();
-      for (const auto &entry :
-           Utilities::split_string_list(prm.get("Integration schemes")))
-        {
-          try
-            {
-              schemes.push_back(IntegrationScheme::parse(entry));
-            }
-          catch (const std::exception &e)
-            {
-              require(false, "Contact", "Integration schemes", e.what());
-            }
-        }
-      smooth_master_normals = prm.get_bool("Smooth master normals");
-      complementarity_constant =
-        get_double(prm, "Contact", "Complementarity constant");
-      friction_coefficient = get_double(prm, "Contact", "Friction coefficient");
-      reported_pressure    = prm.get("Reported pressure") == "Cauchy" ?
-                               PressureMeasure::cauchy :
-                               PressureMeasure::nominal;
-      const auto xy        = get_point(prm, "Contact", "Probe point");
-      probe_point          = Point<2>(xy[0], xy[1]);
-    }
-    prm.leave_subsection();
+    require(slave_boundary_id != master_boundary_id,
+            "Contact",
+            "Slave boundary",
+            "must differ from 'Master boundary' (both are " +
+              std::to_string(slave_boundary_id) + ")");
   }
 
   // ------------------------------------------------------------------
   // Load program
   // ------------------------------------------------------------------
 
-  void
-  LoadParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Load program");
+    // The entry Time points: numbers and ranges from:step:to.
+    std::vector<double>
+    parse_time_points(const std::string &text)
     {
-      prm.declare_entry("Program",
-                        "ramp",
-                        Patterns::Selection("ramp|rotation|steps"),
-                        "ramp: p(t) = p0 10^(t - 1.1) at t = k dt, imposed "
-                        "radially (A, B, H); rotation: pressure fixed, the "
-                        "inner boundary turned through s elements (C-G); "
-                        "steps: the pseudo-times of 'Time points', or "
-                        "t = k / n for k = 1..n with n = 'Number of steps' "
-                        "(Problem/Scenario = general, whose expressions "
-                        "take t).");
-      prm.declare_entry("Number of steps",
-                        "1",
-                        Patterns::Integer(1),
-                        "Program = steps: n equal steps from t = 0 to 1.");
-      prm.declare_entry("Time points",
-                        "",
-                        Patterns::Anything(),
-                        "Program = steps: the pseudo-times at the ends of "
-                        "the steps, increasing from above 0, e.g. '0.1, "
-                        "0.5, 1', and ranges from:step:to of equal steps "
-                        "after 'from' up to 'to', e.g. '0:0.02:1, "
-                        "1:0.005:2' (empty: 'Number of steps' equal "
-                        "steps).");
-      prm.declare_entry(
-        "Loading",
-        "imposed displacements",
-        Patterns::Selection("imposed displacements|pressure"),
-        "imposed displacements: the analytic displacements of pressure p on "
-        "r = R1 and r = R3 (the original's loading, the only one the "
-        "rotation program takes); pressure: the pressure p on r = R1 as "
-        "the problem states it, on the current configuration (a follower "
-        "load; a dead load in small strain), r = R3 free, and each ring's "
-        "rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at "
-        "(0, r) of r = R1 and r = R3 (the symmetric solution satisfies "
-        "them; the mesh needs nodes there).");
-      prm.declare_entry("Reference pressure",
-                        "1e6",
-                        Patterns::Double(),
-                        "p0 [Pa] of the ramp (p = p0 at t = 1.1).");
-      prm.declare_entry("Ramp steps",
-                        "21",
-                        Patterns::Integer(1),
-                        "Number of steps of the ramp.");
-      prm.declare_entry("Time step",
-                        "0.1",
-                        Patterns::Double(),
-                        "dt of the ramp [pseudo-time].");
-      prm.declare_entry("Rotation pressure",
-                        "1e7",
-                        Patterns::Double(),
-                        "Equivalent pressure p [Pa] held during the rotation.");
-      prm.declare_entry("Rotation steps",
-                        "100",
-                        Patterns::Integer(1),
-                        "Nt, number of equal rotation steps.");
-      prm.declare_entry("Rotation in elements",
-                        "1",
-                        Patterns::Double(),
-                        "Final rotation parameter s: the angle is "
-                        "2 pi s / (elements around).");
+      std::vector<double> time_points;
+      const std::string   points_text = Utilities::trim(text);
+      for (const auto &item : Utilities::split_string_list(points_text))
+        {
+          const double previous =
+            time_points.empty() ? 0.0 : time_points.back();
+          const auto number = [&](const std::string &text) {
+            double t = std::nan("");
+            try
+              {
+                t = Utilities::string_to_double(Utilities::trim(text));
+              }
+            catch (...)
+              {}
+            return t;
+          };
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() == 3)
+            {
+              // from:step:to, the points after `from` up to `to`.
+              const double from = number(parts[0]), step = number(parts[1]),
+                           to = number(parts[2]);
+              const double n = std::round((to - from) / std::max(step, 1e-300));
+              require(std::isfinite(from) && std::isfinite(step) &&
+                        std::isfinite(to) && from >= previous && step > 0 &&
+                        to > from &&
+                        std::abs(n * step - (to - from)) <= 1e-9 * (to - from),
+                      "Load program",
+                      "Time points",
+                      "has the range '" + printable(item) +
+                        "': a range is from:step:to with from at or after "
+                        "the previous point, step > 0 dividing to - from "
+                        "(e.g. 0:0.02:1, 1:0.005:2)");
+              require(time_points.size() + n <= LoadParameters::max_steps,
+                      "Load program",
+                      "Time points",
+                      "gives more than " +
+                        std::to_string(LoadParameters::max_steps) +
+                        " steps (the range '" + printable(item) + "' has " +
+                        to_text(n) + ")");
+              for (unsigned int k = 1; k <= n; ++k)
+                time_points.push_back(k == n ? to : from + (to - from) * k / n);
+              continue;
+            }
+          const double t = parts.size() == 1 ? number(item) : std::nan("");
+          require(std::isfinite(t) && std::abs(t) < 1e300 && t > previous,
+                  "Load program",
+                  "Time points",
+                  "must be increasing finite numbers above 0, got '" +
+                    printable(item) + "' in '" + printable(points_text) + "'");
+          time_points.push_back(t);
+        }
+      require(time_points.size() <= LoadParameters::max_steps,
+              "Load program",
+              "Time points",
+              "gives more than " + std::to_string(LoadParameters::max_steps) +
+                " steps");
+      return time_points;
     }
-    prm.leave_subsection();
+  } // namespace
+
+  void
+  LoadParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Load program");
+    s.add("Program",
+          program,
+          "ramp",
+          {{"ramp", LoadProgramType::ramp},
+           {"rotation", LoadProgramType::rotation},
+           {"steps", LoadProgramType::steps}},
+          "ramp: p(t) = p0 10^(t - 1.1) at t = k dt, imposed "
+          "radially (A, B, H); rotation: pressure fixed, the "
+          "inner boundary turned through s elements (C-G); "
+          "steps: the pseudo-times of 'Time points', or "
+          "t = k / n for k = 1..n with n = 'Number of steps' "
+          "(Problem/Scenario = general, whose expressions "
+          "take t).");
+    s.add("Number of steps",
+          number_of_steps,
+          "1",
+          1,
+          max_steps,
+          "Program = steps: n equal steps from t = 0 to 1.");
+    s.add("Time points",
+          "",
+          Patterns::Anything(),
+          "Program = steps: the pseudo-times at the ends of "
+          "the steps, increasing from above 0, e.g. '0.1, "
+          "0.5, 1', and ranges from:step:to of equal steps "
+          "after 'from' up to 'to', e.g. '0:0.02:1, "
+          "1:0.005:2' (empty: 'Number of steps' equal "
+          "steps).",
+          [this](const std::string &text) {
+            time_points = parse_time_points(text);
+          });
+    s.add("Loading",
+          loading,
+          "imposed displacements",
+          {{"imposed displacements", Loading::imposed_displacements},
+           {"pressure", Loading::pressure}},
+          "imposed displacements: the analytic displacements of pressure p on "
+          "r = R1 and r = R3 (the original's loading, the only one the "
+          "rotation program takes); pressure: the pressure p on r = R1 as "
+          "the problem states it, on the current configuration (a follower "
+          "load; a dead load in small strain), r = R3 free, and each ring's "
+          "rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at "
+          "(0, r) of r = R1 and r = R3 (the symmetric solution satisfies "
+          "them; the mesh needs nodes there).");
+    s.add("Reference pressure",
+          reference_pressure,
+          "1e6",
+          "p0 [Pa] of the ramp (p = p0 at t = 1.1).",
+          positive());
+    s.add("Ramp steps",
+          ramp_steps,
+          "21",
+          1,
+          max_steps,
+          "Number of steps of the ramp.");
+    s.add("Time step",
+          time_step,
+          "0.1",
+          "dt of the ramp [pseudo-time].",
+          positive());
+    s.add("Rotation pressure",
+          rotation_pressure,
+          "1e7",
+          "Equivalent pressure p [Pa] held during the rotation.",
+          positive());
+    s.add("Rotation steps",
+          rotation_steps,
+          "100",
+          1,
+          max_steps,
+          "Nt, number of equal rotation steps.");
+    s.add("Rotation in elements",
+          rotation_elements,
+          "1",
+          "Final rotation parameter s: the angle is "
+          "2 pi s / (elements around).");
   }
 
   void
-  LoadParameters::parse_parameters(ParameterHandler &prm)
+  LoadParameters::finish()
   {
-    prm.enter_subsection("Load program");
-    {
-      const std::string program_name = prm.get("Program");
-      program = program_name == "ramp"     ? LoadProgramType::ramp :
-                program_name == "rotation" ? LoadProgramType::rotation :
-                                             LoadProgramType::steps;
-      time_points.clear();
-      const std::string points_text = Utilities::trim(prm.get("Time points"));
-      if (points_text.empty())
-        {
-          const unsigned int n =
-            get_count(prm, "Load program", "Number of steps", 1, 100000);
-          for (unsigned int k = 1; k <= n; ++k)
-            time_points.push_back(static_cast<double>(k) / n);
-        }
-      else
-        for (const auto &item : Utilities::split_string_list(points_text))
-          {
-            const double previous =
-              time_points.empty() ? 0.0 : time_points.back();
-            const auto number = [&](const std::string &text) {
-              double t = std::nan("");
-              try
-                {
-                  t = Utilities::string_to_double(Utilities::trim(text));
-                }
-              catch (...)
-                {}
-              return t;
-            };
-            const auto parts = Utilities::split_string_list(item, ':');
-            if (parts.size() == 3)
-              {
-                // from:step:to, the points after `from` up to `to`.
-                const double from = number(parts[0]), step = number(parts[1]),
-                             to = number(parts[2]);
-                const double n =
-                  std::round((to - from) / std::max(step, 1e-300));
-                require(std::isfinite(from) && std::isfinite(step) &&
-                          std::isfinite(to) && from >= previous && step > 0 &&
-                          to > from && n <= 100000 &&
-                          std::abs(n * step - (to - from)) <=
-                            1e-9 * (to - from),
-                        "Load program",
-                        "Time points",
-                        "has the range '" + printable(item) +
-                          "': a range is from:step:to with from at or after "
-                          "the previous point, step > 0 dividing to - from "
-                          "(e.g. 0:0.02:1, 1:0.005:2)");
-                for (unsigned int k = 1; k <= n; ++k)
-                  time_points.push_back(k == n ? to :
-                                                 from + (to - from) * k / n);
-                continue;
-              }
-            const double t = parts.size() == 1 ? number(item) : std::nan("");
-            require(std::isfinite(t) && std::abs(t) < 1e300 && t > previous,
-                    "Load program",
-                    "Time points",
-                    "must be increasing finite numbers above 0, got '" +
-                      printable(item) + "' in '" + printable(points_text) +
-                      "'");
-            time_points.push_back(t);
-          }
-      require(time_points.size() <= 100000,
-              "Load program",
-              "Time points",
-              "gives more than 100000 steps");
-      loading = prm.get("Loading") == "pressure" ?
-                  Loading::pressure :
-                  Loading::imposed_displacements;
-      reference_pressure =
-        get_double(prm, "Load program", "Reference pressure");
-      ramp_steps = get_count(prm, "Load program", "Ramp steps", 1, 100000);
-      time_step  = get_double(prm, "Load program", "Time step");
-      rotation_pressure = get_double(prm, "Load program", "Rotation pressure");
-      rotation_steps =
-        get_count(prm, "Load program", "Rotation steps", 1, 100000);
-      rotation_elements =
-        get_double(prm, "Load program", "Rotation in elements");
-      require(reference_pressure > 0,
-              "Load program",
-              "Reference pressure",
-              "must be positive, got " + to_text(reference_pressure));
-      require(time_step > 0,
-              "Load program",
-              "Time step",
-              "must be positive, got " + to_text(time_step));
-      // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
-      require(program != LoadProgramType::ramp ||
-                std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
-                  100,
-              "Load program",
-              "Time step",
-              "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
-              "exceed 1e100 Pa (n = " +
-                std::to_string(ramp_steps) + ", dt = " + to_text(time_step) +
-                ")");
-      require(rotation_pressure > 0,
-              "Load program",
-              "Rotation pressure",
-              "must be positive, got " + to_text(rotation_pressure));
-    }
-    prm.leave_subsection();
+    if (time_points.empty())
+      for (unsigned int k = 1; k <= number_of_steps; ++k)
+        time_points.push_back(static_cast<double>(k) / number_of_steps);
+    // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
+    require(program != LoadProgramType::ramp ||
+              std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
+                100,
+            "Load program",
+            "Time step",
+            "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
+            "exceed 1e100 Pa (n = " +
+              std::to_string(ramp_steps) + ", dt = " + to_text(time_step) +
+              ")");
   }
 
   // ------------------------------------------------------------------
@@ -927,88 +922,69 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  NewtonParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Newton");
-    {
-      prm.declare_entry("Maximum iterations",
-                        "12",
-                        Patterns::Integer(1),
-                        "Newton iterations before the step is cut.");
-      prm.declare_entry("Tolerance",
-                        "1e-10",
-                        Patterns::Double(0),
-                        "Converged when the active set no longer changes and "
-                        "(a) the residual of the free displacement rows "
-                        "relative to the reaction forces and (b) the largest "
-                        "gap of an active contact row relative to the largest "
-                        "displacement are each below this or at their "
-                        "round-off floor (10 eps times the magnitude of the "
-                        "terms of the rows, estimated at every iteration): "
-                        "scale-free, the same value fits any E, p and radii.");
-      prm.declare_entry("Maximum step cuts",
-                        "5",
-                        Patterns::Integer(0, 30),
-                        "How many times a step that fails is halved and "
-                        "retried before the run stops.");
-      prm.declare_entry("Extrapolate",
-                        "true",
-                        Patterns::Bool(),
-                        "Start each step from the linear extrapolation of the "
-                        "last two converged states.");
-      prm.declare_entry("Verbose",
-                        "true",
-                        Patterns::Bool(),
-                        "Print the residual of every Newton iteration.");
-      prm.declare_entry(
-        "Linear solver",
-        "auto",
-        Patterns::Selection("auto|UMFPACK|MUMPS|iterative"),
-        "The solver of the Newton systems. auto: UMFPACK on one process, "
-        "MUMPS on several (mpirun -np N ring_contact file.prm). UMFPACK is "
-        "serial; MUMPS factorizes on every process together, and also runs "
-        "on one (MPI is then started for it). Both keep their analysis of "
-        "the matrix while the sparsity pattern does not change. iterative: "
-        "GMRES with a block preconditioner (algebraic multigrid on the "
-        "displacements, an approximate Schur complement for the "
-        "multipliers), for meshes too large to factorize; one or several "
-        "processes; its iterations are printed with the Newton iterations.");
-      prm.declare_entry("Linear tolerance",
-                        "1e-8",
-                        Patterns::Double(),
-                        "Linear solver = iterative: GMRES stops when the "
-                        "relative residual |K x - b| / |b| is below this "
-                        "(1e-14 to 1e-7; the Newton iteration converges as "
-                        "with a direct solver when it is well below the "
-                        "Newton tolerance).");
-    }
-    prm.leave_subsection();
-  }
-
-  void
-  NewtonParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Newton");
-    {
-      max_iterations = get_count(prm, "Newton", "Maximum iterations", 1, 1000);
-      tolerance      = get_double(prm, "Newton", "Tolerance");
-      max_step_cuts  = get_count(prm, "Newton", "Maximum step cuts", 0, 30);
-      extrapolate    = prm.get_bool("Extrapolate");
-      verbose        = prm.get_bool("Verbose");
-      const std::string solver = prm.get("Linear solver");
-      linear_solver    = solver == "UMFPACK"   ? LinearSolverType::umfpack :
-                         solver == "MUMPS"     ? LinearSolverType::mumps :
-                         solver == "iterative" ? LinearSolverType::iterative :
-                                                 LinearSolverType::automatic;
-      linear_tolerance = get_double(prm, "Newton", "Linear tolerance");
-      require(linear_tolerance >= 1e-14 && linear_tolerance <= 1e-7,
-              "Newton",
-              "Linear tolerance",
-              "must be between 1e-14 and 1e-7, got " +
-                to_text(linear_tolerance));
-      require(tolerance > 0, "Newton", "Tolerance", "must be positive");
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Newton");
+    s.add("Maximum iterations",
+          max_iterations,
+          "12",
+          1,
+          1000,
+          "Newton iterations before the step is cut.");
+    s.add("Tolerance",
+          tolerance,
+          "1e-10",
+          "Converged when the active set no longer changes and "
+          "(a) the residual of the free displacement rows "
+          "relative to the reaction forces and (b) the largest "
+          "gap of an active contact row relative to the largest "
+          "displacement are each below this or at their "
+          "round-off floor (10 eps times the magnitude of the "
+          "terms of the rows, estimated at every iteration): "
+          "scale-free, the same value fits any E, p and radii.",
+          {[](const double x) { return x > 0; }, "must be positive", 0});
+    s.add("Maximum step cuts",
+          max_step_cuts,
+          "5",
+          0,
+          30,
+          "How many times a step that fails is halved and "
+          "retried before the run stops.");
+    s.add("Extrapolate",
+          extrapolate,
+          "true",
+          "Start each step from the linear extrapolation of the "
+          "last two converged states.");
+    s.add("Verbose",
+          verbose,
+          "true",
+          "Print the residual of every Newton iteration.");
+    s.add("Linear solver",
+          linear_solver,
+          "auto",
+          {{"auto", LinearSolverType::automatic},
+           {"UMFPACK", LinearSolverType::umfpack},
+           {"MUMPS", LinearSolverType::mumps},
+           {"iterative", LinearSolverType::iterative}},
+          "The solver of the Newton systems. auto: UMFPACK on one process, "
+          "MUMPS on several (mpirun -np N ring_contact file.prm). UMFPACK is "
+          "serial; MUMPS factorizes on every process together, and also runs "
+          "on one (MPI is then started for it). Both keep their analysis of "
+          "the matrix while the sparsity pattern does not change. iterative: "
+          "GMRES with a block preconditioner (algebraic multigrid on the "
+          "displacements, an approximate Schur complement for the "
+          "multipliers), for meshes too large to factorize; one or several "
+          "processes; its iterations are printed with the Newton iterations.");
+    s.add("Linear tolerance",
+          linear_tolerance,
+          "1e-8",
+          "Linear solver = iterative: GMRES stops when the "
+          "relative residual |K x - b| / |b| is below this "
+          "(1e-14 to 1e-7; the Newton iteration converges as "
+          "with a direct solver when it is well below the "
+          "Newton tolerance).",
+          {[](const double x) { return x >= 1e-14 && x <= 1e-7; },
+           "must be between 1e-14 and 1e-7"});
   }
 
   // ------------------------------------------------------------------
@@ -1016,60 +992,50 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  OutputParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Output");
-    {
-      prm.declare_entry("Directory",
-                        "",
-                        Patterns::Anything(),
-                        "Where results go; empty: results/<prm file name> in "
-                        "the current folder.");
-      prm.declare_entry("VTU interval",
-                        "1",
-                        Patterns::Integer(0),
-                        "Write VTU files every this many steps (0: never; the "
-                        "last step is always written when > 0).");
-      prm.declare_entry("VTU subdivisions",
-                        "0",
-                        Patterns::Integer(0, 8),
-                        "Subdivisions of each cell in the VTU files; 0: the "
-                        "mapping degree (curved cells are shown curved).");
-      prm.declare_entry("Write history",
-                        "true",
-                        Patterns::Bool(),
-                        "Write history.csv (one row per step and scheme) and "
-                        "verdicts.csv (one row per check).");
-      prm.declare_entry("Print steps",
-                        "true",
-                        Patterns::Bool(),
-                        "Print one line per step (load, Newton iterations, "
-                        "pressure at A, error).");
-      prm.declare_entry("Print timing",
-                        "true",
-                        Patterns::Bool(),
-                        "Print the timing summary at the end (switch off in "
-                        "tests).");
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Output");
+    s.add("Directory",
+          directory,
+          "",
+          "Where results go; empty: results/<prm file name> in "
+          "the current folder.");
+    s.add("VTU interval",
+          vtu_interval,
+          "1",
+          0,
+          1000000000,
+          "Write VTU files every this many steps (0: never; the "
+          "last step is always written when > 0).");
+    s.add("VTU subdivisions",
+          vtu_subdivisions,
+          "0",
+          0,
+          8,
+          "Subdivisions of each cell in the VTU files; 0: the "
+          "mapping degree (curved cells are shown curved).");
+    s.add("Write history",
+          write_history,
+          "true",
+          "Write history.csv (one row per step and scheme) and "
+          "verdicts.csv (one row per check).");
+    s.add("Print steps",
+          print_steps,
+          "true",
+          "Print one line per step (load, Newton iterations, "
+          "pressure at A, error).");
+    s.add("Print timing",
+          print_timing,
+          "true",
+          "Print the timing summary at the end (switch off in "
+          "tests).");
   }
 
   void
-  OutputParameters::parse_parameters(ParameterHandler  &prm,
-                                     const std::string &prm_name)
+  OutputParameters::finish(const std::string &prm_name)
   {
-    prm.enter_subsection("Output");
-    {
-      directory = prm.get("Directory");
-      if (directory.empty())
-        directory = "results/" + prm_name;
-      vtu_interval = get_count(prm, "Output", "VTU interval", 0, 1000000000);
-      vtu_subdivisions = get_count(prm, "Output", "VTU subdivisions", 0, 8);
-      write_history    = prm.get_bool("Write history");
-      print_timing     = prm.get_bool("Print timing");
-      print_steps      = prm.get_bool("Print steps");
-    }
-    prm.leave_subsection();
+    if (directory.empty())
+      directory = "results/" + prm_name;
   }
 
   // ------------------------------------------------------------------
@@ -1077,46 +1043,34 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  CheckParameters::declare_parameters(ParameterHandler &prm)
+  CheckParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Checks");
-    {
-      prm.declare_entry("Quantity",
-                        "pressure at A",
-                        Patterns::Selection("pressure at A|L2 error of "
-                                            "pressure|pressure spread"),
-                        "The checked value (the original's TEST_RESU): the "
-                        "contact pressure at node A against the analytic "
-                        "pressure, the relative L2 error of the pressure "
-                        "over the slave surface (reference 0), or the spread "
-                        "(largest - smallest nodal pressure) / analytic "
-                        "pressure (reference 0).");
-      prm.declare_entry("Steps",
-                        "all",
-                        Patterns::Anything(),
-                        "'all', 'last', 'none', or a comma-separated list of "
-                        "step numbers (1-based).");
-      prm.declare_entry("Tolerance",
-                        "0.02",
-                        Patterns::Double(0),
-                        "Largest admitted relative error (0.02 = 2 %).");
-    }
-    prm.leave_subsection();
-  }
-
-  void
-  CheckParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Checks");
-    {
-      const std::string name = prm.get("Quantity");
-      quantity  = name == "pressure at A"   ? CheckedQuantity::pressure_at_A :
-                  name == "pressure spread" ? CheckedQuantity::pressure_spread :
-                                              CheckedQuantity::l2_pressure_error;
-      tolerance = get_double(prm, "Checks", "Tolerance");
-      get_steps(prm, "Checks", "Steps", every_step, steps);
-    }
-    prm.leave_subsection();
+    Subsection s(prm, "Checks");
+    s.add("Quantity",
+          quantity,
+          "pressure at A",
+          {{"pressure at A", CheckedQuantity::pressure_at_A},
+           {"L2 error of pressure", CheckedQuantity::l2_pressure_error},
+           {"pressure spread", CheckedQuantity::pressure_spread}},
+          "The checked value (the original's TEST_RESU): the "
+          "contact pressure at node A against the analytic "
+          "pressure, the relative L2 error of the pressure "
+          "over the slave surface (reference 0), or the spread "
+          "(largest - smallest nodal pressure) / analytic "
+          "pressure (reference 0).");
+    s.add("Steps",
+          "all",
+          Patterns::Anything(),
+          "'all', 'last', 'none', or a comma-separated list of "
+          "step numbers (1-based).",
+          [this](const std::string &text) {
+            steps_from_text(text, "Checks", "Steps", every_step, steps);
+          });
+    s.add("Tolerance",
+          tolerance,
+          "0.02",
+          "Largest admitted relative error (0.02 = 2 %).",
+          not_negative());
   }
 
   // ------------------------------------------------------------------
@@ -1124,17 +1078,17 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  Parameters::add_parameters(ParameterHandler &prm)
   {
-    MeshParameters::declare_parameters(prm);
-    MaterialParameters::declare_parameters(prm);
-    FiniteElementParameters::declare_parameters(prm);
-    ContactParameters::declare_parameters(prm);
-    LoadParameters::declare_parameters(prm);
-    NewtonParameters::declare_parameters(prm);
-    OutputParameters::declare_parameters(prm);
-    CheckParameters::declare_parameters(prm);
-    ProblemParameters::declare_parameters(prm);
+    mesh.add_parameters(prm);
+    materials.add_parameters(prm);
+    finite_elements.add_parameters(prm);
+    contact.add_parameters(prm);
+    load.add_parameters(prm);
+    newton.add_parameters(prm);
+    output.add_parameters(prm);
+    checks.add_parameters(prm);
+    problem.add_parameters(prm);
   }
 
   namespace
@@ -1195,8 +1149,10 @@ namespace RingContact
   Parameters::read(const std::string &filename)
   {
     prm_file = filename;
+    // Every entry is bound to its member here and takes its value (checked)
+    // as the file is read; what remains is what involves several entries.
     ParameterHandler prm;
-    declare_parameters(prm);
+    add_parameters(prm);
     const auto origins = read_parameter_file(prm, filename);
 
     const std::filesystem::path path(filename);
@@ -1217,15 +1173,11 @@ namespace RingContact
                 set_in.has_parent_path() ? set_in.parent_path().string() : ".";
             }
         }
-        mesh.parse_parameters(prm, mesh_folder);
-        materials.parse_parameters(prm);
-        finite_elements.parse_parameters(prm);
-        contact.parse_parameters(prm);
-        load.parse_parameters(prm);
-        newton.parse_parameters(prm);
-        output.parse_parameters(prm, name);
-        checks.parse_parameters(prm);
-        problem.parse_parameters(prm);
+        mesh.finish(mesh_folder);
+        contact.finish();
+        load.finish();
+        output.finish(name);
+        problem.finish();
         for (const auto &[key, origin] : origins)
           {
             const auto slash = key.rfind('/');
@@ -1513,7 +1465,8 @@ namespace RingContact
   Parameters::print_reference(std::ostream &out, const bool as_prm)
   {
     ParameterHandler prm;
-    declare_parameters(prm);
+    Parameters       defaults;
+    defaults.add_parameters(prm);
     prm.print_parameters(out,
                          as_prm ? ParameterHandler::PRM :
                                   ParameterHandler::Text);

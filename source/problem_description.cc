@@ -6,6 +6,7 @@
 #include <ring_contact/problem_description.h>
 #include <ring_contact/utilities.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <iomanip>
@@ -216,55 +217,49 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  BodyParameters::declare_parameters(ParameterHandler &prm)
+  BodyParameters::add_parameters(Subsection &s)
   {
-    prm.declare_entry("Material id",
-                      "0",
-                      Patterns::Integer(0),
-                      "Scenario = general: the tag of the mesh's physical "
-                      "group (material id) that is this body.");
-    prm.declare_entry("Young's modulus", "1e9", Patterns::Double(), "E [Pa].");
-    prm.declare_entry("Poisson's ratio",
-                      "0.3",
-                      Patterns::Double(),
-                      "nu [-], below 0.5.");
-    prm.declare_entry("Displacement degree",
-                      "1",
-                      Patterns::Integer(1, 4),
-                      "Degree of the displacement elements (1: Q1, 2: Q2).");
-    prm.declare_entry("Kinematics",
-                      "",
-                      Patterns::Selection(std::string("|") + kinematics_names),
-                      "The body's kinematics; empty: that of "
-                      "Materials/Kinematics. A body in small strain may "
-                      "touch one in finite strain: the contact is then "
-                      "written on the current configuration (it is "
-                      "geometrically linear only when both bodies are in "
-                      "small strain), and a pressure load on a body follows "
-                      "its surface when that body is in finite or "
-                      "logarithmic strain or neo-Hookean.");
-  }
-
-  void
-  BodyParameters::parse_parameters(ParameterHandler  &prm,
-                                   const std::string &subsection)
-  {
-    material_id = get_count(
-      prm, subsection, "Material id", 0, numbers::invalid_material_id - 1);
-    youngs_modulus = get_double(prm, subsection, "Young's modulus");
-    require(youngs_modulus > 0,
-            subsection,
-            "Young's modulus",
-            "must be positive, got " + to_text(youngs_modulus));
-    poissons_ratio = get_double(prm, subsection, "Poisson's ratio");
-    require(poissons_ratio > -1 && poissons_ratio < 0.5,
-            subsection,
-            "Poisson's ratio",
-            "must be in (-1, 0.5), got " + to_text(poissons_ratio));
-    degree = get_count(prm, subsection, "Displacement degree", 1, 4);
-    const std::string kind = prm.get("Kinematics");
-    inherits_kinematics    = kind.empty();
-    kinematics             = kinematics_from_name(kind);
+    s.add("Material id",
+          material_id,
+          "0",
+          0,
+          max_tag,
+          "Scenario = general: the tag of the mesh's physical "
+          "group (material id) that is this body.");
+    s.add("Young's modulus", youngs_modulus, "1e9", "E [Pa].", positive());
+    s.add("Poisson's ratio",
+          poissons_ratio,
+          "0.3",
+          "nu [-], below 0.5.",
+          {[](const double nu) { return nu > -1 && nu < 0.5; },
+           "must be in (-1, 0.5)"});
+    s.add("Displacement degree",
+          degree,
+          "1",
+          1,
+          4,
+          "Degree of the displacement elements (1: Q1, 2: Q2).");
+    std::string names;
+    for (const auto &[name, value] : kinematics_choices())
+      names += "|" + name;
+    s.add("Kinematics",
+          "",
+          Patterns::Selection(names),
+          "The body's kinematics; empty: that of "
+          "Materials/Kinematics. A body in small strain may "
+          "touch one in finite strain: the contact is then "
+          "written on the current configuration (it is "
+          "geometrically linear only when both bodies are in "
+          "small strain), and a pressure load on a body follows "
+          "its surface when that body is in finite or "
+          "logarithmic strain or neo-Hookean.",
+          [this](const std::string &text) {
+            inherits_kinematics = text.empty();
+            kinematics          = Kinematics::finite_strain;
+            for (const auto &[name, value] : kinematics_choices())
+              if (name == text)
+                kinematics = value;
+          });
   }
 
   // ------------------------------------------------------------------
@@ -272,87 +267,89 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  BoundaryConditionParameters::declare_parameters(ParameterHandler &prm)
+  BoundaryConditionParameters::add_parameters(Subsection &s)
   {
-    prm.declare_entry("Type",
-                      "none",
-                      Patterns::Selection(
-                        "none|displacement|traction|pressure"),
-                      "Scenario = general: none (slot not used); "
-                      "displacement: the components of 'Components' "
-                      "imposed; traction: a dead load (tx; ty) per "
-                      "reference length [Pa]; pressure: p [Pa] on the "
-                      "current configuration, along the current inward "
-                      "normal (a follower load, with its exact tangent; a "
-                      "dead load in small strain). A boundary without "
-                      "condition is free.");
-    prm.declare_entry("Boundary id",
-                      "0",
-                      Patterns::Integer(0),
-                      "The mesh's boundary tag (physical group of lines).");
-    prm.declare_entry("Components",
-                      "x, y",
-                      Patterns::Anything(),
-                      "Displacement: which components are imposed: x, y, "
-                      "'x, y', 'r, theta' (polar about the origin: u = "
-                      "u_r e_r + u_theta e_theta), or n: the normal "
-                      "displacement u . N, N the outward unit normal of "
-                      "the reference boundary, the tangential displacement "
-                      "free (a roller on an inclined or a curved boundary; "
-                      "at a node the normals of the faces are averaged, "
-                      "where they are more than 60 degrees apart (a corner) "
-                      "both directions are imposed, and where a Cartesian "
-                      "or polar condition imposes a component the normal "
-                      "condition sets the other).");
-    prm.declare_entry("Value",
-                      "0; 0",
-                      Patterns::Anything(),
-                      "Expressions of x, y (reference position [m]), t "
-                      "(pseudo-time) and the constants, separated by ';': "
-                      "displacement: two, in the order x; y or r; theta "
-                      "(a component not imposed is not used), or one, u . N, "
-                      "for Components = n [m]; traction: "
-                      "tx; ty [Pa]; pressure: p [Pa]. A value that is not "
-                      "a finite number where and when it is used (an "
-                      "imposed displacement at t = 0 too) stops the load "
-                      "step, the condition, point and time named.");
+    name = s.name;
+    s.add("Type",
+          type,
+          "none",
+          {{"none", BoundaryConditionType::none},
+           {"displacement", BoundaryConditionType::displacement},
+           {"traction", BoundaryConditionType::traction},
+           {"pressure", BoundaryConditionType::pressure}},
+          "Scenario = general: none (slot not used); "
+          "displacement: the components of 'Components' "
+          "imposed; traction: a dead load (tx; ty) per "
+          "reference length [Pa]; pressure: p [Pa] on the "
+          "current configuration, along the current inward "
+          "normal (a follower load, with its exact tangent; a "
+          "dead load in small strain). A boundary without "
+          "condition is free.");
+    s.add("Boundary id",
+          boundary_id,
+          "0",
+          0,
+          max_tag,
+          "The mesh's boundary tag (physical group of lines).");
+    s.add("Components",
+          "x, y",
+          Patterns::Anything(),
+          "Displacement: which components are imposed: x, y, "
+          "'x, y', 'r, theta' (polar about the origin: u = "
+          "u_r e_r + u_theta e_theta), or n: the normal "
+          "displacement u . N, N the outward unit normal of "
+          "the reference boundary, the tangential displacement "
+          "free (a roller on an inclined or a curved boundary; "
+          "at a node the normals of the faces are averaged, "
+          "where they are more than 60 degrees apart (a corner) "
+          "both directions are imposed, and where a Cartesian "
+          "or polar condition imposes a component the normal "
+          "condition sets the other).",
+          [this](const std::string &text) {
+            parse_components(text, name, polar, normal, components);
+          });
+    s.add("Value",
+          "0; 0",
+          Patterns::Anything(),
+          "Expressions of x, y (reference position [m]), t "
+          "(pseudo-time) and the constants, separated by ';': "
+          "displacement: two, in the order x; y or r; theta "
+          "(a component not imposed is not used), or one, u . N, "
+          "for Components = n [m]; traction: "
+          "tx; ty [Pa]; pressure: p [Pa]. A value that is not "
+          "a finite number where and when it is used (an "
+          "imposed displacement at t = 0 too) stops the load "
+          "step, the condition, point and time named.",
+          [this](const std::string &text) {
+            expressions = Utilities::split_string_list(text, ';');
+          });
   }
 
   void
-  BoundaryConditionParameters::parse_parameters(
-    ParameterHandler                    &prm,
-    const std::string                   &subsection,
-    const std::map<std::string, double> &constants)
+  BoundaryConditionParameters::finish(
+    const std::map<std::string, double> &constants) const
   {
-    name                   = subsection;
-    const std::string kind = prm.get("Type");
-    type                   = kind == "none" ? BoundaryConditionType::none :
-                             kind == "displacement" ? BoundaryConditionType::displacement :
-                             kind == "traction" ? BoundaryConditionType::traction :
-                                                  BoundaryConditionType::pressure;
-    boundary_id = get_count(prm, subsection, "Boundary id", 0, 1000000000);
-    if (type == BoundaryConditionType::none)
-      return;
-    if (type == BoundaryConditionType::displacement)
-      parse_components(
-        prm.get("Components"), subsection, polar, normal, components);
-    expressions = Utilities::split_string_list(prm.get("Value"), ';');
     const unsigned int expected =
       type == BoundaryConditionType::pressure || normal ? 1 : 2;
     require(expressions.size() == expected,
-            subsection,
+            name,
             "Value",
             "holds " + std::to_string(expressions.size()) +
               " expression(s) separated by ';', a " +
-              (normal ? std::string("normal displacement") : kind) + " needs " +
-              std::to_string(expected));
+              (normal ? std::string("normal displacement") :
+               type == BoundaryConditionType::displacement ?
+                        std::string("displacement") :
+               type == BoundaryConditionType::traction ?
+                        std::string("traction") :
+                        std::string("pressure")) +
+              " needs " + std::to_string(expected));
     try
       {
         make_expression(expressions, constants, "the value");
       }
     catch (const std::exception &e)
       {
-        require(false, subsection, "Value", e.what());
+        require(false, name, "Value", e.what());
       }
   }
 
@@ -425,91 +422,84 @@ namespace RingContact
   }
 
   void
-  ProblemCheckParameters::declare_parameters(ParameterHandler &prm)
+  ProblemCheckParameters::add_parameters(Subsection &s)
   {
-    prm.declare_entry(
-      "Quantity",
-      "none",
-      Patterns::Selection("none|contact pressure|tangential traction|"
-                          "contact half-width|"
-                          "resultant force x|resultant force y|"
-                          "displacement x|displacement y"),
-      "Scenario = general: none (slot not used); contact pressure at the "
-      "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
-      "tangential traction there (friction: Cauchy, on the tangent e_z x n "
-      "of the master's outward normal n; it has the sign of the slave's "
-      "slip) [Pa]; "
-      "contact half-width: the largest distance from 'Point' to which the "
-      "slave surface is in contact, to half a segment (midway between the "
-      "last node with positive pressure and the next open one) [m]; "
-      "resultant force x or y: the sum of the nodal forces on 'Boundary "
-      "id' (the reaction of an imposed displacement, or the resultant of "
-      "a load) [N per unit thickness]; displacement x or y at 'Point' "
-      "(reference position) [m].");
-    prm.declare_entry("Point",
-                      "0, 0",
-                      Patterns::Anything(),
-                      "x, y [m]: where a pressure or displacement is taken, "
-                      "from where a contact width is measured.");
-    prm.declare_entry("Boundary id",
-                      "0",
-                      Patterns::Integer(0),
-                      "The boundary of a resultant force.");
-    prm.declare_entry("Reference",
-                      "0",
-                      Patterns::Anything(),
-                      "The expected value: an expression of t (the step's "
-                      "pseudo-time), x, y (the point) and the constants.");
-    prm.declare_entry("Relative",
-                      "true",
-                      Patterns::Bool(),
-                      "true: the error is (value - reference) / |reference|; "
-                      "false: value - reference.");
-    prm.declare_entry("Tolerance",
-                      "0.01",
-                      Patterns::Double(0),
-                      "Largest admitted |error|.");
-    prm.declare_entry("Steps",
-                      "last",
-                      Patterns::Anything(),
-                      "'all', 'last', 'none', or a comma-separated list of "
-                      "step numbers (1-based).");
+    name = s.name;
+    s.add("Quantity",
+          quantity,
+          "none",
+          {{"none", ProblemQuantity::none},
+           {"contact pressure", ProblemQuantity::contact_pressure},
+           {"tangential traction", ProblemQuantity::tangential_traction},
+           {"contact half-width", ProblemQuantity::contact_half_width},
+           {"resultant force x", ProblemQuantity::resultant_force_x},
+           {"resultant force y", ProblemQuantity::resultant_force_y},
+           {"displacement x", ProblemQuantity::displacement_x},
+           {"displacement y", ProblemQuantity::displacement_y}},
+          "Scenario = general: none (slot not used); contact pressure at the "
+          "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
+          "tangential traction there (friction: Cauchy, on the tangent e_z x n "
+          "of the master's outward normal n; it has the sign of the slave's "
+          "slip) [Pa]; "
+          "contact half-width: the largest distance from 'Point' to which the "
+          "slave surface is in contact, to half a segment (midway between the "
+          "last node with positive pressure and the next open one) [m]; "
+          "resultant force x or y: the sum of the nodal forces on 'Boundary "
+          "id' (the reaction of an imposed displacement, or the resultant of "
+          "a load) [N per unit thickness]; displacement x or y at 'Point' "
+          "(reference position) [m].");
+    s.add("Point",
+          "0, 0",
+          Patterns::Anything(),
+          "x, y [m]: where a pressure or displacement is taken, "
+          "from where a contact width is measured.",
+          [this](const std::string &text) {
+            const auto xy = point_from_text(text, name, "Point");
+            point         = Point<2>(xy[0], xy[1]);
+          });
+    s.add("Boundary id",
+          boundary_id,
+          "0",
+          0,
+          max_tag,
+          "The boundary of a resultant force.");
+    s.add("Reference",
+          reference,
+          "0",
+          "The expected value: an expression of t (the step's "
+          "pseudo-time), x, y (the point) and the constants.");
+    s.add("Relative",
+          relative,
+          "true",
+          "true: the error is (value - reference) / |reference|; "
+          "false: value - reference.");
+    s.add("Tolerance",
+          tolerance,
+          "0.01",
+          "Largest admitted |error|.",
+          not_negative());
+    s.add("Steps",
+          "last",
+          Patterns::Anything(),
+          "'all', 'last', 'none', or a comma-separated list of "
+          "step numbers (1-based).",
+          [this](const std::string &text) {
+            steps_from_text(text, name, "Steps", every_step, steps);
+          });
   }
 
   void
-  ProblemCheckParameters::parse_parameters(
-    ParameterHandler                    &prm,
-    const std::string                   &subsection,
-    const std::map<std::string, double> &constants)
+  ProblemCheckParameters::finish(
+    const std::map<std::string, double> &constants) const
   {
-    name                   = subsection;
-    const std::string what = prm.get("Quantity");
-    quantity =
-      what == "none"                ? ProblemQuantity::none :
-      what == "contact pressure"    ? ProblemQuantity::contact_pressure :
-      what == "tangential traction" ? ProblemQuantity::tangential_traction :
-      what == "contact half-width"  ? ProblemQuantity::contact_half_width :
-      what == "resultant force x"   ? ProblemQuantity::resultant_force_x :
-      what == "resultant force y"   ? ProblemQuantity::resultant_force_y :
-      what == "displacement x"      ? ProblemQuantity::displacement_x :
-                                      ProblemQuantity::displacement_y;
-    if (quantity == ProblemQuantity::none)
-      return;
-    const auto xy = get_point(prm, subsection, "Point");
-    point         = Point<2>(xy[0], xy[1]);
-    boundary_id   = get_count(prm, subsection, "Boundary id", 0, 1000000000);
-    reference     = prm.get("Reference");
     try
       {
         make_expression({reference}, constants, "the reference");
       }
     catch (const std::exception &e)
       {
-        require(false, subsection, "Reference", e.what());
+        require(false, name, "Reference", e.what());
       }
-    relative  = prm.get_bool("Relative");
-    tolerance = get_double(prm, subsection, "Tolerance");
-    get_steps(prm, subsection, "Steps", every_step, steps);
   }
 
   // ------------------------------------------------------------------
@@ -517,146 +507,126 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   void
-  ProblemParameters::declare_parameters(ParameterHandler &prm)
+  ProblemParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Problem");
     {
-      prm.declare_entry(
-        "Scenario",
-        "SSNP152",
-        Patterns::Selection("SSNP152|general"),
-        "SSNP152: the two rings (or, with Mesh/Mesh source = patch test, "
-        "the patch test), loaded and checked through their analytic "
-        "solutions (subsections Mesh, Materials, Finite elements, Load "
-        "program, Checks); general: the bodies of a gmsh mesh "
-        "(Mesh/Mesh source = gmsh file), described by the subsections Body "
-        "1, 2, ... (Number of bodies), Boundary condition 1 to " +
-          std::to_string(max_boundary_conditions) + " and Check 1 to " +
-          std::to_string(max_checks) +
-          ", with the contact pair of subsection Contact (and the pairs of "
-          "subsections Contact pair 2 to " +
-          std::to_string(max_contact_pairs) +
-          ") and the steps of Load program/Program = steps.");
-      prm.declare_entry("Number of bodies",
-                        "2",
-                        Patterns::Integer(2, max_bodies),
-                        "Scenario = general: the bodies, subsections Body 1 "
-                        "to " +
-                          std::to_string(max_bodies) + ".");
-      prm.declare_entry(
-        "Number of contact pairs",
-        "1",
-        Patterns::Integer(1, max_contact_pairs),
-        "Scenario = general: the contact pairs: the first is subsection "
-        "Contact (its slave and master boundaries, and the integration "
-        "schemes, normals and constants every pair uses), the others "
-        "the subsections Contact pair 2, 3, ... with their slave and "
-        "master boundaries. The slave surfaces of two pairs share no "
-        "node.");
-      prm.declare_entry("Constants",
-                        "",
-                        Patterns::Anything(),
-                        "Named constants for every expression: 'name = "
-                        "value' pairs separated by commas, each value a "
-                        "number or an expression of the constants before "
-                        "it, e.g. 'R = 1, E = 2e11, q = 1e6'.");
+      Subsection s(prm, "Problem");
+      s.add("Scenario",
+            scenario,
+            "SSNP152",
+            {{"SSNP152", ScenarioType::ssnp152},
+             {"general", ScenarioType::general}},
+            "SSNP152: the two rings (or, with Mesh/Mesh source = patch test, "
+            "the patch test), loaded and checked through their analytic "
+            "solutions (subsections Mesh, Materials, Finite elements, Load "
+            "program, Checks); general: the bodies of a gmsh mesh "
+            "(Mesh/Mesh source = gmsh file), described by the subsections Body "
+            "1, 2, ... (Number of bodies), Boundary condition 1 to " +
+              std::to_string(max_boundary_conditions) + " and Check 1 to " +
+              std::to_string(max_checks) +
+              ", with the contact pair of subsection Contact (and the pairs of "
+              "subsections Contact pair 2 to " +
+              std::to_string(max_contact_pairs) +
+              ") and the steps of Load program/Program = steps.");
+      s.add("Number of bodies",
+            number_of_bodies,
+            "2",
+            2,
+            max_bodies,
+            "Scenario = general: the bodies, subsections Body 1 "
+            "to " +
+              std::to_string(max_bodies) + ".");
+      s.add("Number of contact pairs",
+            number_of_contact_pairs,
+            "1",
+            1,
+            max_contact_pairs,
+            "Scenario = general: the contact pairs: the first is subsection "
+            "Contact (its slave and master boundaries, and the integration "
+            "schemes, normals and constants every pair uses), the others "
+            "the subsections Contact pair 2, 3, ... with their slave and "
+            "master boundaries. The slave surfaces of two pairs share no "
+            "node.");
+      s.add("Constants",
+            "",
+            Patterns::Anything(),
+            "Named constants for every expression: 'name = "
+            "value' pairs separated by commas, each value a "
+            "number or an expression of the constants before "
+            "it, e.g. 'R = 1, E = 2e11, q = 1e6'.",
+            [this](const std::string &text) {
+              constants = parse_constants(text);
+            });
     }
-    prm.leave_subsection();
-    for (unsigned int b = 1; b <= max_bodies; ++b)
+    // Every slot is declared and bound; finish() keeps those in use.
+    bodies.assign(max_bodies, BodyParameters());
+    for (unsigned int b = 0; b < max_bodies; ++b)
       {
-        prm.enter_subsection("Body " + std::to_string(b));
-        BodyParameters::declare_parameters(prm);
-        prm.leave_subsection();
+        Subsection s(prm, "Body " + std::to_string(b + 1));
+        bodies[b].add_parameters(s);
       }
+    more_contact_pairs.assign(max_contact_pairs - 1, {0, 0});
     for (unsigned int k = 2; k <= max_contact_pairs; ++k)
       {
-        prm.enter_subsection("Contact pair " + std::to_string(k));
-        prm.declare_entry("Slave boundary",
-                          "0",
-                          Patterns::Integer(0),
-                          "Scenario = general: the boundary tag of this "
-                          "pair's slave surface (it carries the contact "
-                          "pressure).");
-        prm.declare_entry("Master boundary",
-                          "0",
-                          Patterns::Integer(0),
-                          "The boundary tag of this pair's master surface.");
-        prm.leave_subsection();
+        Subsection s(prm, "Contact pair " + std::to_string(k));
+        s.add("Slave boundary",
+              more_contact_pairs[k - 2].first,
+              "0",
+              0,
+              max_tag,
+              "Scenario = general: the boundary tag of this "
+              "pair's slave surface (it carries the contact "
+              "pressure).");
+        s.add("Master boundary",
+              more_contact_pairs[k - 2].second,
+              "0",
+              0,
+              max_tag,
+              "The boundary tag of this pair's master surface.");
       }
-    for (unsigned int k = 1; k <= max_boundary_conditions; ++k)
+    boundary_conditions.assign(max_boundary_conditions,
+                               BoundaryConditionParameters());
+    for (unsigned int k = 0; k < max_boundary_conditions; ++k)
       {
-        prm.enter_subsection("Boundary condition " + std::to_string(k));
-        BoundaryConditionParameters::declare_parameters(prm);
-        prm.leave_subsection();
+        Subsection s(prm, "Boundary condition " + std::to_string(k + 1));
+        boundary_conditions[k].add_parameters(s);
       }
-    for (unsigned int k = 1; k <= max_checks; ++k)
+    checks.assign(max_checks, ProblemCheckParameters());
+    for (unsigned int k = 0; k < max_checks; ++k)
       {
-        prm.enter_subsection("Check " + std::to_string(k));
-        ProblemCheckParameters::declare_parameters(prm);
-        prm.leave_subsection();
+        Subsection s(prm, "Check " + std::to_string(k + 1));
+        checks[k].add_parameters(s);
       }
   }
 
   void
-  ProblemParameters::parse_parameters(ParameterHandler &prm)
+  ProblemParameters::finish()
   {
-    prm.enter_subsection("Problem");
-    scenario  = prm.get("Scenario") == "general" ? ScenarioType::general :
-                                                   ScenarioType::ssnp152;
-    constants = parse_constants(prm.get("Constants"));
-    const unsigned int n_bodies =
-      get_count(prm, "Problem", "Number of bodies", 2, max_bodies);
-    const unsigned int n_pairs = get_count(
-      prm, "Problem", "Number of contact pairs", 1, max_contact_pairs);
-    prm.leave_subsection();
-
-    bodies.resize(n_bodies);
-    for (unsigned int b = 0; b < n_bodies; ++b)
-      {
-        const std::string subsection = "Body " + std::to_string(b + 1);
-        prm.enter_subsection(subsection);
-        bodies[b].parse_parameters(prm, subsection);
-        prm.leave_subsection();
-      }
-    more_contact_pairs.clear();
-    for (unsigned int k = 2; k <= n_pairs; ++k)
-      {
-        const std::string subsection = "Contact pair " + std::to_string(k);
-        prm.enter_subsection(subsection);
-        const unsigned int slave =
-          get_count(prm, subsection, "Slave boundary", 0, 1000000000);
-        const unsigned int master =
-          get_count(prm, subsection, "Master boundary", 0, 1000000000);
-        prm.leave_subsection();
-        require(slave != master,
-                subsection,
-                "Slave boundary",
-                "must differ from 'Master boundary' (both are " +
-                  std::to_string(slave) + ")");
-        more_contact_pairs.emplace_back(slave, master);
-      }
-    boundary_conditions.clear();
-    for (unsigned int k = 1; k <= max_boundary_conditions; ++k)
-      {
-        const std::string subsection =
-          "Boundary condition " + std::to_string(k);
-        prm.enter_subsection(subsection);
-        BoundaryConditionParameters condition;
-        condition.parse_parameters(prm, subsection, constants);
-        prm.leave_subsection();
-        if (condition.type != BoundaryConditionType::none)
-          boundary_conditions.push_back(condition);
-      }
-    checks.clear();
-    for (unsigned int k = 1; k <= max_checks; ++k)
-      {
-        const std::string subsection = "Check " + std::to_string(k);
-        prm.enter_subsection(subsection);
-        ProblemCheckParameters check;
-        check.parse_parameters(prm, subsection, constants);
-        prm.leave_subsection();
-        if (check.quantity != ProblemQuantity::none)
-          checks.push_back(check);
-      }
+    bodies.resize(number_of_bodies);
+    more_contact_pairs.resize(number_of_contact_pairs - 1);
+    for (unsigned int k = 0; k < more_contact_pairs.size(); ++k)
+      require(more_contact_pairs[k].first != more_contact_pairs[k].second,
+              "Contact pair " + std::to_string(k + 2),
+              "Slave boundary",
+              "must differ from 'Master boundary' (both are " +
+                std::to_string(more_contact_pairs[k].first) + ")");
+    boundary_conditions.erase(
+      std::remove_if(boundary_conditions.begin(),
+                     boundary_conditions.end(),
+                     [](const BoundaryConditionParameters &condition) {
+                       return condition.type == BoundaryConditionType::none;
+                     }),
+      boundary_conditions.end());
+    checks.erase(std::remove_if(checks.begin(),
+                                checks.end(),
+                                [](const ProblemCheckParameters &check) {
+                                  return check.quantity ==
+                                         ProblemQuantity::none;
+                                }),
+                 checks.end());
+    for (const auto &condition : boundary_conditions)
+      condition.finish(constants);
+    for (const auto &check : checks)
+      check.finish(constants);
   }
 } // namespace RingContact

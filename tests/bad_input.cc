@@ -240,7 +240,7 @@ main()
                "exceed 1e100 Pa");
   expect_error("elements_around_too_many",
                "subsection Mesh\n set Elements around = 100000000\nend\n",
-               "must be between 3 and 10000000");
+               "(allowed: [Integer range 3...10000000 (inclusive)])");
   expect_error("mesh_too_large",
                "subsection Mesh\n set Elements around = 1000000\nend\n",
                "the mesh is too large for this machine",

@@ -1,7 +1,10 @@
 // The run-time parameters of the program: one struct per subsection of the
-// `.prm` file, each with `declare_parameters()` (entries, patterns, units and
-// documentation) and `parse_parameters()` (read back, validate, convert the
-// string choices into enums). Units are SI throughout: metres, pascals.
+// `.prm` file, each with `add_parameters()`, which declares every entry once,
+// bound to the member it sets, with its default, pattern, units,
+// documentation and checks (ParameterChecks::Subsection, after deal.II's
+// ParameterHandler::add_parameter()), and, where entries depend on each
+// other, `finish()`, the checks once the whole file is read. Units are SI
+// throughout: metres, pascals.
 #ifndef ring_contact_parameters_h
 #define ring_contact_parameters_h
 
@@ -117,10 +120,13 @@ namespace RingContact
     /// Numbers handed to a .geo mesh file (gmsh's -setnumber), in order.
     std::vector<std::pair<std::string, double>> geo_numbers;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare subsection Mesh, bound to these members.
     void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_folder);
+    add_parameters(ParameterHandler &prm);
+    /// Resolve the mesh file against `prm_folder`; check the entries
+    /// against each other.
+    void
+    finish(const std::string &prm_folder);
   };
 
   struct MaterialParameters
@@ -132,10 +138,8 @@ namespace RingContact
     Kinematics      kinematics;
     PlaneAssumption plane;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 
   struct FiniteElementParameters
@@ -155,10 +159,8 @@ namespace RingContact
       return ring == Ids::outer_ring ? degree_outer : degree_inner;
     }
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 
 
@@ -173,10 +175,11 @@ namespace RingContact
     PressureMeasure                reported_pressure;
     Point<2>                       probe_point;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+    /// Slave and master differ.
+    void
+    finish() const;
   };
 
   struct LoadParameters
@@ -192,10 +195,17 @@ namespace RingContact
     /// Program = steps: the pseudo-time at the end of each step.
     std::vector<double> time_points;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Program = steps: n equal steps when no time points are given.
+    unsigned int number_of_steps;
+    /// The most steps of a load program.
+    static constexpr int max_steps = 100000;
+
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+    /// The equal steps when no time points are given; the ramp's last
+    /// pressure a number.
+    void
+    finish();
   };
 
   struct NewtonParameters
@@ -209,10 +219,8 @@ namespace RingContact
     /// GMRES's relative residual (Linear solver = iterative).
     double linear_tolerance;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 
   struct OutputParameters
@@ -224,10 +232,11 @@ namespace RingContact
     bool         print_timing;
     bool         print_steps;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_name);
+    add_parameters(ParameterHandler &prm);
+    /// An empty directory becomes results/<prm_name>.
+    void
+    finish(const std::string &prm_name);
   };
 
   /// One check of the original's TEST_RESU kind.
@@ -238,10 +247,8 @@ namespace RingContact
     std::vector<unsigned int> steps; ///< when not every step
     double                    tolerance;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 
   /// All parameters of one run.
@@ -272,8 +279,11 @@ namespace RingContact
     std::vector<std::pair<unsigned int, unsigned int>>
     contact_pairs() const;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare every entry of the parameter file, bound to these members.
+    /// The members must stay where they are while `prm` is used (its
+    /// actions refer to them).
+    void
+    add_parameters(ParameterHandler &prm);
 
     /// Read and validate a parameter file; throws ExcMessage with a one-line
     /// explanation that names the file and the entry on any problem.

@@ -34,6 +34,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ring_contact/parameter_checks.h>
+
 #include <array>
 #include <map>
 #include <memory>
@@ -65,18 +67,14 @@ namespace RingContact
     neo_hookean
   };
 
-  /// The names of the kinematics in a .prm, as a Patterns::Selection.
-  constexpr const char *kinematics_names =
-    "finite strain|small strain|logarithmic strain|neo-Hookean";
-
-  /// The kinematics of one of kinematics_names.
-  inline Kinematics
-  kinematics_from_name(const std::string &name)
+  /// The kinematics by their names in a .prm.
+  inline std::vector<std::pair<std::string, Kinematics>>
+  kinematics_choices()
   {
-    return name == "small strain"       ? Kinematics::small_strain :
-           name == "logarithmic strain" ? Kinematics::logarithmic_strain :
-           name == "neo-Hookean"        ? Kinematics::neo_hookean :
-                                          Kinematics::finite_strain;
+    return {{"finite strain", Kinematics::finite_strain},
+            {"small strain", Kinematics::small_strain},
+            {"logarithmic strain", Kinematics::logarithmic_strain},
+            {"neo-Hookean", Kinematics::neo_hookean}};
   }
 
   /// One body of a general problem: a physical group of the mesh.
@@ -91,10 +89,10 @@ namespace RingContact
     Kinematics kinematics          = Kinematics::finite_strain;
     bool       inherits_kinematics = true;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare the entries of a subsection Body k (entered), bound to
+    /// these members.
     void
-    parse_parameters(ParameterHandler &prm, const std::string &subsection);
+    add_parameters(ParameterChecks::Subsection &s);
   };
 
   enum class BoundaryConditionType
@@ -125,12 +123,13 @@ namespace RingContact
     std::vector<std::string> expressions;
     std::string              name; ///< "Boundary condition 3"
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare the entries of a subsection Boundary condition k.
     void
-    parse_parameters(ParameterHandler                    &prm,
-                     const std::string                   &subsection,
-                     const std::map<std::string, double> &constants);
+    add_parameters(ParameterChecks::Subsection &s);
+    /// Once the file is read: the number of expressions and whether they
+    /// parse with the problem's constants.
+    void
+    finish(const std::map<std::string, double> &constants) const;
   };
 
   enum class ProblemQuantity
@@ -167,12 +166,13 @@ namespace RingContact
     std::string
     column() const;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare the entries of a subsection Check k.
     void
-    parse_parameters(ParameterHandler                    &prm,
-                     const std::string                   &subsection,
-                     const std::map<std::string, double> &constants);
+    add_parameters(ParameterChecks::Subsection &s);
+    /// Once the file is read: whether the reference parses with the
+    /// problem's constants.
+    void
+    finish(const std::map<std::string, double> &constants) const;
   };
 
   /// Subsections Problem, Body 1..n, Contact pair 2..m, Boundary condition
@@ -194,10 +194,19 @@ namespace RingContact
     std::vector<BoundaryConditionParameters>           boundary_conditions;
     std::vector<ProblemCheckParameters>                checks;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare subsection Problem and every slot of the subsections Body,
+    /// Contact pair, Boundary condition and Check, bound to these members
+    /// (the vectors hold every slot until finish()).
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+    /// Keep the bodies and pairs of the numbers given, the conditions and
+    /// checks whose slots are used; check their expressions.
+    void
+    finish();
+
+  private:
+    unsigned int number_of_bodies;
+    unsigned int number_of_contact_pairs;
   };
 
   /// An expression of x, y and t with the problem's constants, n components

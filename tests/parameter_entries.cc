@@ -1,0 +1,228 @@
+// Each entry of the parameter file is declared once, bound to the member it
+// sets (ParameterChecks::Subsection). This test reads files through
+// Parameters::read() and checks, for every kind of entry (number, integer,
+// flag, text, choice, list, point, steps, time points, and the slots of a
+// general problem), that
+// - the member holds the default before any file is read, and the default
+//   printed by --print-parameters is that value;
+// - a value set in a file reaches the member, the last one when an entry is
+//   set twice;
+// - a value refused by its entry's check names the file and the line that
+//   set it, an included file's own;
+// - a general problem keeps only the slots it uses.
+#include <deal.II/base/parameter_handler.h>
+
+#include <ring_contact/config.h>
+#include <ring_contact/parameters.h>
+
+#include "tests.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace RingContact;
+using RingContactTests::check;
+using RingContactTests::deallog_file;
+
+namespace
+{
+  void
+  write(const std::string &name, const std::string &text)
+  {
+    std::ofstream(name) << text;
+  }
+
+  // The message of the error that reading `name` gives ("" if none).
+  std::string
+  error_of(const std::string &name)
+  {
+    try
+      {
+        Parameters parameters;
+        parameters.read(name);
+      }
+    catch (const std::exception &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+
+  // The default of an entry as --print-parameters shows it.
+  std::string
+  printed_default(const std::string &subsection, const std::string &entry)
+  {
+    std::ostringstream reference;
+    Parameters::print_reference(reference, true);
+    std::istringstream lines(reference.str());
+    std::string        line, current;
+    while (std::getline(lines, line))
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first == std::string::npos)
+          continue;
+        line = line.substr(first);
+        if (line.rfind("subsection ", 0) == 0)
+          current = line.substr(11);
+        else if (line.rfind("set ", 0) == 0 && current == subsection)
+          {
+            const auto  equal = line.find('=');
+            std::string name  = line.substr(4, equal - 4);
+            name.erase(name.find_last_not_of(' ') + 1);
+            if (name == entry)
+              {
+                std::string value = line.substr(equal + 1);
+                value.erase(0, value.find_first_not_of(' '));
+                const auto comment = value.find(" #");
+                if (comment != std::string::npos)
+                  value.erase(comment);
+                value.erase(value.find_last_not_of(' ') + 1);
+                return value;
+              }
+          }
+      }
+    return "(not printed)";
+  }
+} // namespace
+
+int
+main()
+{
+  // Defaults: the members hold them as soon as the entries are declared.
+  {
+    Parameters       p;
+    ParameterHandler prm;
+    p.add_parameters(prm);
+    check(p.materials.youngs_modulus_outer == 1e9 &&
+            printed_default("Materials", "Young's modulus outer ring") == "1e9",
+          "number default");
+    check(p.load.ramp_steps == 21 &&
+            printed_default("Load program", "Ramp steps") == "21",
+          "integer default");
+    check(p.newton.extrapolate &&
+            printed_default("Newton", "Extrapolate") == "true",
+          "flag default");
+    check(p.materials.plane == PlaneAssumption::plane_stress &&
+            printed_default("Materials", "Plane assumption") == "plane stress",
+          "choice default");
+    check(p.contact.schemes.size() == 1 &&
+            p.contact.schemes[0].name() == "nodal",
+          "list default");
+    check(p.contact.probe_point.distance(Point<2>(0.6, 0)) == 0,
+          "point default");
+    check(p.checks.every_step && p.checks.steps.empty(), "steps default");
+    check(p.problem.bodies.size() == ProblemParameters::max_bodies &&
+            p.problem.checks.size() == ProblemParameters::max_checks,
+          "every slot of a general problem is bound before the file is read");
+    deallog_file << "defaults: the members hold the printed defaults"
+                 << std::endl;
+  }
+
+  // Values set in a file reach their members; the last of two wins.
+  {
+    write("values.prm",
+          "subsection Materials\n"
+          "  set Young's modulus outer ring = 2e11\n"
+          "  set Plane assumption = plane strain\n"
+          "  set Kinematics = neo-Hookean\n"
+          "end\n"
+          "subsection Finite elements\n"
+          "  set Reduced integration = true\n"
+          "end\n"
+          "subsection Load program\n"
+          "  set Ramp steps = 4\n"
+          "  set Ramp steps = 5\n"
+          "end\n"
+          "subsection Contact\n"
+          "  set Integration schemes = nodal, Gauss 3\n"
+          "  set Probe point = 0.6, 0.01\n"
+          "end\n"
+          "subsection Checks\n"
+          "  set Steps = 1, 3\n"
+          "end\n"
+          "subsection Newton\n"
+          "  set Linear solver = MUMPS\n"
+          "end\n"
+          "subsection Output\n"
+          "  set Directory = elsewhere\n"
+          "end\n");
+    Parameters p;
+    p.read("values.prm");
+    check(p.materials.youngs_modulus_outer == 2e11, "number");
+    check(p.materials.plane == PlaneAssumption::plane_strain, "choice");
+    check(p.materials.kinematics == Kinematics::neo_hookean, "kinematics");
+    check(p.finite_elements.reduced_integration, "flag");
+    check(p.load.ramp_steps == 5, "integer set twice: the last value");
+    check(p.contact.schemes.size() == 2 &&
+            p.contact.schemes[1].name() == "Gauss 3",
+          "list");
+    check(p.contact.probe_point.distance(Point<2>(0.6, 0.01)) == 0, "point");
+    check(!p.checks.every_step && p.checks.steps.size() == 2 &&
+            p.checks.steps[1] == 3,
+          "steps");
+    check(p.newton.linear_solver == LinearSolverType::mumps, "solver");
+    check(p.output.directory == "elsewhere", "text");
+    // Untouched entries keep their defaults.
+    check(p.materials.youngs_modulus_inner == 1e9 && p.load.time_step == 0.1,
+          "defaults of the entries not set");
+    deallog_file << "values: every kind of entry reaches its member"
+                 << std::endl;
+  }
+
+  // A refused value names the line that set it, in the file that set it.
+  {
+    write("included.prm",
+          "# a comment\n"
+          "subsection Materials\n"
+          "  set Poisson's ratio inner ring = 0.5\n"
+          "end\n");
+    write("includes.prm", "\ninclude included.prm\n");
+    deallog_file << "included: " << error_of("includes.prm") << std::endl;
+    write("time_points.prm",
+          "subsection Problem\n  set Scenario = general\nend\n"
+          "subsection Load program\n  set Program = steps\n"
+          "  set Time points = 0:1e-9:1\nend\n");
+    deallog_file << "time points: " << error_of("time_points.prm") << std::endl;
+    write("body.prm", "subsection Body 3\n  set Poisson's ratio = 0.7\nend\n");
+    deallog_file << "body: " << error_of("body.prm") << std::endl;
+  }
+
+  // A general problem keeps the bodies and pairs of its numbers and the
+  // conditions and checks whose slots it uses, in their order.
+  {
+    write("general.prm",
+          "subsection Problem\n  set Scenario = general\n"
+          "  set Number of bodies = 3\n  set Constants = q = 2\nend\n"
+          "subsection Mesh\n  set Mesh source = gmsh file\n"
+          "  set Mesh file = " RING_CONTACT_SOURCE_DIR
+          "/meshes/three_blocks.geo\nend\n"
+          "subsection Load program\n  set Program = steps\nend\n"
+          "subsection Body 1\n  set Material id = 1\nend\n"
+          "subsection Body 2\n  set Material id = 2\nend\n"
+          "subsection Body 3\n  set Material id = 7\nend\n"
+          "subsection Boundary condition 2\n  set Type = pressure\n"
+          "  set Boundary id = 5\n  set Value = q * t\nend\n"
+          "subsection Boundary condition 9\n  set Type = traction\n"
+          "  set Boundary id = 6\n  set Value = 0; -q\nend\n"
+          "subsection Check 4\n  set Quantity = resultant force y\n"
+          "  set Boundary id = 6\n  set Reference = -q\nend\n");
+    Parameters p;
+    p.read("general.prm");
+    check(p.problem.bodies.size() == 3 && p.problem.bodies[2].material_id == 7,
+          "bodies");
+    check(p.problem.boundary_conditions.size() == 2 &&
+            p.problem.boundary_conditions[0].name == "Boundary condition 2" &&
+            p.problem.boundary_conditions[0].expressions.size() == 1 &&
+            p.problem.boundary_conditions[1].boundary_id == 6,
+          "boundary conditions");
+    check(p.problem.checks.size() == 1 &&
+            p.problem.checks[0].name == "Check 4" &&
+            p.problem.checks[0].reference == "-q",
+          "checks");
+    check(p.problem.more_contact_pairs.empty(), "contact pairs");
+    check(p.problem.constants.at("q") == 2, "constants");
+    deallog_file << "general: the slots in use, in order" << std::endl;
+  }
+}
