@@ -758,20 +758,21 @@ namespace RingContact
     {
       std::vector<double> time_points;
       const std::string   points_text = Utilities::trim(text);
+      // A number, or NaN for anything else.
+      const auto number = [](const std::string &word) {
+        double t = std::nan("");
+        try
+          {
+            t = Utilities::string_to_double(Utilities::trim(word));
+          }
+        catch (...)
+          {}
+        return t;
+      };
       for (const auto &item : Utilities::split_string_list(points_text))
         {
           const double previous =
             time_points.empty() ? 0.0 : time_points.back();
-          const auto number = [&](const std::string &text) {
-            double t = std::nan("");
-            try
-              {
-                t = Utilities::string_to_double(Utilities::trim(text));
-              }
-            catch (...)
-              {}
-            return t;
-          };
           const auto parts = Utilities::split_string_list(item, ':');
           if (parts.size() == 3)
             {
