@@ -3,7 +3,9 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <dmumps_c.h>
+#include <metis.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,73 @@ namespace RingContact
             return "MUMPS error INFOG(1) = " + std::to_string(infog1) +
                    ", INFOG(2) = " + std::to_string(infog2);
         }
+    }
+
+    // A nested-dissection order of the matrix's unknowns by METIS, from the
+    // entries (row, column), numbered from 1, of the whole matrix: the
+    // position of each unknown in the pivot order, from 1 (MUMPS's PERM_IN).
+    // Empty if METIS fails. On the rings at 640 x 48 its LU takes 3.7e9
+    // flops, against 4.9-5.5e9 with the PORD order MUMPS chooses itself
+    // (which also varies from run to run with the order in which the
+    // processes' entries reach it; METIS's, from the sorted graph, does not).
+    std::vector<int>
+    nested_dissection_order(const int               n,
+                            const std::vector<int> &rows,
+                            const std::vector<int> &columns)
+    {
+      // The graph of the symmetrised pattern without its diagonal, in
+      // compressed rows: count, fill, then sort and merge each row.
+      std::vector<idx_t> start(n + 1, 0);
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        if (rows[k] != columns[k])
+          {
+            ++start[rows[k]];
+            ++start[columns[k]];
+          }
+      for (int i = 0; i < n; ++i)
+        start[i + 1] += start[i];
+      std::vector<idx_t> neighbours(start[n]);
+      {
+        std::vector<idx_t> next(start.begin(), start.end() - 1);
+        for (std::size_t k = 0; k < rows.size(); ++k)
+          if (rows[k] != columns[k])
+            {
+              const int i = rows[k] - 1, j = columns[k] - 1;
+              neighbours[next[i]++] = j;
+              neighbours[next[j]++] = i;
+            }
+      }
+      idx_t kept = 0;
+      for (int i = 0; i < n; ++i)
+        {
+          const auto first = neighbours.begin() + start[i];
+          const auto last  = neighbours.begin() + start[i + 1];
+          std::sort(first, last);
+          const idx_t row_begin = kept;
+          for (auto j = first; j != last; ++j)
+            if (j == first || *j != *(j - 1))
+              neighbours[kept++] = *j;
+          start[i] = row_begin;
+        }
+      start[n] = kept;
+
+      idx_t              n_vertices = n;
+      std::vector<idx_t> permutation(n), position(n);
+      idx_t              options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      if (METIS_NodeND(&n_vertices,
+                       start.data(),
+                       neighbours.data(),
+                       nullptr,
+                       options,
+                       permutation.data(),
+                       position.data()) != METIS_OK)
+        return {};
+      // METIS's iperm: unknown i is the position[i]-th pivot.
+      std::vector<int> order(n);
+      for (int i = 0; i < n; ++i)
+        order[i] = static_cast<int>(position[i]) + 1;
+      return order;
     }
   } // namespace
 
@@ -129,7 +198,8 @@ namespace RingContact
     id.a_loc   = values.data();
     if (!analysed || pattern_version != analysed_version)
       {
-        analysed      = false;
+        analysed = false;
+        order_unknowns(id.n);
         const int err = run(1);
         if (err < 0)
           throw std::runtime_error("MUMPS's analysis failed: " +
@@ -151,6 +221,63 @@ namespace RingContact
                                    error_text(err, id.infog[at(2)]));
         id.icntl[at(14)] *= 2;
       }
+  }
+
+  // The pivot order for the analysis: the whole pattern gathered on process
+  // 0 (where MUMPS's analysis gathers it too) and ordered there by METIS;
+  // MUMPS's own choice if METIS fails.
+  void
+  MumpsSolver::order_unknowns(const int n)
+  {
+    DMUMPS_STRUC_C &id        = data->id;
+    const unsigned  n_process = Utilities::MPI::n_mpi_processes(communicator);
+    const bool      host = Utilities::MPI::this_mpi_process(communicator) == 0;
+    std::vector<int> all_rows, all_columns;
+    if (n_process == 1)
+      {
+        all_rows    = rows;
+        all_columns = columns;
+      }
+    else
+      {
+        const int        mine = static_cast<int>(rows.size());
+        std::vector<int> counts(n_process), offsets(n_process + 1, 0);
+        int ierr = MPI_Gather(
+          &mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, communicator);
+        AssertThrowMPI(ierr);
+        for (unsigned p = 0; p < n_process; ++p)
+          offsets[p + 1] = offsets[p] + counts[p];
+        if (host)
+          {
+            all_rows.resize(offsets[n_process]);
+            all_columns.resize(offsets[n_process]);
+          }
+        for (auto [mine_part, all_part] :
+             {std::make_pair(&rows, &all_rows),
+              std::make_pair(&columns, &all_columns)})
+          {
+            ierr = MPI_Gatherv(mine_part->data(),
+                               mine,
+                               MPI_INT,
+                               all_part->data(),
+                               counts.data(),
+                               offsets.data(),
+                               MPI_INT,
+                               0,
+                               communicator);
+            AssertThrowMPI(ierr);
+          }
+      }
+    int ordered = 0;
+    if (host)
+      {
+        pivot_order = nested_dissection_order(n, all_rows, all_columns);
+        ordered     = pivot_order.empty() ? 0 : 1;
+      }
+    const int ierr = MPI_Bcast(&ordered, 1, MPI_INT, 0, communicator);
+    AssertThrowMPI(ierr);
+    id.perm_in      = host && ordered ? pivot_order.data() : nullptr;
+    id.icntl[at(7)] = ordered ? 1 : 7;
   }
 
   void

@@ -3,7 +3,10 @@
 // assembled input), the analysis (ordering, elimination tree, mapping onto
 // the processes) kept while the sparsity pattern does not change, and the
 // right-hand side and solution whole on every process (they are, in this
-// program: see LinearSystem).
+// program: see LinearSystem). The pivot order is METIS's nested dissection
+// of the whole pattern, computed on process 0 (MUMPS's own choice, PORD in
+// Debian's build, which has neither METIS nor Scotch, makes a third more
+// flops on the rings).
 //
 // Trilinos's Amesos_Mumps does the same through Epetra, but rebuilds its
 // triplets and redistributes the matrix at every factorization: at 640 x 48
@@ -63,6 +66,10 @@ namespace RingContact
     int
     run(const int job);
 
+    /// Choose the pivot order of the next analysis (collective).
+    void
+    order_unknowns(const int n);
+
     const MPI_Comm        communicator;
     std::unique_ptr<Data> data;
     bool                  analysed         = false;
@@ -72,6 +79,8 @@ namespace RingContact
     std::vector<int>    rows, columns;
     std::vector<double> values;
     std::vector<double> rhs;
+    /// Process 0's pivot order (MUMPS's PERM_IN), kept through the analysis.
+    std::vector<int> pivot_order;
   };
 } // namespace RingContact
 
