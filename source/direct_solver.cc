@@ -122,21 +122,25 @@ namespace RingContact
           }
         analysed         = true;
         analysed_version = pattern_version;
+        ++counts.analyses;
       }
     free_numeric();
-    const long status = umfpack_dl_numeric(row_start.data(),
+    std::vector<double> info(UMFPACK_INFO);
+    const long          status = umfpack_dl_numeric(row_start.data(),
                                            columns.data(),
                                            values.data(),
                                            symbolic,
                                            &numeric,
                                            control.data(),
-                                           nullptr);
+                                           info.data());
     if (status != UMFPACK_OK)
       {
         free_numeric();
         throw std::runtime_error("UMFPACK's factorization failed: " +
                                  status_text(status));
       }
+    ++counts.factorizations;
+    counts.flops = info[UMFPACK_FLOPS];
   }
 
   void

@@ -171,6 +171,22 @@ namespace RingContact
     rhs_added = 0;
   }
 
+  std::string
+  LinearSystem::direct_solver_name() const
+  {
+    return block_solver ? "" : use_trilinos ? "MUMPS" : "UMFPACK";
+  }
+
+  FactorizationStatistics
+  LinearSystem::direct_statistics() const
+  {
+    if (umfpack)
+      return umfpack->statistics();
+    if (distributed_part && distributed_part->mumps)
+      return distributed_part->mumps->statistics();
+    return {};
+  }
+
   double
   LinearSystem::solve(Vector<double> &x)
   {

@@ -206,6 +206,7 @@ namespace RingContact
                                    error_text(err, id.infog[at(2)]));
         analysed         = true;
         analysed_version = pattern_version;
+        ++counts.analyses;
       }
     // Short of workspace (the pivoting delayed more than estimated): more,
     // and again.
@@ -213,7 +214,11 @@ namespace RingContact
       {
         const int err = run(2);
         if (err >= 0)
-          return;
+          {
+            ++counts.factorizations;
+            counts.flops = id.rinfog[at(3)];
+            return;
+          }
         const bool workspace =
           error_text(err, 0) == "its workspace is too small";
         if (!workspace || attempt == 3)
@@ -302,9 +307,4 @@ namespace RingContact
     AssertThrowMPI(ierr);
   }
 
-  double
-  MumpsSolver::factorization_flops() const
-  {
-    return data->id.rinfog[at(3)];
-  }
 } // namespace RingContact

@@ -1028,7 +1028,8 @@ namespace RingContact
     s.add("Print timing",
           print_timing,
           "true",
-          "Print the timing summary at the end (switch off in "
+          "Print the timing summary at the end, and the direct "
+          "solver's factorizations and their flops (switch off in "
           "tests).");
   }
 

@@ -1632,6 +1632,16 @@ namespace RingContact
           << linear_solves << " solves (" << std::fixed << std::setprecision(1)
           << double(linear_iterations) / linear_solves << " per solve)\n"
           << std::defaultfloat;
+    // The direct solver's work, with the timing summary.
+    else if (const auto done = system->direct_statistics();
+             parameters.output.print_timing && done.factorizations > 0)
+      log << system->direct_solver_name() << ": " << done.factorizations
+          << (done.factorizations == 1 ? " factorization, " :
+                                         " factorizations, ")
+          << done.analyses
+          << (done.analyses == 1 ? " analysis, " : " analyses, ")
+          << std::setprecision(3) << done.flops << " flops in the last\n"
+          << std::defaultfloat << std::setprecision(6);
     return ok;
   }
 } // namespace RingContact

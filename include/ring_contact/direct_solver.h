@@ -24,6 +24,16 @@ namespace RingContact
 {
   using namespace dealii;
 
+  /// What a direct solver did in a run: its analyses (one per sparsity
+  /// pattern), its numerical factorizations, and the floating-point
+  /// operations of the last factorization (the solver's own count).
+  struct FactorizationStatistics
+  {
+    unsigned int analyses       = 0;
+    unsigned int factorizations = 0;
+    double       flops          = 0;
+  };
+
   class DirectSolver
   {
   public:
@@ -46,6 +56,12 @@ namespace RingContact
     void
     solve(const Vector<double> &b, Vector<double> &x) const;
 
+    const FactorizationStatistics &
+    statistics() const
+    {
+      return counts;
+    }
+
   private:
     void
     free_symbolic();
@@ -63,6 +79,7 @@ namespace RingContact
     void                     *symbolic = nullptr;
     void                     *numeric  = nullptr;
     std::vector<double>       control;
+    FactorizationStatistics   counts;
   };
 } // namespace RingContact
 

@@ -143,6 +143,13 @@ namespace RingContact
       return iterations;
     }
 
+    /// The direct solver's name ("UMFPACK" or "MUMPS") and what it did;
+    /// an empty name for the iterative solver.
+    std::string
+    direct_solver_name() const;
+    FactorizationStatistics
+    direct_statistics() const;
+
     /// The matrix on one process (deal.II's): for tests.
     const SparseMatrix<double> &
     serial_matrix() const

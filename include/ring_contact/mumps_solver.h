@@ -19,6 +19,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/direct_solver.h>
+
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -54,10 +56,13 @@ namespace RingContact
     void
     solve(const Vector<double> &b, Vector<double> &x);
 
-    /// Floating-point operations of the last factorization (MUMPS's
-    /// RINFOG(3)).
-    double
-    factorization_flops() const;
+    /// Analyses, factorizations, and the floating-point operations of the
+    /// last factorization (MUMPS's RINFOG(3), all processes).
+    const FactorizationStatistics &
+    statistics() const
+    {
+      return counts;
+    }
 
   private:
     struct Data;
@@ -81,6 +86,7 @@ namespace RingContact
     std::vector<double> rhs;
     /// Process 0's pivot order (MUMPS's PERM_IN), kept through the analysis.
     std::vector<int> pivot_order;
+    FactorizationStatistics counts;
   };
 } // namespace RingContact
 

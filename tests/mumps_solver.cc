@@ -1,0 +1,155 @@
+// MumpsSolver, the parallel direct solver, on its own: the 5-point Laplacian
+// of a k x k grid (Dirichlet rows at the border) plus a skew convection term
+// (an unsymmetric matrix, as the contact tangents are), its rows split
+// between the processes of mpirun -np 2. Asserted:
+// - the solution of A x = A x_exact is x_exact to 1e-10, on two processes
+//   and on each process alone (MPI_COMM_SELF);
+// - the pivot order is METIS's nested dissection of the whole pattern: the
+//   LU's flops are the same on two processes as on one (an order computed
+//   from the gathered pattern, the same whatever the distribution; MUMPS's
+//   own PORD order depends on the order in which the entries reach the
+//   host), and below a fifth of those of the banded (natural) order,
+//   2 n k^2, which a fill-reducing order must beat on a 2D grid (nested
+//   dissection: O(n^1.5));
+// - a second factorization with the same pattern keeps the analysis; a
+//   new pattern version is analysed again;
+// - a singular matrix is refused with MUMPS's reason.
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/mumps_solver.h>
+
+#include "tests.h"
+
+#include <cmath>
+#include <stdexcept>
+
+using namespace dealii;
+using namespace RingContact;
+using RingContactTests::check;
+using RingContactTests::deallog_file;
+
+namespace
+{
+  constexpr unsigned int k = 80; // grid points per side
+  constexpr unsigned int n = k * k;
+
+  // The matrix on `communicator`, each process owning a contiguous block of
+  // rows; `singular`: the first row zero.
+  TrilinosWrappers::SparseMatrix
+  grid_matrix(const MPI_Comm communicator, const bool singular = false)
+  {
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+    IndexSet           owned(n);
+    owned.add_range(n * rank / n_processes, n * (rank + 1) / n_processes);
+    DynamicSparsityPattern pattern(n, n, owned);
+    for (const auto row : owned)
+      {
+        const unsigned int i = row % k, j = row / k;
+        pattern.add(row, row);
+        if (i > 0 && i + 1 < k && j > 0 && j + 1 < k)
+          for (const unsigned int neighbour :
+               {row - 1, row + 1, row - k, row + k})
+            pattern.add(row, neighbour);
+      }
+    TrilinosWrappers::SparseMatrix matrix;
+    matrix.reinit(owned, owned, pattern, communicator);
+    for (const auto row : owned)
+      {
+        const unsigned int i = row % k, j = row / k;
+        if (i > 0 && i + 1 < k && j > 0 && j + 1 < k)
+          {
+            matrix.set(row, row, 4.0);
+            matrix.set(row, row - 1, -1.3); // convection along i
+            matrix.set(row, row + 1, -0.7);
+            matrix.set(row, row - k, -1.0);
+            matrix.set(row, row + k, -1.0);
+          }
+        else
+          matrix.set(row, row, singular && row == 0 ? 0.0 : 1.0);
+      }
+    matrix.compress(VectorOperation::insert);
+    return matrix;
+  }
+
+  // Solve with x_exact(i) = sin(i): the largest error, and the LU's flops.
+  std::pair<double, double>
+  solve(const MPI_Comm communicator)
+  {
+    const auto     matrix = grid_matrix(communicator);
+    Vector<double> exact(n), b(n), x;
+    for (unsigned int i = 0; i < n; ++i)
+      exact(i) = std::sin(1.0 + i);
+    // b = A x_exact, whole on every process.
+    Vector<double> owned_part(n);
+    for (const auto row : matrix.locally_owned_range_indices())
+      for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
+        owned_part(row) += e->value() * exact(e->column());
+    Utilities::MPI::sum(owned_part, communicator, b);
+
+    MumpsSolver mumps(communicator);
+    mumps.factorize(matrix.trilinos_matrix(), 1);
+    mumps.solve(b, x);
+    double error = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      error = std::max(error, std::abs(x(i) - exact(i)));
+
+    // The same pattern: no new analysis; a new version: a new one.
+    mumps.factorize(matrix.trilinos_matrix(), 1);
+    check(mumps.statistics().analyses == 1 &&
+            mumps.statistics().factorizations == 2,
+          "the analysis is kept while the pattern version does not change");
+    mumps.factorize(matrix.trilinos_matrix(), 2);
+    check(mumps.statistics().analyses == 2,
+          "a new pattern version is analysed again");
+    return {error, mumps.statistics().flops};
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2,
+        "run with mpirun -np 2");
+
+  const auto [error_two, flops_two]   = solve(MPI_COMM_WORLD);
+  const auto [error_alone, flops_one] = solve(MPI_COMM_SELF);
+  check(error_two < 1e-10, "two processes: x = x_exact to 1e-10");
+  check(error_alone < 1e-10, "one process: x = x_exact to 1e-10");
+  check(flops_two == flops_one,
+        "the same pivot order on two processes as on one (LU flops " +
+          std::to_string(flops_two) + " and " + std::to_string(flops_one) +
+          ")");
+  const double banded = 2.0 * n * k * k;
+  check(flops_two < 0.2 * banded,
+        "a fill-reducing order: LU flops " + std::to_string(flops_two) +
+          " against " + std::to_string(banded) + " in the banded order");
+  deallog_file << "grid " << k << " x " << k
+               << ": x = x_exact to 1e-10 on two processes and on one, the "
+                  "same LU flops on both, below a fifth of the banded order's"
+               << std::endl;
+
+  // A singular matrix: refused, on every process, with MUMPS's reason.
+  {
+    const auto  matrix = grid_matrix(MPI_COMM_WORLD, true);
+    MumpsSolver mumps(MPI_COMM_WORLD);
+    std::string message;
+    try
+      {
+        mumps.factorize(matrix.trilinos_matrix(), 1);
+      }
+    catch (const std::runtime_error &e)
+      {
+        message = e.what();
+      }
+    check(message.find("singular") != std::string::npos,
+          "a singular matrix is refused as singular (got '" + message + "')");
+    deallog_file << "singular matrix: " << message << std::endl;
+  }
+}
