@@ -142,6 +142,22 @@ namespace RingContact
     return n_changed + update_friction(solution);
   }
 
+  std::pair<double, Point<2>>
+  ContactInterface::deepest_interpenetration() const
+  {
+    double   depth = 0;
+    Point<2> where;
+    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+      if (reference_weight[k] > 0 &&
+          -weighted_gap[k] / reference_weight[k] > depth)
+        {
+          depth = -weighted_gap[k] / reference_weight[k];
+          const auto &site = node_sites.at(multiplier_dof_list[k]).front();
+          where = slave.reference_point(site.first, site.second).x;
+        }
+    return {depth, where};
+  }
+
   void
   ContactInterface::accept_state(const Vector<double> &solution)
   {

@@ -188,6 +188,19 @@ namespace RingContact
     double
     stretch_at(const types::global_dof_index multiplier_dof) const;
 
+    /// The deepest interpenetration of the surfaces at the last update():
+    /// the most negative mean gap g~_k / w_k over the multiplier nodes
+    /// (a depth >= 0; 0 when none is negative), and that node's position.
+    std::pair<double, Point<2>>
+    deepest_interpenetration() const;
+
+    /// The length of the shortest slave segment (reference configuration).
+    double
+    slave_segment_length() const
+    {
+      return segment_length;
+    }
+
     /// Gap at a multiplier node (its slave point projected on the master).
     double
     gap_at(const types::global_dof_index multiplier_dof,

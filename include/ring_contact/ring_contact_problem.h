@@ -32,6 +32,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <ostream>
 #include <string>
 
@@ -202,7 +203,10 @@ namespace RingContact
     /// Notes the rigid-body motions that no imposed displacement fixes;
     /// returns their number.
     unsigned int
-    report_rigid_body_modes() const;
+    report_rigid_body_modes();
+    /// Warns when the contact surfaces interpenetrate before any load.
+    void
+    report_initial_interpenetration();
     const AffineConstraints<double> &
     update_constraints() const
     {
@@ -290,6 +294,11 @@ namespace RingContact
     const LoadProgram                          load_program;
     /// One interface per contact pair (subsection Contact first).
     std::vector<std::unique_ptr<ContactInterface>> contacts;
+    /// Each contact pair's slave and master bodies (material ids).
+    std::vector<std::pair<types::material_id, types::material_id>>
+      contact_bodies;
+    /// The bodies that some rigid motion leaves held by the contact only.
+    std::set<types::material_id> held_by_contact;
     /// The pair of each contact node (multiplier dof).
     std::map<types::global_dof_index, unsigned int> pair_of_node;
     /// The body (material id) of each slave and master boundary tag.
