@@ -237,41 +237,30 @@ namespace RingContact
     DMUMPS_STRUC_C &id        = data->id;
     const unsigned  n_process = Utilities::MPI::n_mpi_processes(communicator);
     const bool      host = Utilities::MPI::this_mpi_process(communicator) == 0;
-    std::vector<int> all_rows, all_columns;
-    if (n_process == 1)
+    // Each process's entries, in the order of the processes, on process 0
+    // (one process: a copy of its own).
+    const int        mine = static_cast<int>(rows.size());
+    std::vector<int> counts(n_process), offsets(n_process + 1, 0);
+    int              ierr =
+      MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, communicator);
+    AssertThrowMPI(ierr);
+    for (unsigned p = 0; p < n_process; ++p)
+      offsets[p + 1] = offsets[p] + counts[p];
+    std::vector<int> all_rows(host ? offsets[n_process] : 0),
+      all_columns(host ? offsets[n_process] : 0);
+    for (auto [mine_part, all_part] : {std::make_pair(&rows, &all_rows),
+                                       std::make_pair(&columns, &all_columns)})
       {
-        all_rows    = rows;
-        all_columns = columns;
-      }
-    else
-      {
-        const int        mine = static_cast<int>(rows.size());
-        std::vector<int> counts(n_process), offsets(n_process + 1, 0);
-        int ierr = MPI_Gather(
-          &mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, communicator);
+        ierr = MPI_Gatherv(mine_part->data(),
+                           mine,
+                           MPI_INT,
+                           all_part->data(),
+                           counts.data(),
+                           offsets.data(),
+                           MPI_INT,
+                           0,
+                           communicator);
         AssertThrowMPI(ierr);
-        for (unsigned p = 0; p < n_process; ++p)
-          offsets[p + 1] = offsets[p] + counts[p];
-        if (host)
-          {
-            all_rows.resize(offsets[n_process]);
-            all_columns.resize(offsets[n_process]);
-          }
-        for (auto [mine_part, all_part] :
-             {std::make_pair(&rows, &all_rows),
-              std::make_pair(&columns, &all_columns)})
-          {
-            ierr = MPI_Gatherv(mine_part->data(),
-                               mine,
-                               MPI_INT,
-                               all_part->data(),
-                               counts.data(),
-                               offsets.data(),
-                               MPI_INT,
-                               0,
-                               communicator);
-            AssertThrowMPI(ierr);
-          }
       }
     int ordered = 0;
     if (host)
@@ -279,7 +268,7 @@ namespace RingContact
         pivot_order = nested_dissection_order(n, all_rows, all_columns);
         ordered     = pivot_order.empty() ? 0 : 1;
       }
-    const int ierr = MPI_Bcast(&ordered, 1, MPI_INT, 0, communicator);
+    ierr = MPI_Bcast(&ordered, 1, MPI_INT, 0, communicator);
     AssertThrowMPI(ierr);
     id.perm_in      = host && ordered ? pivot_order.data() : nullptr;
     id.icntl[at(7)] = ordered ? 1 : 7;

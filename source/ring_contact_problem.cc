@@ -270,7 +270,6 @@ namespace RingContact
         return body.material.kinematics == Kinematics::small_strain;
       });
     contacts.clear();
-    contact_bodies.clear();
     pair_of_node.clear();
     for (const auto &[slave, master] : pairs)
       {
@@ -291,8 +290,6 @@ namespace RingContact
                    master_body.material.youngs_modulus),
           geometrically_linear,
           sector));
-        contact_bodies.emplace_back(slave_body.material_id,
-                                    master_body.material_id);
         for (const auto node : contacts.back()->all_multiplier_dofs())
           pair_of_node[node] = contacts.size() - 1;
         for (const auto node : contacts.back()->tangential_dofs())
@@ -402,11 +399,14 @@ namespace RingContact
   void
   RingContactProblem::report_initial_interpenetration()
   {
+    // One interface per pair, in the order of the pairs (setup()).
+    const auto pairs = parameters.contact_pairs();
     for (unsigned int i = 0; i < contacts.size(); ++i)
       {
-        const auto &contact = contacts[i];
-        if (held_by_contact.count(contact_bodies[i].first) ||
-            held_by_contact.count(contact_bodies[i].second))
+        const auto &contact         = contacts[i];
+        const auto &[slave, master] = pairs[i];
+        if (held_by_contact.count(body_of_boundary.at(slave)) ||
+            held_by_contact.count(body_of_boundary.at(master)))
           continue;
         contact->update(solution);
         const auto [depth, where] = contact->deepest_interpenetration();

@@ -294,9 +294,6 @@ namespace RingContact
     const LoadProgram                          load_program;
     /// One interface per contact pair (subsection Contact first).
     std::vector<std::unique_ptr<ContactInterface>> contacts;
-    /// Each contact pair's slave and master bodies (material ids).
-    std::vector<std::pair<types::material_id, types::material_id>>
-      contact_bodies;
     /// The bodies that some rigid motion leaves held by the contact only.
     std::set<types::material_id> held_by_contact;
     /// The pair of each contact node (multiplier dof).
