@@ -75,6 +75,9 @@ namespace RingContact
     void
     order_unknowns(const int n);
 
+    void
+    equilibrate(const int n);
+
     const MPI_Comm        communicator;
     std::unique_ptr<Data> data;
     bool                  analysed         = false;
@@ -84,8 +87,10 @@ namespace RingContact
     std::vector<int>    rows, columns;
     std::vector<double> values;
     std::vector<double> rhs;
+    /// The scaling of the last matrix factorized (equilibrate()), whole.
+    std::vector<double> row_scaling, column_scaling;
     /// Process 0's pivot order (MUMPS's PERM_IN), kept through the analysis.
-    std::vector<int> pivot_order;
+    std::vector<int>        pivot_order;
     FactorizationStatistics counts;
   };
 } // namespace RingContact
