@@ -1,6 +1,10 @@
 #include <ring_contact/linear_system.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace RingContact
@@ -141,6 +145,92 @@ namespace RingContact
     else
       constraints.distribute_local_to_global(
         local_matrix, local_rhs, dofs, distributed_part->matrix, rhs_added);
+  }
+
+  double *
+  LinearSystem::value_array()
+  {
+    // The places are held in 32 bits.
+    constexpr std::size_t most = std::numeric_limits<std::uint32_t>::max();
+    if (!use_trilinos)
+      return sparsity_pattern.n_nonzero_elements() == 0 ||
+                 sparsity_pattern.n_nonzero_elements() > most ?
+               nullptr :
+               &matrix.diag_element(0) - sparsity_pattern(0, 0);
+    const Epetra_CrsMatrix &m = distributed_part->matrix.trilinos_matrix();
+    if (!m.StorageOptimized() || m.NumMyRows() == 0 ||
+        static_cast<std::size_t>(m.NumMyNonzeros()) > most)
+      return nullptr;
+    int     n;
+    double *values;
+    int    *columns;
+    m.ExtractMyRowView(0, n, values, columns);
+    return values;
+  }
+
+  std::size_t
+  LinearSystem::place_of(const types::global_dof_index i,
+                         const types::global_dof_index j) const
+  {
+    if (!use_trilinos)
+      return sparsity_pattern(i, j);
+    const Epetra_CrsMatrix &m = distributed_part->matrix.trilinos_matrix();
+    int                     n;
+    double                 *values, *first;
+    int                    *columns;
+    m.ExtractMyRowView(0, n, first, columns);
+    m.ExtractMyRowView(m.LRID(static_cast<int>(i)), n, values, columns);
+    const int column = m.LCID(static_cast<int>(j));
+    const int k      = std::find(columns, columns + n, column) - columns;
+    if (column < 0 || k == n)
+      throw std::logic_error("LinearSystem: a cell's entry is not in the "
+                             "sparsity pattern");
+    return static_cast<std::size_t>(values + k - first);
+  }
+
+  void
+  LinearSystem::add_cell(const unsigned int               cell,
+                         const AffineConstraints<double> &constraints,
+                         const FullMatrix<double>        &local_matrix,
+                         const Vector<double>            &local_rhs,
+                         const std::vector<types::global_dof_index> &dofs)
+  {
+    double *const values = value_array();
+    bool          direct = values != nullptr;
+    for (const auto dof : dofs)
+      direct =
+        direct && !constraints.is_constrained(dof) && owned.is_element(dof);
+    if (!direct)
+      {
+        add(constraints, local_matrix, local_rhs, dofs);
+        return;
+      }
+    auto &places = cell_places;
+    if (places.version != pattern_version)
+      {
+        places.version = pattern_version;
+        places.start.clear();
+        places.place.clear();
+      }
+    if (cell >= places.start.size())
+      places.start.resize(cell + 1, CellPlaces::unknown);
+    const unsigned int n = dofs.size();
+    if (places.start[cell] == CellPlaces::unknown)
+      {
+        places.start[cell] = places.place.size();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            places.place.push_back(
+              static_cast<std::uint32_t>(place_of(dofs[i], dofs[j])));
+      }
+    Vector<double>      &rhs   = use_trilinos ? rhs_added : rhs_vector;
+    const std::uint32_t *place = places.place.data() + places.start[cell];
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        rhs(dofs[i]) += local_rhs(i);
+        for (unsigned int j = 0; j < n; ++j)
+          values[*place++] += local_matrix(i, j);
+      }
   }
 
   void

@@ -435,7 +435,7 @@ namespace RingContact
   unsigned int
   RingContactProblem::report_rigid_body_modes()
   {
-    unsigned int                                n_free = 0;
+    unsigned int n_free = 0;
     held_by_contact.clear();
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(mapping_collection,
@@ -752,7 +752,11 @@ namespace RingContact
                   }
               }
           }
-        add_local_system(cell_matrix, cell_rhs, dofs, internal_force);
+        add_local_system(cell_matrix,
+                         cell_rhs,
+                         dofs,
+                         internal_force,
+                         cell->active_cell_index());
       }
 
     // A load that is not a finite number at a face of one process fails the
@@ -796,7 +800,8 @@ namespace RingContact
     const FullMatrix<double>                   &matrix,
     const Vector<double>                       &rhs,
     const std::vector<types::global_dof_index> &dofs,
-    Vector<double>                             &force)
+    Vector<double>                             &force,
+    const unsigned int                          cell)
   {
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
@@ -806,7 +811,10 @@ namespace RingContact
           magnitude += std::abs(matrix(i, j)) * std::abs(solution(dofs[j]));
         residual_magnitude(dofs[i]) += magnitude;
       }
-    system->add(update_constraints(), matrix, rhs, dofs);
+    if (cell == numbers::invalid_unsigned_int)
+      system->add(update_constraints(), matrix, rhs, dofs);
+    else
+      system->add_cell(cell, update_constraints(), matrix, rhs, dofs);
   }
 
   // The scenario's boundary loads.

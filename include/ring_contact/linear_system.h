@@ -88,6 +88,19 @@ namespace RingContact
         const Vector<double>                       &local_rhs,
         const std::vector<types::global_dof_index> &dofs);
 
+    /// The same for a cell's matrix, `cell` being its active index. When
+    /// none of the cell's unknowns is constrained and all its rows are this
+    /// process's, the entries go straight to their places in the matrix's
+    /// storage, found once per sparsity pattern and kept by the cell:
+    /// neither the search of each entry in its row nor the constraints'
+    /// bookkeeping is repeated at every assembly.
+    void
+    add_cell(const unsigned int                          cell,
+             const AffineConstraints<double>            &constraints,
+             const FullMatrix<double>                   &local_matrix,
+             const Vector<double>                       &local_rhs,
+             const std::vector<types::global_dof_index> &dofs);
+
     /// K_ii += k, rhs_i += r (a row that is its own equation).
     void
     add_diagonal(const types::global_dof_index i,
@@ -189,6 +202,25 @@ namespace RingContact
     /// Linear solver = iterative (on Trilinos's matrix).
     std::unique_ptr<BlockSolver> block_solver;
     unsigned int                 iterations = 0;
+    /// The matrix's values, one array (nullptr when the storage is not
+    /// one array: then add_cell() is add()).
+    double *
+    value_array();
+    /// The place in value_array() of entry (i, j) of the pattern, i a row
+    /// this process stores.
+    std::size_t
+    place_of(const types::global_dof_index i,
+             const types::global_dof_index j) const;
+    /// The cells' places (add_cell()), for the pattern `version`: the
+    /// places of cell c's entries, row by row, from place[start[c]].
+    struct CellPlaces
+    {
+      static constexpr std::uint64_t unknown = ~std::uint64_t(0);
+      std::uint64_t                  version = 0;
+      std::vector<std::uint64_t>     start;
+      std::vector<std::uint32_t>     place;
+    } cell_places;
+
     /// The right-hand side, whole; and (several processes) what this
     /// process added since the last compress().
     Vector<double> rhs_vector;

@@ -32,8 +32,8 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <set>
 #include <ostream>
+#include <set>
 #include <string>
 
 namespace RingContact
@@ -228,7 +228,8 @@ namespace RingContact
     add_local_system(const FullMatrix<double>                   &matrix,
                      const Vector<double>                       &rhs,
                      const std::vector<types::global_dof_index> &dofs,
-                     Vector<double>                             &force);
+                     Vector<double>                             &force,
+                     const unsigned int cell = numbers::invalid_unsigned_int);
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,
