@@ -126,7 +126,10 @@ namespace RingContact
       return owned;
     }
 
-    /// f(column, value) for every stored entry of an owned row i.
+    /// f(column, value) for every nonzero stored entry of an owned row i
+    /// (the pattern's zeros skipped: the callers sum products and absolute
+    /// values, and right after the contact terms, whose magnitudes are
+    /// measured on their own, nearly all the matrix is still zero).
     template <typename Function>
     void
     for_each_entry(const types::global_dof_index i, const Function &f) const;
@@ -236,7 +239,8 @@ namespace RingContact
     if (!use_trilinos)
       {
         for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-          f(e->column(), e->value());
+          if (e->value() != 0)
+            f(e->column(), e->value());
         return;
       }
     // Epetra's own view of the row (deal.II's row iterators over a Trilinos
@@ -247,7 +251,8 @@ namespace RingContact
     int                    *columns;
     m.ExtractMyRowView(m.LRID(static_cast<int>(i)), n, values, columns);
     for (int k = 0; k < n; ++k)
-      f(static_cast<types::global_dof_index>(m.GCID(columns[k])), values[k]);
+      if (values[k] != 0)
+        f(static_cast<types::global_dof_index>(m.GCID(columns[k])), values[k]);
   }
 } // namespace RingContact
 
