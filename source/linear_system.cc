@@ -195,7 +195,16 @@ namespace RingContact
                          const Vector<double>            &local_rhs,
                          const std::vector<types::global_dof_index> &dofs)
   {
-    double *const values = value_array();
+    // The storage, once per pattern.
+    auto &places = cell_places;
+    if (places.version != pattern_version)
+      {
+        places.version = pattern_version;
+        places.values  = value_array();
+        places.start.clear();
+        places.place.clear();
+      }
+    double *const values = places.values;
     bool          direct = values != nullptr;
     for (const auto dof : dofs)
       direct =
@@ -204,13 +213,6 @@ namespace RingContact
       {
         add(constraints, local_matrix, local_rhs, dofs);
         return;
-      }
-    auto &places = cell_places;
-    if (places.version != pattern_version)
-      {
-        places.version = pattern_version;
-        places.start.clear();
-        places.place.clear();
       }
     if (cell >= places.start.size())
       places.start.resize(cell + 1, CellPlaces::unknown);

@@ -214,12 +214,14 @@ namespace RingContact
     std::size_t
     place_of(const types::global_dof_index i,
              const types::global_dof_index j) const;
-    /// The cells' places (add_cell()), for the pattern `version`: the
-    /// places of cell c's entries, row by row, from place[start[c]].
+    /// The cells' places (add_cell()), for the pattern `version`: its
+    /// value_array(), and the places of cell c's entries, row by row, from
+    /// place[start[c]].
     struct CellPlaces
     {
       static constexpr std::uint64_t unknown = ~std::uint64_t(0);
       std::uint64_t                  version = 0;
+      double                        *values  = nullptr;
       std::vector<std::uint64_t>     start;
       std::vector<std::uint32_t>     place;
     } cell_places;
