@@ -236,6 +236,16 @@ namespace RingContact
   }
 
   void
+  LinearSystem::add_rhs(const AffineConstraints<double>            &constraints,
+                        const Vector<double>                       &local_rhs,
+                        const std::vector<types::global_dof_index> &dofs)
+  {
+    Assert(!constraints.has_inhomogeneities(), ExcInternalError());
+    constraints.distribute_local_to_global(
+      local_rhs, dofs, use_trilinos ? rhs_added : rhs_vector);
+  }
+
+  void
   LinearSystem::add_diagonal(const types::global_dof_index i,
                              const double                  k,
                              const double                  r)

@@ -51,6 +51,16 @@ namespace
     material.stress_and_tangent(H, P, A);
     check((P - material.stress(H)).norm() < 1e-12 * P.norm(),
           name + ": stress() and stress_and_tangent() agree");
+    // The major symmetry, on which the assembly relies.
+    double asymmetry = 0;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int J = 0; J < 2; ++J)
+        for (unsigned int k = 0; k < 2; ++k)
+          for (unsigned int L = 0; L < 2; ++L)
+            asymmetry =
+              std::max(asymmetry, std::abs(A[i][J][k][L] - A[k][L][i][J]));
+    check(asymmetry <= 1e-12 * A.norm(),
+          name + ": the tangent has the major symmetry A_iJkL = A_kLiJ");
     double       worst = 0;
     const double h     = 1e-6;
     for (unsigned int k = 0; k < 2; ++k)
@@ -177,9 +187,43 @@ namespace
         }
     }
     problem.assemble_newton_system();
-    const auto          &Kref        = problem.tangent_matrix();
-    const Vector<double> rhs0        = problem.residual_rhs();
-    const auto          &constraints = problem.newton_constraints();
+    const auto           &Kref        = problem.tangent_matrix();
+    const Vector<double>  rhs0        = problem.residual_rhs();
+    const auto           &constraints = problem.newton_constraints();
+    const ResidualMeasure measure0    = problem.residual_measure();
+
+    // The residual alone (what a convergence test assembles): the same
+    // right-hand side on the free rows, up to round-off, and the same
+    // measures but the force floor, which needs the tangent.
+    {
+      problem.assemble_newton_system(ContactInterface::Pairing::search,
+                                     RingContactProblem::Assembly::residual);
+      const ResidualMeasure measure = problem.residual_measure();
+      double                largest = 0, difference = 0;
+      for (types::global_dof_index i = 0; i < u.size(); ++i)
+        if (!constraints.is_constrained(i))
+          {
+            largest = std::max(largest, std::abs(rhs0(i)));
+            difference =
+              std::max(difference,
+                       std::abs(problem.residual_rhs()(i) - rhs0(i)));
+          }
+      const auto close = [](const double a, const double b) {
+        return std::abs(a - b) <= 1e-12 * std::abs(b);
+      };
+      check(difference <= 1e-13 * largest && !measure.force_floor_known &&
+              measure0.force_floor_known && measure.force_floor == 0 &&
+              close(measure.force, measure0.force) &&
+              close(measure.merit, measure0.merit) &&
+              close(measure.gap, measure0.gap) &&
+              measure.gap_floor == measure0.gap_floor,
+            "the residual assembled without the tangent is the same (largest "
+            "difference " +
+              std::to_string(difference / largest) + " of the largest entry)");
+      if (std::getenv("TANGENT_DEBUG"))
+        std::cerr << "residual alone: " << difference / largest << std::endl;
+      problem.assemble_newton_system();
+    }
 
     // Columns: every unconstrained dof of the contact surfaces and a few
     // bulk ones.
@@ -297,6 +341,12 @@ main()
   check_material(PlaneAssumption::plane_stress,
                  Kinematics::small_strain,
                  "linear plane stress");
+  check_material(PlaneAssumption::plane_stress,
+                 Kinematics::neo_hookean,
+                 "neo-Hookean plane stress");
+  check_material(PlaneAssumption::plane_strain,
+                 Kinematics::neo_hookean,
+                 "neo-Hookean plane strain");
   check_system("nodal", 1, Kinematics::finite_strain);
   check_system("nodal", 1, Kinematics::finite_strain, true);
   check_system("Gauss 3", 1, Kinematics::finite_strain);

@@ -101,6 +101,13 @@ namespace RingContact
              const Vector<double>                       &local_rhs,
              const std::vector<types::global_dof_index> &dofs);
 
+    /// A cell's right-hand side alone (an assembly without the tangent);
+    /// the constraints must be homogeneous.
+    void
+    add_rhs(const AffineConstraints<double>            &constraints,
+            const Vector<double>                       &local_rhs,
+            const std::vector<types::global_dof_index> &dofs);
+
     /// K_ii += k, rhs_i += r (a row that is its own equation).
     void
     add_diagonal(const types::global_dof_index i,

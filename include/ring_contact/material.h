@@ -56,7 +56,9 @@ namespace RingContact
     virtual Tensor<2, 2>
     stress(const Tensor<2, 2> &grad_u) const = 0;
 
-    /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL).
+    /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL),
+    /// which has the major symmetry A_iJkL = A_kLiJ of a hyperelastic law
+    /// (the assembly computes the upper triangle of the cell matrices).
     virtual void
     stress_and_tangent(const Tensor<2, 2> &grad_u,
                        Tensor<2, 2>       &P,

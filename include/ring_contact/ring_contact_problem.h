@@ -29,12 +29,15 @@
 #include <ring_contact/postprocessing.h>
 #include <ring_contact/scenario.h>
 
+#include <algorithm>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <ostream>
 #include <set>
 #include <string>
+#include <utility>
 
 namespace RingContact
 {
@@ -57,10 +60,17 @@ namespace RingContact
     double gap_floor = 0;
     /// Euclidean norm of the free rows: the merit of the line search.
     double merit = 0;
+    /// False when the system was assembled without its tangent: the bulk's
+    /// part of force_floor (from the cell matrices) is then unknown and
+    /// force_floor is 0, so that converged() errs only towards "not yet".
+    bool force_floor_known = true;
 
     /// Both groups below max(tolerance, their floor).
     bool
     converged(const double tolerance) const;
+    /// Not converged(), but might be once the force floor is known.
+    bool
+    undecided(const double tolerance) const;
   };
 
   class RingContactProblem
@@ -118,13 +128,24 @@ namespace RingContact
     /// Make the mesh, the finite elements, the contact interface.
     void
     setup();
+    /// What an assembly computes: the right-hand side -R and the tangent
+    /// (for a Newton update), or -R alone, which is what a convergence test
+    /// or a line search's trial needs. The contact rows and columns are
+    /// whole in both.
+    enum class Assembly
+    {
+      residual_and_tangent,
+      residual
+    };
     /// Pair, choose the active set and assemble the tangent and the
     /// right-hand side -R at the current solution; returns the number of
     /// contact nodes whose status changed.
     /// `pairing`: see ContactInterface::update().
     unsigned int
-    assemble_newton_system(const ContactInterface::Pairing pairing =
-                             ContactInterface::Pairing::search);
+    assemble_newton_system(
+      const ContactInterface::Pairing pairing =
+        ContactInterface::Pairing::search,
+      const Assembly what = Assembly::residual_and_tangent);
     Vector<double> &
     current_solution()
     {
@@ -181,7 +202,9 @@ namespace RingContact
 
   private:
     void
-    assemble_system();
+    assemble_system(const Assembly what = Assembly::residual_and_tangent);
+    void
+    store_reference_geometry();
     void
     make_grid();
     void
@@ -233,6 +256,7 @@ namespace RingContact
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,
+                const Assembly         assembly,
                 unsigned int          &n_changed,
                 double                &step_length);
     bool
@@ -346,6 +370,65 @@ namespace RingContact
     Vector<double> position_magnitude;
     unsigned int   n_inverted = 0;
     double         min_det_F  = 1;
+    /// Whether the system last assembled has its tangent (see Assembly).
+    bool tangent_assembled = false;
+    /// The reference geometry of this process's cells for the assembly
+    /// (see store_reference_geometry()).
+    struct ReferenceGeometry
+    {
+      /// Per finite element of the collection: the component of each of
+      /// its unknowns; its displacement unknowns, the index of each one's
+      /// scalar shape function in its base element, and their number; the
+      /// number of quadrature points.
+      struct Layout
+      {
+        std::vector<unsigned int> component, u_dofs, base;
+        unsigned int              n_bases    = 0;
+        unsigned int              n_q_points = 0;
+      };
+      std::vector<Layout> layout;
+      /// Per active cell (of this process), where its values start in JxW
+      /// and in gradients (n_bases gradients per quadrature point).
+      std::vector<std::pair<std::size_t, std::size_t>> start;
+      std::vector<double>                              JxW;
+      std::vector<Tensor<1, 2>>                        gradients;
+    } reference_geometry;
+    /// Whether the iterate after a Newton update is expected to converge,
+    /// from this run's record. Such an iterate is assembled without its
+    /// tangent first: the test of convergence does not need it, and after
+    /// the last update of a load step it would not be used. One that does
+    /// not converge needs it for its own update, and is assembled again.
+    struct ConvergenceRecord
+    {
+      /// Whether the last update that imposed a boundary increment led to
+      /// a converged iterate.
+      bool lifting_converged = false;
+      /// r_k+1 / r_k^2 of the last other update, r the relative residual
+      /// (the larger of the force and gap measures): Newton's quadratic
+      /// rate, from which the next residual is forecast. None (infinite)
+      /// before the first.
+      double rate = std::numeric_limits<double>::infinity();
+
+      bool
+      expects(const bool   lifting,
+              const double residual,
+              const double tolerance) const
+      {
+        return lifting ? lifting_converged :
+                         rate * residual * residual <= tolerance;
+      }
+      void
+      record(const bool   lifting,
+             const double from,
+             const double to,
+             const bool   converged)
+      {
+        if (lifting)
+          lifting_converged = converged;
+        else if (from > 0 && std::isfinite(from) && std::isfinite(to))
+          rate = to / (from * from);
+      }
+    } convergence_record;
     /// Linear solver = iterative: GMRES's iterations and solves in the run.
     unsigned int linear_iterations = 0;
     unsigned int linear_solves     = 0;
