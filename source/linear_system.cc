@@ -1,6 +1,7 @@
 #include <ring_contact/linear_system.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
 
 #include <algorithm>
 #include <cmath>
@@ -113,6 +114,10 @@ namespace RingContact
         auto &d = *distributed_part;
         // Each process's rows of other processes go to their owners.
         d.matrix.reinit(owned, owned, dsp, d.communicator, true);
+        const Epetra_Map &columns = d.matrix.trilinos_matrix().ColMap();
+        global_column.resize(columns.NumMyElements());
+        for (int k = 0; k < columns.NumMyElements(); ++k)
+          global_column[k] = columns.GID64(k);
         if (!d.mumps && !block_solver)
           d.mumps = std::make_unique<MumpsSolver>(d.communicator);
         rhs_added.reinit(n);
@@ -317,15 +322,20 @@ namespace RingContact
         d.mumps->solve(rhs_vector, x);
       }
     // |K x - rhs|, each process its own rows.
-    double squares[2] = {0, 0};
-    for (const auto i : owned)
+    double                  squares[2] = {0, 0};
+    const Epetra_CrsMatrix &m          = d.matrix.trilinos_matrix();
+    for (int row = 0; row < m.NumMyRows(); ++row)
       {
-        double r = -rhs_vector(i);
-        for_each_entry(i, [&](const auto j, const double value) {
-          r += value * x(j);
-        });
+        int     n;
+        double *values;
+        int    *columns;
+        m.ExtractMyRowView(row, n, values, columns);
+        const double b = rhs_vector(m.GRID64(row));
+        double       r = -b;
+        for (int k = 0; k < n; ++k)
+          r += values[k] * x(global_column[columns[k]]);
         squares[0] += r * r;
-        squares[1] += rhs_vector(i) * rhs_vector(i);
+        squares[1] += b * b;
       }
     dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(squares, 2),
                                 communicator,

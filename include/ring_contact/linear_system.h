@@ -209,6 +209,9 @@ namespace RingContact
       ~Distributed();
     };
     std::unique_ptr<Distributed> distributed_part;
+    /// The global index of each local column of the distributed matrix
+    /// (Epetra's column map, read once per pattern).
+    std::vector<types::global_dof_index> global_column;
     /// Linear solver = iterative (on Trilinos's matrix).
     std::unique_ptr<BlockSolver> block_solver;
     unsigned int                 iterations = 0;
@@ -261,7 +264,7 @@ namespace RingContact
     m.ExtractMyRowView(m.LRID(static_cast<int>(i)), n, values, columns);
     for (int k = 0; k < n; ++k)
       if (values[k] != 0)
-        f(static_cast<types::global_dof_index>(m.GCID(columns[k])), values[k]);
+        f(global_column[columns[k]], values[k]);
   }
 } // namespace RingContact
 
