@@ -259,7 +259,9 @@ namespace RingContact
         return 1.;
       int exponent;
       std::frexp(largest, &exponent);
-      return std::ldexp(1., -exponent);
+      // Below the normal numbers (largest < 2^-1022) 2^-exponent would
+      // overflow: the factor stops at 2^1000.
+      return std::ldexp(1., std::min(-exponent, 1000));
     };
     // Each process's rows are its own: the others' factors stay 0, below
     // any factor, in the maximum over the processes.
@@ -298,7 +300,10 @@ namespace RingContact
           row_scaling[i] = 1; // a row without entries: singular anyway
       }
     for (std::size_t k = 0; k < values.size(); ++k)
-      values[k] *= row_scaling[rows[k] - 1] * column_scaling[columns[k] - 1];
+      // One factor at a time: for subnormal entries their product
+      // overflows.
+      values[k] =
+        values[k] * row_scaling[rows[k] - 1] * column_scaling[columns[k] - 1];
   }
 
   // The pivot order for the analysis: the whole pattern gathered on process
