@@ -1621,8 +1621,15 @@ namespace RingContact
           << std::setprecision(3) << row.rotation << "  Newton " << iterations
           << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
           << "  p_A " << std::setprecision(7) << std::setw(12) << row.pressure_A
-          << "  analytic " << std::setw(12) << row.analytic << "  error "
-          << std::fixed << std::setprecision(3) << std::setw(7)
+          << "  analytic " << std::setw(12) << row.analytic;
+    // Errors relative to a zero analytic pressure (an input as soft as
+    // E = 1e-300 gives one) have no meaning: said so, not inf or nan.
+    if (parameters.output.print_steps && !parameters.general() &&
+        (!std::isfinite(row.relative_error) ||
+         !std::isfinite(row.l2_relative_error)))
+      log << "  error     n/a  L2    n/a";
+    else if (parameters.output.print_steps && !parameters.general())
+      log << "  error " << std::fixed << std::setprecision(3) << std::setw(7)
           << 100 * row.relative_error << "%  L2 " << std::setw(6)
           << 100 * row.l2_relative_error << '%' << std::defaultfloat;
     if (parameters.output.print_steps && friction)
