@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace RingContact
 {
@@ -18,11 +19,22 @@ namespace RingContact
   // ------------------------------------------------------------------
 
   LagrangeBasis1D::LagrangeBasis1D(const std::vector<double> &nodes)
+    : n_nodes(nodes.size())
   {
-    std::vector<Point<1>> points;
-    for (const double t : nodes)
-      points.emplace_back(t);
-    polynomials = Polynomials::generate_complete_Lagrange_basis(points);
+    AssertThrow(nodes.size() <= max_size,
+                ExcMessage("a segment's basis has at most " +
+                           std::to_string(max_size) + " nodes"));
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      {
+        this->nodes[i] = nodes[i];
+        for (unsigned int j = 0; j < n_nodes; ++j)
+          if (j != i)
+            {
+              AssertThrow(nodes[i] != nodes[j],
+                          ExcMessage("the nodes of a basis must differ"));
+              inverse_differences[i][j] = 1. / (nodes[i] - nodes[j]);
+            }
+      }
   }
 
   void
@@ -34,14 +46,7 @@ namespace RingContact
     values.resize(size());
     first.resize(size());
     second.resize(size());
-    std::array<double, 3> v;
-    for (unsigned int i = 0; i < size(); ++i)
-      {
-        polynomials[i].value(t, 2, v.data());
-        values[i] = v[0];
-        first[i]  = v[1];
-        second[i] = v[2];
-      }
+    evaluate(t, values.data(), first.data(), second.data());
   }
 
   void
@@ -50,13 +55,23 @@ namespace RingContact
                             double      *first,
                             double      *second) const
   {
-    double v[3];
-    for (unsigned int i = 0; i < size(); ++i)
+    for (unsigned int i = 0; i < n_nodes; ++i)
       {
-        polynomials[i].value(t, 2, v);
-        values[i] = v[0];
-        first[i]  = v[1];
-        second[i] = v[2];
+        // (v, v', v'') of the product so far, times each linear factor
+        // f = (t - t_j) w with f' = w, f'' = 0.
+        double v = 1, d1 = 0, d2 = 0;
+        for (unsigned int j = 0; j < n_nodes; ++j)
+          if (j != i)
+            {
+              const double w = inverse_differences[i][j];
+              const double f = (t - nodes[j]) * w;
+              d2             = d2 * f + 2 * d1 * w;
+              d1             = d1 * f + v * w;
+              v              = v * f;
+            }
+        values[i] = v;
+        first[i]  = d1;
+        second[i] = d2;
       }
   }
 
@@ -64,8 +79,14 @@ namespace RingContact
   LagrangeBasis1D::evaluate(const double t, std::vector<double> &values) const
   {
     values.resize(size());
-    for (unsigned int i = 0; i < size(); ++i)
-      values[i] = polynomials[i].value(t);
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      {
+        double v = 1;
+        for (unsigned int j = 0; j < n_nodes; ++j)
+          if (j != i)
+            v *= (t - nodes[j]) * inverse_differences[i][j];
+        values[i] = v;
+      }
   }
 
   // ------------------------------------------------------------------

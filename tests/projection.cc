@@ -4,7 +4,10 @@
 // configuration, against the exact distances: to the chord for straight
 // segments, to the circle for curved ones (up to the interpolation error of
 // the mapping). Also: the search finds the right segment all around, and a
-// point near a vertex is paired with the vertex normal.
+// point near a vertex is paired with the vertex normal. First, the segments'
+// Lagrange basis (values and two derivatives, evaluated as products of
+// linear factors) against deal.II's Lagrange polynomials.
+#include <deal.II/base/polynomial.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
@@ -28,6 +31,58 @@ main()
 {
   auto &out = RingContactTests::deallog_file;
   out << std::setprecision(6) << std::fixed;
+
+  // 1 to 5 nodes, equidistant and Gauss-Lobatto-like, at points inside and
+  // outside [0, 1] (projections are tried on the segments' extensions).
+  for (const std::vector<double> &nodes :
+       std::vector<std::vector<double>>{{0.5},
+                                        {0, 1},
+                                        {0, 0.5, 1},
+                                        {0, 0.2763932, 0.7236068, 1},
+                                        {0, 0.25, 0.5, 0.75, 1},
+                                        {1, 0.3, 0}})
+    {
+      const LagrangeBasis1D basis(nodes);
+      std::vector<Point<1>> points;
+      for (const double t : nodes)
+        points.emplace_back(t);
+      const auto reference =
+        Polynomials::generate_complete_Lagrange_basis(points);
+      double worst = 0, worst_kronecker = 0;
+      for (const double t : {-1.0, -0.3, 0.0, 0.1, 0.37, 0.5, 0.9, 1.0, 2.0})
+        {
+          double v[LagrangeBasis1D::max_size], d1[LagrangeBasis1D::max_size],
+            d2[LagrangeBasis1D::max_size];
+          basis.evaluate(t, v, d1, d2);
+          std::vector<double> values_only;
+          basis.evaluate(t, values_only);
+          for (unsigned int i = 0; i < nodes.size(); ++i)
+            {
+              double r[3];
+              reference[i].value(t, 2, r);
+              for (const double e : {v[i] - r[0],
+                                     d1[i] - r[1],
+                                     d2[i] - r[2],
+                                     values_only[i] - r[0]})
+                worst = std::max(worst, std::abs(e));
+            }
+        }
+      for (unsigned int j = 0; j < nodes.size(); ++j)
+        {
+          std::vector<double> v;
+          basis.evaluate(nodes[j], v);
+          for (unsigned int i = 0; i < nodes.size(); ++i)
+            worst_kronecker =
+              std::max(worst_kronecker, std::abs(v[i] - (i == j ? 1. : 0.)));
+        }
+      out << "basis of " << nodes.size()
+          << " nodes: values and two derivatives as deal.II's to 1e-11: "
+          << (worst < 1e-11 ? "yes" : "NO") << ", N_i(t_j) = delta_ij: "
+          << (worst_kronecker < 1e-14 ? "yes" : "NO") << std::endl;
+      check(worst < 1e-11,
+            "basis differs from deal.II's by " + std::to_string(worst));
+      check(worst_kronecker < 1e-14, "basis not interpolatory");
+    }
 
   MeshParameters mesh;
   mesh.elements_around       = 40;

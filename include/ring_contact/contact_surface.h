@@ -11,7 +11,6 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
-#include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -29,7 +28,13 @@ namespace RingContact
 {
   using namespace dealii;
 
-  /// Lagrange interpolation on a segment, t in [0, 1], through given nodes.
+  /// Lagrange interpolation on a segment, t in [0, 1], through given nodes
+  /// (at most max_size). Each basis function is evaluated as the product of
+  /// its linear factors (t - t_j) / (t_i - t_j), with its first and second
+  /// derivatives carried along by Leibniz's rule: the projections of the
+  /// contact search evaluate the segments' curves millions of times, and
+  /// deal.II's general Polynomial (any number of derivatives, its roots in
+  /// a std::vector) made this a third of the search.
   class LagrangeBasis1D
   {
   public:
@@ -39,7 +44,7 @@ namespace RingContact
     unsigned int
     size() const
     {
-      return polynomials.size();
+      return n_nodes;
     }
 
     /// Values and first and second derivatives of every basis function.
@@ -65,7 +70,10 @@ namespace RingContact
     static constexpr unsigned int max_size = 5;
 
   private:
-    std::vector<Polynomials::Polynomial<double>> polynomials;
+    unsigned int                    n_nodes = 0;
+    std::array<double, max_size>    nodes{};
+    /// 1 / (t_i - t_j) for j != i.
+    std::array<std::array<double, max_size>, max_size> inverse_differences{};
   };
 
   /// Position and derivatives of a point of a segment (surface_kernel.h).
