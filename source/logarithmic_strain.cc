@@ -140,14 +140,6 @@ namespace RingContact
                                  4 * F[i][J] * F[m][L] / (k.kappa * k.kappa)));
       }
 
-      // sigma = P F^T / det F, det F with the thickness stretch.
-      Tensor<2, 2>
-      cauchy_stress(const Tensor<2, 2> &H) const override
-      {
-        const Invariants k(H);
-        return stress(H) * transpose(k.F) / (k.J * thickness_stretch(H));
-      }
-
       // Plane strain: T33 = lambda tr(E) = lambda ln J is the Kirchhoff
       // stress tau33 (3 is a principal direction), sigma33 = tau33 / J.
       double

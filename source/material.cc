@@ -1,3 +1,5 @@
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <ring_contact/material.h>
 
 #include <cmath>
@@ -61,6 +63,13 @@ namespace RingContact
       , kinematics(kinematics)
       , law(make_material_law(ElasticConstants(E, nu, plane), kinematics))
   {}
+
+  Tensor<2, 2>
+  MaterialLaw::cauchy_stress(const Tensor<2, 2> &H) const
+  {
+    const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+    return stress(H) * transpose(F) / (determinant(F) * thickness_stretch(H));
+  }
 
   double
   Material::von_mises_stress(const Tensor<2, 2> &grad_u) const

@@ -52,15 +52,6 @@ namespace RingContact
         evaluate(H, P, &A);
       }
 
-      // sigma = P F^T / J, J = J2 F33.
-      Tensor<2, 2>
-      cauchy_stress(const Tensor<2, 2> &H) const override
-      {
-        const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
-        return stress(H) * transpose(F) /
-               (determinant(F) * thickness_stretch(H));
-      }
-
       // Plane strain: sigma33 = P33 / J = lambda ln J / J.
       double
       out_of_plane_stress(const Tensor<2, 2> &H) const override

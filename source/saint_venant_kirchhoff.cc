@@ -60,16 +60,6 @@ namespace RingContact
                   c.mu * F[i][L] * F[k][J] + c.mu * FFt[i][k] * I[J][L];
       }
 
-      // sigma = P F^T / det(F), det F including the thickness stretch in
-      // plane stress.
-      Tensor<2, 2>
-      cauchy_stress(const Tensor<2, 2> &H) const override
-      {
-        const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
-        return stress(H) * transpose(F) /
-               (determinant(F) * thickness_stretch(H));
-      }
-
       // Plane strain: E33 = 0, S33 = lambda (E11 + E22), F33 = 1, so
       // sigma33 = S33 / det F.
       double

@@ -64,9 +64,11 @@ namespace RingContact
                        Tensor<2, 2>       &P,
                        Tensor<4, 2>       &A) const = 0;
 
-    /// In-plane Cauchy stress.
+    /// In-plane Cauchy stress. By default that of a finite-strain law,
+    /// sigma = P F^T / det F, det F including the thickness stretch F33 of
+    /// plane stress; small strain overrides it (sigma is its stress).
     virtual Tensor<2, 2>
-    cauchy_stress(const Tensor<2, 2> &grad_u) const = 0;
+    cauchy_stress(const Tensor<2, 2> &grad_u) const;
 
     /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress).
     virtual double
