@@ -126,13 +126,14 @@ namespace RingContact
     id.sym             = 0; // unsymmetric: contact and follower loads
     run(-1);
     // Silent; the matrix distributed as each process's rows; the
-    // right-hand side and the solution centralized on process 0.
+    // right-hand side centralized on process 0, the solution distributed
+    // (see solve()).
     for (const int stream : {1, 2, 3})
       id.icntl[at(stream)] = -1;
     id.icntl[at(4)]  = 0;
     id.icntl[at(18)] = 3;
     id.icntl[at(20)] = 0;
-    id.icntl[at(21)] = 0;
+    id.icntl[at(21)] = 1;
     // Room for the pivoting of the contact rows, whose diagonal is zero
     // (MUMPS's default is 20 %).
     id.icntl[at(14)] = 50;
@@ -352,6 +353,10 @@ namespace RingContact
     id.icntl[at(7)] = ordered ? 1 : 7;
   }
 
+  // The right-hand side centralized on process 0, the solution left
+  // distributed as MUMPS's processes hold it (ICNTL(21) = 1) and gathered on
+  // every process from there: a centralized solution is first gathered on
+  // process 0 by MUMPS, then sent to the others.
   void
   MumpsSolver::solve(const Vector<double> &b, Vector<double> &x)
   {
@@ -360,21 +365,55 @@ namespace RingContact
     rhs.resize(b.size());
     for (std::size_t i = 0; i < rhs.size(); ++i)
       rhs[i] = row_scaling[i] * b[i];
-    id.rhs        = host ? rhs.data() : nullptr;
-    id.nrhs       = 1;
-    id.lrhs       = static_cast<MUMPS_INT>(rhs.size());
-    const int err = run(3);
+    id.rhs  = host ? rhs.data() : nullptr;
+    id.nrhs = 1;
+    id.lrhs = static_cast<MUMPS_INT>(rhs.size());
+    // INFO(23): how many solution entries this process holds.
+    const int mine = id.info[at(23)];
+    solution_part.resize(std::max(mine, 1));
+    solution_indices.resize(std::max(mine, 1));
+    id.sol_loc       = solution_part.data();
+    id.isol_loc      = solution_indices.data();
+    id.lsol_loc      = mine;
+    const int err    = run(3);
     if (err < 0)
       throw std::runtime_error("MUMPS's solve failed: " +
                                error_text(err, id.infog[at(2)]));
-    // The solution, on process 0, to every process.
-    x.reinit(b.size());
-    if (host)
-      for (std::size_t i = 0; i < rhs.size(); ++i)
-        x[i] = column_scaling[i] * rhs[i];
-    const int ierr = MPI_Bcast(
-      x.begin(), static_cast<int>(x.size()), MPI_DOUBLE, 0, communicator);
+    const unsigned int n_process = Utilities::MPI::n_mpi_processes(communicator);
+    std::vector<int>   counts(n_process), offsets(n_process + 1, 0);
+    int                ierr =
+      MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator);
     AssertThrowMPI(ierr);
+    for (unsigned int p = 0; p < n_process; ++p)
+      offsets[p + 1] = offsets[p] + counts[p];
+    AssertThrow(offsets[n_process] == static_cast<int>(b.size()),
+                ExcMessage("MUMPS's distributed solution is not whole"));
+    all_solution_parts.resize(b.size());
+    all_solution_indices.resize(b.size());
+    ierr = MPI_Allgatherv(solution_part.data(),
+                          mine,
+                          MPI_DOUBLE,
+                          all_solution_parts.data(),
+                          counts.data(),
+                          offsets.data(),
+                          MPI_DOUBLE,
+                          communicator);
+    AssertThrowMPI(ierr);
+    ierr = MPI_Allgatherv(solution_indices.data(),
+                          mine,
+                          MPI_INT,
+                          all_solution_indices.data(),
+                          counts.data(),
+                          offsets.data(),
+                          MPI_INT,
+                          communicator);
+    AssertThrowMPI(ierr);
+    x.reinit(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        const int i = all_solution_indices[k] - 1;
+        x[i]        = column_scaling[i] * all_solution_parts[k];
+      }
   }
 
 } // namespace RingContact

@@ -87,6 +87,10 @@ namespace RingContact
     std::vector<int>    rows, columns;
     std::vector<double> values;
     std::vector<double> rhs;
+    /// This process's part of the solution (MUMPS's distributed solution)
+    /// and its unknowns (from 1); then all processes' parts.
+    std::vector<double> solution_part, all_solution_parts;
+    std::vector<int>    solution_indices, all_solution_indices;
     /// The scaling of the last matrix factorized (equilibrate()), whole.
     std::vector<double> row_scaling, column_scaling;
     /// Process 0's pivot order (MUMPS's PERM_IN), kept through the analysis.
