@@ -40,6 +40,8 @@
 #include <memory>
 #include <thread>
 
+#include <unistd.h>
+
 namespace
 {
   // The signal that asked the run to stop, 0 while none did. The handler
@@ -49,6 +51,10 @@ namespace
   // program at once.
   std::atomic<int> stop_signal{0};
   static_assert(std::atomic<int>::is_always_lock_free);
+  // Whether this process says, when the first signal comes, that it was
+  // heard (process 0 only, under MPI).
+  std::atomic<bool> announce_stop{true};
+  static_assert(std::atomic<bool>::is_always_lock_free);
 
   extern "C" void
   request_stop(const int signal)
@@ -61,6 +67,16 @@ namespace
       }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
+    // At once, not after the step (which may take long): write() is safe
+    // in a handler, the streams are not.
+    if (announce_stop)
+      {
+        static const char message[] =
+          "\nring_contact: stopping after the current step, with its files "
+          "whole (a second signal stops at once)\n";
+        [[maybe_unused]] const auto written =
+          ::write(STDERR_FILENO, message, sizeof(message) - 1);
+      }
   }
 
   void
@@ -216,6 +232,8 @@ main(int argc, char **argv)
     mpi =
       std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
   install_signal_handlers();
+  if (mpi && this_process(MPI_COMM_WORLD) != 0)
+    announce_stop = false;
 
   // Every process reads the file: an error in it is every process's, and
   // process 0 says it.
@@ -276,14 +294,25 @@ main(int argc, char **argv)
     {
       const OutputParameters &output = parameters.output;
 
-      // The output folder, held for the whole run, without an earlier run's
-      // files (a run that writes no file leaves the folder alone); process 0
-      // holds it and writes the history and the verdicts.
+      // The output folder, held for the whole run (a run that writes no
+      // file leaves the folder alone); process 0 holds it and writes the
+      // history and the verdicts.
+      const bool writes_files =
+        output.write_history || output.vtu_interval > 0;
       std::unique_ptr<OutputFolder> folder;
       std::unique_ptr<HistoryFile>  history_file;
-      if (output.write_history || output.vtu_interval > 0)
+      if (writes_files)
         on_process_zero(world, [&]() {
-          folder             = std::make_unique<OutputFolder>(output.directory);
+          folder = std::make_unique<OutputFolder>(output.directory);
+        });
+      // An earlier run's files go, and the history starts, once the first
+      // scheme is set up: a run whose input or mesh fails leaves them.
+      bool       folder_ready   = !writes_files;
+      const auto prepare_folder = [&]() {
+        if (folder_ready)
+          return;
+        folder_ready = true;
+        on_process_zero(world, [&]() {
           const auto removed = folder->remove_earlier_results();
           if (!removed.empty())
             std::cout << "Removed from " << output.directory << " the "
@@ -303,9 +332,10 @@ main(int argc, char **argv)
                                               columns);
             }
         });
-      // Each process writes its piece of the VTU files into the folder.
-      if (n > 1)
-        MPI_Barrier(world);
+        // Each process writes its piece of the VTU files into the folder.
+        if (n > 1)
+          MPI_Barrier(world);
+      };
 
       std::vector<Verdict> verdicts;
       bool                 solved  = true;
@@ -317,6 +347,7 @@ main(int argc, char **argv)
           if (stop)
             break;
           RingContactProblem problem(parameters, scheme, out, world);
+          problem.set_start_observer(prepare_folder);
           problem.set_step_observer([&](const HistoryRow &row) {
             // Every process takes part (process 0's failure is all of
             // theirs): the condition is the same on all of them.

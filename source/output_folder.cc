@@ -181,7 +181,10 @@ namespace RingContact
     if (error)
       throw std::runtime_error("cannot create the output folder '" + directory +
                                "': " + error.message());
+    // The lock file is also the mark of a folder this program has written
+    // in: only there are files with its results' names its own.
     const std::string lock_name = directory + "/.ring_contact.lock";
+    const bool        used_before = std::filesystem::exists(lock_name);
     lock_descriptor =
       ::open(lock_name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (lock_descriptor < 0)
@@ -202,6 +205,30 @@ namespace RingContact
           "' is in use by another run of ring_contact (pid " +
           (holder.empty() ? std::string("unknown") : holder) +
           "); wait for it to end or choose another Output/Directory");
+      }
+    if (!used_before)
+      {
+        std::vector<std::string> foreign;
+        for (const auto &entry : std::filesystem::directory_iterator(directory))
+          if (entry.is_regular_file() &&
+              is_result_file(entry.path().filename().string()))
+            foreign.push_back(entry.path().filename().string());
+        if (!foreign.empty())
+          {
+            std::sort(foreign.begin(), foreign.end());
+            ::close(lock_descriptor);
+            ::unlink(lock_name.c_str());
+            throw std::runtime_error(
+              "the output folder '" + directory + "' holds '" + foreign[0] +
+              "'" +
+              (foreign.size() > 1 ?
+                 " and " + std::to_string(foreign.size() - 1) + " more file" +
+                   (foreign.size() > 2 ? "s" : "") :
+                 std::string()) +
+              " named as this program's results, which no run of it wrote "
+              "there (the folder has no .ring_contact.lock) and this run "
+              "would replace: move them, or choose another Output/Directory");
+          }
       }
     // The lock is ours: record our pid for the message above.
     const std::string pid = std::to_string(::getpid()) + "\n";

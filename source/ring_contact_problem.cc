@@ -1826,6 +1826,8 @@ namespace RingContact
     // an error now, not after the first step has been solved).
     for (const auto &check : parameters.problem.checks)
       checked_quantity(check);
+    if (start_observer)
+      start_observer();
     // The undeformed state, step 0: the start of every animation.
     if (parameters.output.vtu_interval > 0)
       output_results(0);

@@ -2,11 +2,11 @@
 // the real executable (modelisation A, two schemes, a VTU file every step)
 // is sent a signal at several points of its run, while it sets up, while it
 // writes a step's VTU files (just after the step's line is printed), in the
-// first and in the second scheme. Each time: the exit code is 128 + the
-// signal, the message says so, history.csv has one whole row per step
-// printed, verdicts.csv holds exactly the schemes that finished, every .pvd
-// and every .vtu it lists read back whole with VTK, and no temporary file
-// is left. A second signal ends the run at once; the files on disk are
+// first and in the second scheme. Each time: the signal is acknowledged
+// when received, the exit code is 128 + the signal, the message says so,
+// history.csv has one whole row per step printed, verdicts.csv holds
+// exactly the schemes that finished, every .pvd and every .vtu it lists
+// read back whole with VTK, and no temporary file is left. A second signal ends the run at once; the files on disk are
 // still whole, and the next run into the folder removes the leftovers.
 #include "run_program.h"
 
@@ -81,6 +81,8 @@ namespace
       {
         check(result.exit_code == 128 + signal,
               what + ": exit code " + std::to_string(result.exit_code));
+        check(result.printed("stopping after the current step"),
+              what + ": the signal acknowledged when received");
         check(result.printed(std::string("interrupted by ") +
                              (signal == SIGINT ? "SIGINT" : "SIGTERM")),
               what + ": the message");

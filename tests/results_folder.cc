@@ -7,11 +7,16 @@
 // - rerun: a shorter run with one scheme into the folder of a longer run
 //   with two removes the earlier history, verdicts, VTU and PVD files (and
 //   says so) but no other file;
+// - failed start: a run whose mesh lacks the contact boundary it names
+//   fails before its first step and leaves the earlier run's files whole;
+// - foreign files: a folder no run has used, holding a 'history.csv' of
+//   the user's, is refused and the file left untouched;
 // - a file size limit (RLIMIT_FSIZE, as a full disk: write() fails) hit by
 //   history.csv, then by a VTU file: a one-line error naming the file, exit
 //   code 1, every row before it whole, no temporary file left.
 #include "run_program.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -123,9 +128,17 @@ namespace
     const auto second =
       RingContactTests::run_program(write_prm("rerun", 3, "nodal", 1));
     check(second.exit_code == 0, "rerun: the second run");
-    check(second.printed("the 34 files of an earlier run"),
-          "rerun: the second run says what it removed: " + second.lines[0]);
-    out << "rerun: " << second.lines[0] << std::endl;
+    const auto removal =
+      std::find_if(second.lines.begin(),
+                   second.lines.end(),
+                   [](const std::string &line) {
+                     return line.rfind("Removed", 0) == 0;
+                   });
+    check(removal != second.lines.end() &&
+            removal->find("the 34 files of an earlier run") !=
+              std::string::npos,
+          "rerun: the second run says what it removed");
+    out << "rerun: " << *removal << std::endl;
     check(count_rows("results_rerun/history.csv") == 3 &&
             count_rows("results_rerun/verdicts.csv") == 3 &&
             count_files("results_rerun", ".vtu") == 2 * (3 + 1) + 1 &&
@@ -141,6 +154,59 @@ namespace
     out << "rerun: 3 rows, 8 VTU files (step 0 too), 2 PVD files; other "
            "files kept"
         << std::endl;
+  }
+
+  // A run whose input fails before its first step (a contact boundary the
+  // mesh does not have) leaves the earlier run's files as they were.
+  void
+  failed_start()
+  {
+    auto             &out = RingContactTests::deallog_file;
+    const std::string prm = write_prm("rerun", 3, "nodal", 1);
+    std::ofstream(prm, std::ios::app)
+      << "subsection Contact\n set Slave boundary = 999\nend\n";
+    const auto result = RingContactTests::run_program(prm);
+    check(result.exit_code == 1,
+          "failed start: exit code " + std::to_string(result.exit_code));
+    check(!result.printed("earlier run"),
+          "failed start: nothing said removed");
+    check(count_rows("results_rerun/history.csv") == 3 &&
+            count_files("results_rerun", ".vtu") == 2 * (3 + 1) &&
+            count_files("results_rerun", ".pvd") == 2,
+          "failed start: the earlier run's files are all there");
+    check(RingContactTests::check_results(
+            "results_rerun", "--quiet --all-listed --vtu-every-step --rows 3"),
+          "failed start: the earlier run's files read back whole");
+    out << "failed start: " << last_line(result) << std::endl;
+    out << "failed start: the earlier run's 3 rows, 8 VTU and 2 PVD files "
+           "kept whole"
+        << std::endl;
+  }
+
+  // A folder no run of this program has used, holding a file with the name
+  // of one of its results: refused before anything is written, the file
+  // untouched, no lock file left (which would mark the folder as used).
+  void
+  foreign_files()
+  {
+    auto &out = RingContactTests::deallog_file;
+    std::filesystem::create_directories("results_foreign");
+    std::ofstream("results_foreign/history.csv") << "my,own,data\n";
+    const auto result =
+      RingContactTests::run_program(write_prm("foreign", 3, "nodal", 0));
+    const std::string message = last_line(result);
+    check(result.exit_code == 1,
+          "foreign: exit code " + std::to_string(result.exit_code));
+    check(message.find("'results_foreign'") != std::string::npos &&
+            message.find("'history.csv'") != std::string::npos,
+          "foreign: the message names the folder and the file: " + message);
+    std::ifstream     in("results_foreign/history.csv");
+    std::stringstream contents;
+    contents << in.rdbuf();
+    check(contents.str() == "my,own,data\n", "foreign: the file is untouched");
+    check(!std::filesystem::exists("results_foreign/.ring_contact.lock"),
+          "foreign: no lock file left");
+    out << "foreign: " << message << std::endl;
   }
 
   void
@@ -182,6 +248,8 @@ main()
 {
   lock();
   rerun();
+  failed_start();
+  foreign_files();
   // About ten rows of history.csv fit in 2000 bytes.
   file_size_limit("fsize_history",
                   0,

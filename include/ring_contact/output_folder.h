@@ -59,7 +59,10 @@ namespace RingContact
   {
   public:
     /// Create the folder if needed and take it; throws, naming the folder
-    /// and the pid of the run that holds it, if another run does.
+    /// and the pid of the run that holds it, if another run does. Throws
+    /// too if a folder that no run of this program has used (no lock file)
+    /// holds files with its results' names: they are somebody else's, and
+    /// this program would replace them.
     explicit OutputFolder(const std::string &directory);
     ~OutputFolder();
     OutputFolder(const OutputFolder &) = delete;
@@ -69,6 +72,8 @@ namespace RingContact
     /// Remove the files an earlier run of this program left in the folder
     /// (history.csv, verdicts.csv, solution-*.vtu/.pvd, slave-*.vtu/.pvd and
     /// their temporaries; nothing else) and return their names, sorted.
+    /// Called once the run has shown it can start (its input read, its
+    /// mesh made and checked): a run that fails before leaves them.
     std::vector<std::string>
     remove_earlier_results() const;
 

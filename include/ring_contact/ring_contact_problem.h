@@ -100,6 +100,15 @@ namespace RingContact
       apply_boundary_motion(load);
     }
 
+    /// Called once, when the problem is set up and its checks can be
+    /// evaluated, before anything is written: the run's input has then
+    /// been found good (an earlier run's results may go).
+    void
+    set_start_observer(std::function<void()> observer)
+    {
+      start_observer = std::move(observer);
+    }
+
     /// Called after each converged step, once its results are complete
     /// (history row, VTU files); the run stops after that step when it
     /// returns false (a run asked to stop ends with whole files).
@@ -446,7 +455,8 @@ namespace RingContact
     std::unique_ptr<VtuWriter> vtu_writer;
     TimerOutput                timer;
 
-    /// See set_step_observer().
+    /// See set_start_observer() and set_step_observer().
+    std::function<void()>                   start_observer;
     std::function<bool(const HistoryRow &)> step_observer;
   };
 } // namespace RingContact
