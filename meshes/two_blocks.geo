@@ -8,7 +8,9 @@
 // writes its cells clockwise (the program must reorient them). angle turns
 // both blocks about the origin by that many degrees (an inclined interface
 // and inclined supports: the interface then runs along (cos a, sin a)).
-DefineConstant[ nl = 5, nu = 7, nh = 3, clockwise = 0, angle = 0 ];
+// gap > 0 lifts the upper block off the lower one by that distance along the
+// interface's normal (< 0: the blocks overlap by that much).
+DefineConstant[ nl = 5, nu = 7, nh = 3, clockwise = 0, angle = 0, gap = 0 ];
 // (Each point turned here: gmsh's Rotate would merge the blocks' coincident
 // points, and the two blocks would share their interface.)
 c = Cos(angle * Pi / 180); s = Sin(angle * Pi / 180);
@@ -21,8 +23,10 @@ Else
   Curve Loop(1) = {1, 2, 3, 4};
 EndIf
 Plane Surface(1) = {1};
-Point(5) = {0, 0, 0};              Point(6) = {c, s, 0};
-Point(7) = {c - 0.5 * s, s + 0.5 * c, 0}; Point(8) = {-0.5 * s, 0.5 * c, 0};
+gx = -gap * s; gy = gap * c;
+Point(5) = {gx, gy, 0};            Point(6) = {c + gx, s + gy, 0};
+Point(7) = {c - 0.5 * s + gx, s + 0.5 * c + gy, 0};
+Point(8) = {-0.5 * s + gx, 0.5 * c + gy, 0};
 Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
 Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
 Transfinite Curve{1, 3} = nl + 1; Transfinite Curve{2, 4} = nh + 1;

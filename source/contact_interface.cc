@@ -329,13 +329,21 @@ namespace RingContact
     std::vector<ContactPoint> new_points;
     for (unsigned int s = 0; s < slave.segments().size(); ++s)
       {
-        // Master vertices near the segment.
+        // Master vertices near the segment: within half its length, and
+        // the distance between the surfaces there (the bodies may be apart
+        // or overlap by more than a segment: small strain pairs them in
+        // the reference configuration, where they need not touch).
         std::vector<Point<2>> corners;
+        double                apart = 0;
         for (const double t : {0.0, 0.5, 1.0})
-          corners.push_back(slave.current_point(s, t).x);
+          {
+            corners.push_back(slave.current_point(s, t).x);
+            apart =
+              std::max(apart, std::abs(master.project(corners.back()).gap));
+          }
         BoundingBox<2> box(corners);
         const double   length = corners.front().distance(corners.back());
-        box.extend(0.5 * length);
+        box.extend(0.5 * length + apart);
 
         // Crossings eta of h(eta) = (x_s(eta) - x_v) x n_v = 0.
         std::vector<std::pair<double, unsigned int>> cuts; // eta, vertex
@@ -362,7 +370,8 @@ namespace RingContact
                     break;
                 }
               if (std::isfinite(eta) && eta > 1e-10 && eta < 1 - 1e-10 &&
-                  slave.current_point(s, eta).x.distance(xv) < length)
+                  slave.current_point(s, eta).x.distance(xv) <
+                    length + 2 * apart)
                 cuts.emplace_back(eta, v);
             }
         std::sort(cuts.begin(), cuts.end());
