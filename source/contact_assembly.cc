@@ -132,6 +132,9 @@ namespace RingContact
       scatter(std::vector<AD>                 &residual,
               const AffineConstraints<double> &constraints,
               LinearSystem                    &system);
+      /// The residual's values added to `v`, unconstrained.
+      void
+      add_values(std::vector<AD> &residual, Vector<double> &v);
 
     private:
       std::array<AD, 2>
@@ -596,6 +599,14 @@ namespace RingContact
         }
       system.add(constraints, local_matrix, local_rhs, unique_dofs);
     }
+
+    void
+    ContactElement::add_values(std::vector<AD> &residual, Vector<double> &v)
+    {
+      turn_copies(residual, true);
+      for (unsigned int i = 0; i < local_dofs.size(); ++i)
+        v(local_dofs[i]) += residual[i].val();
+    }
   } // namespace
 
   constexpr double stick_regularisation = 1e-12;
@@ -683,6 +694,44 @@ namespace RingContact
             rhs(0)       = -(w * solution(t) - b * solution(n));
             system.add(constraints, matrix, rhs, {t, n});
           }
+      }
+  }
+
+  void
+  ContactInterface::add_forces(const Vector<double> &solution,
+                               Vector<double>       &forces) const
+  {
+    const auto is_active = [this](const types::global_dof_index dof) {
+      return static_cast<bool>(active[multiplier_index.at(dof)]);
+    };
+    const auto friction_state = [this](const types::global_dof_index dof) {
+      const unsigned int k = multiplier_index.at(dof);
+      return active[k] ? slip_sign[k] : 2;
+    };
+    // (Before the first assembly there is no converged state yet: the
+    // tangential rows, which need it, are not forces.)
+    const std::optional<ConvergedState> converged =
+      friction_coefficient > 0 && converged_slave ?
+        std::optional<ConvergedState>(ConvergedState{converged_solution,
+                                                     *converged_slave,
+                                                     *converged_master}) :
+        std::nullopt;
+    for (const auto &point : points)
+      {
+        ContactElement element(slave,
+                               master,
+                               point,
+                               !geometrically_linear,
+                               segment_based,
+                               converged ? &*converged : nullptr);
+        element.gather_unknowns(solution, false);
+        element.evaluate_slave_point();
+        element.evaluate_partner_and_normal();
+        std::vector<AD> residual = element.residual(complementarity_constant,
+                                                    is_active,
+                                                    friction_state,
+                                                    friction_coefficient);
+        element.add_values(residual, forces);
       }
   }
 

@@ -1722,8 +1722,10 @@ namespace RingContact
           }
 
           // The sum of the nodal forces of the boundary's unknowns: the
-          // internal force, which at a converged state balances what acts
-          // there from outside (a support's reaction, an applied load).
+          // internal force less the contact's (at a node the boundary
+          // shares with a contact surface, the other body pushes too),
+          // which at a converged state balances what acts there from
+          // outside (a support's reaction, an applied load).
         case ProblemQuantity::resultant_force_x:
         case ProblemQuantity::resultant_force_y:
           {
@@ -1738,9 +1740,12 @@ namespace RingContact
               dof_handler,
               mask,
               {static_cast<types::boundary_id>(check.boundary_id)});
+            Vector<double> contact_force(dof_handler.n_dofs());
+            for (const auto &contact : contacts)
+              contact->add_forces(solution, contact_force);
             double force = 0;
             for (const auto i : dofs)
-              force += internal_force(i);
+              force += internal_force(i) + contact_force(i);
             return force;
           }
 

@@ -134,6 +134,13 @@ namespace RingContact
              const AffineConstraints<double> &constraints,
              LinearSystem                    &system) const;
 
+    /// Add the contact terms of the residual at `solution` (their values,
+    /// unconstrained) to `forces`: in a displacement row, the force of the
+    /// other body on this node, with the sign of an internal force. Every
+    /// slave point, whatever its process (the same sum on all of them).
+    void
+    add_forces(const Vector<double> &solution, Vector<double> &forces) const;
+
     /// The multiplier dofs of the slave surface, one per contact node (with
     /// cyclic symmetry the end side's twin is left out: see
     /// all_multiplier_dofs()).
