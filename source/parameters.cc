@@ -1460,6 +1460,29 @@ namespace RingContact
                     " has two loads (" + other.name +
                     " too): give their sum "
                     "in one");
+        // Two displacements on one boundary: each component once (x and y
+        // apart, or r and theta apart); a normal one alone.
+        const auto disjoint = [](const BoundaryConditionParameters &a,
+                                 const BoundaryConditionParameters &b) {
+          return !a.normal && !b.normal && a.polar == b.polar &&
+                 !(a.components[0] && b.components[0]) &&
+                 !(a.components[1] && b.components[1]);
+        };
+        for (const auto &other : problem.boundary_conditions)
+          {
+            if (&other == &condition)
+              break;
+            require(other.boundary_id != condition.boundary_id ||
+                      other.type != BoundaryConditionType::displacement ||
+                      condition.type != BoundaryConditionType::displacement ||
+                      disjoint(other, condition),
+                    condition.name,
+                    "Boundary id",
+                    "= " + std::to_string(condition.boundary_id) +
+                      " has a displacement of " + other.name +
+                      " too, on the same components: impose each "
+                      "component of a boundary once");
+          }
       }
   }
 

@@ -506,34 +506,89 @@ namespace RingContact
               for (unsigned int j = i; j < 3; ++j)
                 G[i][j] += row[i] * row[j];
           }
+        // A mode (translation x, y, rotation scaled by the size) in words.
+        const auto describe = [&](const Tensor<1, 3> &mode) {
+          std::ostringstream what;
+          what << std::setprecision(3);
+          const double sign =
+            mode[0] < -1e-12 || (mode[0] <= 1e-12 && mode[1] < 0) ? -1 : 1;
+          if (std::abs(mode[2]) < 1e-6)
+            {
+              // Whole numbers for the axes, no "-0".
+              const auto shown = [&](const double v) {
+                return std::abs(v) < 1e-12 ? 0.0 : sign * v;
+              };
+              what << "the translation along (" << shown(mode[0]) << ", "
+                   << shown(mode[1]) << ")";
+            }
+          else
+            what << "a rotation about ("
+                 << centre[0] - mode[1] * size / mode[2] << ", "
+                 << centre[1] + mode[0] * size / mode[2] << ")";
+          return what.str();
+        };
         const auto   modes   = eigenvectors(G);
         const double largest = std::max(modes[0].first, 1e-300);
+        bool         free    = false;
         for (const auto &[value, mode] : modes)
           if (value <= 1e-10 * largest || fixed.empty())
             {
-              std::ostringstream what;
-              what << std::setprecision(3);
-              const double sign =
-                mode[0] < -1e-12 || (mode[0] <= 1e-12 && mode[1] < 0) ? -1 : 1;
-              if (std::abs(mode[2]) < 1e-6)
-                {
-                  // Whole numbers for the axes, no "-0".
-                  const auto shown = [&](const double v) {
-                    return std::abs(v) < 1e-12 ? 0.0 : sign * v;
-                  };
-                  what << "the translation along (" << shown(mode[0]) << ", "
-                       << shown(mode[1]) << ")";
-                }
-              else
-                what << "a rotation about ("
-                     << centre[0] - mode[1] * size / mode[2] << ", "
-                     << centre[1] + mode[0] * size / mode[2] << ")";
               log << "Note: " << body.name << " (material " << body.material_id
-                  << "): no imposed displacement fixes " << what.str()
+                  << "): no imposed displacement fixes " << describe(mode)
                   << "; only the contact holds it there\n";
               ++n_free;
               held_by_contact.insert(body.material_id);
+              free = true;
             }
+        if (!free)
+          continue;
+        // A frictionless contact pushes along its normals only: a free
+        // motion that moves none of the body's contact surfaces along
+        // their normals (a block sliding along a flat interface, a disc
+        // turning in a ring) is held by nothing, and the tangent is
+        // singular: its solution, if the solver finds one, is arbitrary
+        // along that motion.
+        if (parameters.contact.friction_coefficient > 0)
+          continue;
+        SymmetricTensor<2, 3> H = G;
+        for (const auto &contact : contacts)
+          for (const ContactSurface *surface :
+               {&contact->slave_surface(), &contact->master_surface()})
+            for (unsigned int k = 0; k < surface->segments().size(); ++k)
+              {
+                const auto &segment = surface->segments()[k];
+                if (segment.is_copy ||
+                    segment.cell->material_id() != body.material_id)
+                  continue;
+                for (const double t : {0.0, 0.5, 1.0})
+                  {
+                    const auto   p = surface->reference_point(k, t);
+                    const double length = p.dx.norm();
+                    if (!(length > 0))
+                      continue;
+                    const Tensor<1, 2> n({p.dx[1] / length, -p.dx[0] / length});
+                    const Tensor<1, 2> r      = p.x - centre;
+                    const double       row[3] = {n[0],
+                                                 n[1],
+                                                 (-n[0] * r[1] + n[1] * r[0]) /
+                                                   size};
+                    for (unsigned int i = 0; i < 3; ++i)
+                      for (unsigned int j = i; j < 3; ++j)
+                        H[i][j] += row[i] * row[j];
+                  }
+              }
+        const auto   held      = eigenvectors(H);
+        const double h_largest = std::max(held[0].first, 1e-300);
+        for (const auto &[value, mode] : held)
+          if (value <= 1e-10 * h_largest)
+            throw std::runtime_error(
+              body.name + " (material " + std::to_string(body.material_id) +
+              "): nothing holds " + describe(mode) +
+              ": no imposed displacement fixes it, and the frictionless "
+              "contact, which pushes along its normals only, does not resist "
+              "it either; the problem has no unique solution (impose a "
+              "displacement on a boundary of the body that fixes this "
+              "motion)");
       }
     return n_free;
   }
