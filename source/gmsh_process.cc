@@ -346,7 +346,7 @@ namespace RingContact
 
         std::string answer;
         const auto  start     = std::chrono::steady_clock::now();
-        bool        timed_out = false;
+        bool        timed_out = false, interrupted = false;
         char        buffer[1 << 16];
         while (true)
           {
@@ -356,6 +356,13 @@ namespace RingContact
             if (time_limit_seconds > 0 && elapsed > time_limit_seconds)
               {
                 timed_out = true;
+                break;
+              }
+            // Ctrl-C: gmsh (deaf to it) is stopped here, at once, not
+            // when a script that may never end has been meshed.
+            if (stop_signal.load() != 0)
+              {
+                interrupted = true;
                 break;
               }
             pollfd    wait_for{ends[0], POLLIN, 0};
@@ -372,11 +379,13 @@ namespace RingContact
             answer.append(buffer, static_cast<std::size_t>(n));
           }
         close(ends[0]);
-        if (timed_out)
+        if (timed_out || interrupted)
           kill(pid, SIGKILL);
         int status = 0;
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
           ;
+        if (interrupted)
+          throw Interrupted("while gmsh read or meshed '" + filename + "'");
         if (timed_out)
           fail(filename,
                "gmsh did not finish reading it within " +

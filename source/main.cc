@@ -44,13 +44,11 @@
 
 namespace
 {
-  // The signal that asked the run to stop, 0 while none did. The handler
-  // only records it (a lock-free atomic: safe in a handler, and two signals
-  // handled at once by two threads see each other) and gives SIGINT and
-  // SIGTERM back their default action, so that a second signal ends the
-  // program at once.
-  std::atomic<int> stop_signal{0};
-  static_assert(std::atomic<int>::is_always_lock_free);
+  // The handler only records the signal in RingContact::stop_signal (a
+  // lock-free atomic: safe in a handler, and two signals handled at once by
+  // two threads see each other) and gives SIGINT and SIGTERM back their
+  // default action, so that a second signal ends the program at once.
+  using RingContact::stop_signal;
   // Whether this process says, when the first signal comes, that it was
   // heard (process 0 only, under MPI).
   std::atomic<bool> announce_stop{true};
@@ -72,8 +70,8 @@ namespace
     if (announce_stop)
       {
         static const char message[] =
-          "\nring_contact: stopping after the current step, with its files "
-          "whole (a second signal stops at once)\n";
+          "\nring_contact: stopping once the results on disk are whole, "
+          "after the current step (a second signal stops at once)\n";
         [[maybe_unused]] const auto written =
           ::write(STDERR_FILENO, message, sizeof(message) - 1);
       }
@@ -424,6 +422,20 @@ main(int argc, char **argv)
       if (!solved)
         out << "A load step could not be solved (see above).\n";
       return (pass && solved) ? 0 : 1;
+    }
+  catch (const RingContact::Interrupted &e)
+    {
+      // Before the first step: nothing of this run was written, and an
+      // earlier run's results are as they were.
+      const int signal = stop_signal.load() != 0 ? stop_signal.load() : SIGTERM;
+      if (n > 1 && !all_processes_arrive(errors, 10))
+        MPI_Abort(world, 128 + signal);
+      if (root)
+        std::cerr << "ring_contact: interrupted by "
+                  << (signal == SIGINT ? "SIGINT" : "SIGTERM") << " "
+                  << e.what() << ", before the first step: nothing written"
+                  << std::endl;
+      return 128 + signal;
     }
   catch (const std::bad_alloc &)
     {

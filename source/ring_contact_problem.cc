@@ -50,10 +50,9 @@ namespace RingContact
       , previous_time(0)
       , current_time(0)
       , current_load{0, 0}
-      , timer(log,
-              parameters.output.print_timing ? TimerOutput::summary :
-                                               TimerOutput::never,
-              TimerOutput::wall_times)
+      // The summary is printed by run() when it ends, not by the
+      // destructor: a run that ends by an error prints the error only.
+      , timer(log, TimerOutput::never, TimerOutput::wall_times)
   {
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
@@ -1915,6 +1914,8 @@ namespace RingContact
           << (done.analyses == 1 ? " analysis, " : " analyses, ")
           << std::setprecision(3) << done.flops << " flops in the last\n"
           << std::defaultfloat << std::setprecision(6);
+    if (parameters.output.print_timing)
+      timer.print_summary();
     return ok;
   }
 } // namespace RingContact

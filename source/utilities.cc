@@ -8,6 +8,9 @@
 
 namespace RingContact
 {
+  std::atomic<int> stop_signal{0};
+  static_assert(std::atomic<int>::is_always_lock_free);
+
   namespace
   {
     // The length of the UTF-8 sequence that starts at `at`, 0 if it is not

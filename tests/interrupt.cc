@@ -6,10 +6,13 @@
 // when received, the exit code is 128 + the signal, the message says so,
 // history.csv has one whole row per step printed, verdicts.csv holds
 // exactly the schemes that finished, every .pvd and every .vtu it lists
-// read back whole with VTK, and no temporary file is left. A second signal ends the run at once; the files on disk are
-// still whole, and the next run into the folder removes the leftovers.
+// read back whole with VTK, and no temporary file is left. A second signal
+// ends the run at once; the files on disk are still whole, and the next run
+// into the folder removes the leftovers. A signal while gmsh meshes a
+// script that never ends stops the run at once.
 #include "run_program.h"
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -81,7 +84,7 @@ namespace
       {
         check(result.exit_code == 128 + signal,
               what + ": exit code " + std::to_string(result.exit_code));
-        check(result.printed("stopping after the current step"),
+        check(result.printed("stopping once the results on disk are whole"),
               what + ": the signal acknowledged when received");
         check(result.printed(std::string("interrupted by ") +
                              (signal == SIGINT ? "SIGINT" : "SIGTERM")),
@@ -141,11 +144,45 @@ namespace
             << "read back whole" << std::endl;
       }
   }
+
+  // A signal while gmsh meshes a script that never ends (gmsh itself is
+  // deaf to it): the run stops within a second, exit code 143, saying what
+  // it interrupted. `timeout` sends SIGTERM after 3 s, and SIGKILL 10 s
+  // later if the run has not ended (then exit code 137: the defect).
+  void
+  interrupt_meshing()
+  {
+    auto &out = RingContactTests::deallog_file;
+    std::ofstream("endless.geo") << "For i In {1:1e15}\n  j = i;\nEndFor\n";
+    std::ofstream("endless.prm")
+      << "include " RING_CONTACT_SOURCE_DIR "/prm/two_blocks.prm\n"
+      << "subsection Mesh\n set Mesh file = endless.geo\nend\n"
+      << "subsection Output\n set Directory = endless\nend\n";
+    const auto   start  = std::chrono::steady_clock::now();
+    const auto   result = RingContactTests::run_command({"/usr/bin/timeout",
+                                                         "--preserve-status",
+                                                         "--kill-after=10",
+                                                         "3",
+                                                         RING_CONTACT_EXECUTABLE,
+                                                         "endless.prm"});
+    const double seconds = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - start)
+                             .count();
+    check(result.exit_code == 143,
+          "meshing: exit code " + std::to_string(result.exit_code));
+    check(result.printed("ring_contact: interrupted by SIGTERM while gmsh "
+                         "read or meshed 'endless.geo', before the first "
+                         "step: nothing written"),
+          "meshing: the message");
+    check(seconds < 8, "meshing: stopped within seconds");
+    out << "meshing: exit code 143, gmsh stopped, nothing written" << std::endl;
+  }
 } // namespace
 
 int
 main()
 {
+  interrupt_meshing();
   interrupt("int_setup", SIGINT, 1, 0);
   interrupt("int_step3", SIGINT, 1, 3);
   interrupt("term_step10", SIGTERM, 1, 10);
