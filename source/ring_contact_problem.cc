@@ -9,6 +9,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -434,7 +435,40 @@ namespace RingContact
   unsigned int
   RingContactProblem::report_rigid_body_modes()
   {
-    unsigned int n_free = 0;
+    // A mode (translation x, y, rotation scaled by the size) in words.
+    const auto describe_mode = [](const Tensor<1, 3> &mode,
+                                  const Point<2>     &centre,
+                                  const double        size) {
+      std::ostringstream what;
+      what << std::setprecision(3);
+      const double sign =
+        mode[0] < -1e-12 || (mode[0] <= 1e-12 && mode[1] < 0) ? -1 : 1;
+      if (std::abs(mode[2]) < 1e-6)
+        {
+          // Whole numbers for the axes, no "-0".
+          const auto shown = [&](const double v) {
+            return std::abs(v) < 1e-12 ? 0.0 : sign * v;
+          };
+          what << "the translation along (" << shown(mode[0]) << ", "
+               << shown(mode[1]) << ")";
+        }
+      else
+        what << "a rotation about ("
+             << centre[0] - mode[1] * size / mode[2] << ", "
+             << centre[1] + mode[0] * size / mode[2] << ")";
+      return what.str();
+    };
+    // Per body: its centre and size (the rotation's scale) and the matrix
+    // of its supports' constraints on its rigid modes.
+    struct Frame
+    {
+      Point<2>              centre;
+      double                size;
+      SymmetricTensor<2, 3> G;
+    };
+    std::map<types::material_id, Frame> frames;
+    bool                                any_free = false;
+    unsigned int                        n_free   = 0;
     held_by_contact.clear();
     std::map<types::global_dof_index, Point<2>> support_points;
     DoFTools::map_dofs_to_support_points(mapping_collection,
@@ -505,27 +539,10 @@ namespace RingContact
               for (unsigned int j = i; j < 3; ++j)
                 G[i][j] += row[i] * row[j];
           }
-        // A mode (translation x, y, rotation scaled by the size) in words.
         const auto describe = [&](const Tensor<1, 3> &mode) {
-          std::ostringstream what;
-          what << std::setprecision(3);
-          const double sign =
-            mode[0] < -1e-12 || (mode[0] <= 1e-12 && mode[1] < 0) ? -1 : 1;
-          if (std::abs(mode[2]) < 1e-6)
-            {
-              // Whole numbers for the axes, no "-0".
-              const auto shown = [&](const double v) {
-                return std::abs(v) < 1e-12 ? 0.0 : sign * v;
-              };
-              what << "the translation along (" << shown(mode[0]) << ", "
-                   << shown(mode[1]) << ")";
-            }
-          else
-            what << "a rotation about ("
-                 << centre[0] - mode[1] * size / mode[2] << ", "
-                 << centre[1] + mode[0] * size / mode[2] << ")";
-          return what.str();
+          return describe_mode(mode, centre, size);
         };
+        frames[body.material_id] = {centre, size, G};
         const auto   modes   = eigenvectors(G);
         const double largest = std::max(modes[0].first, 1e-300);
         bool         free    = false;
@@ -539,6 +556,7 @@ namespace RingContact
               held_by_contact.insert(body.material_id);
               free = true;
             }
+        any_free = any_free || free;
         if (!free)
           continue;
         // A frictionless contact pushes along its normals only: a free
@@ -589,6 +607,102 @@ namespace RingContact
               "displacement on a boundary of the body that fixes this "
               "motion)");
       }
+
+    // The bodies together: a motion of several bodies that keeps every
+    // gap (two blocks held by the contact between them, both free along
+    // it) is held by nothing either. The rigid modes of all bodies, the
+    // supports' constraints of each, and per slave point the normal
+    // relative motion n . (r_slave - r_master).
+    if (!any_free || parameters.contact.friction_coefficient > 0 ||
+        frames.size() < 2)
+      return n_free;
+    std::map<types::material_id, unsigned int> column;
+    std::vector<types::material_id>            ids;
+    for (const auto &[id, frame] : frames)
+      {
+        column[id] = 3 * ids.size();
+        ids.push_back(id);
+      }
+    const unsigned int       n_modes = 3 * ids.size();
+    LAPACKFullMatrix<double> H(n_modes, n_modes);
+    for (const auto &[id, frame] : frames)
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          H(column[id] + i, column[id] + j) += frame.G[i][j];
+    const auto mode_row = [&](const types::material_id id,
+                              const Point<2>          &x,
+                              const Tensor<1, 2>      &n) {
+      const Frame       &frame = frames.at(id);
+      const Tensor<1, 2> r     = x - frame.centre;
+      return std::array<double, 3>{
+        {n[0], n[1], (-n[0] * r[1] + n[1] * r[0]) / frame.size}};
+    };
+    for (const auto &contact : contacts)
+      {
+        const ContactSurface &slave  = contact->slave_surface();
+        const ContactSurface &master = contact->master_surface();
+        for (unsigned int k = 0; k < slave.segments().size(); ++k)
+          {
+            const auto &segment = slave.segments()[k];
+            if (segment.is_copy)
+              continue;
+            for (const double t : {0.0, 0.5, 1.0})
+              {
+                const auto   p      = slave.reference_point(k, t);
+                const double length = p.dx.norm();
+                const auto   partner = master.project(p.x).segment;
+                if (!(length > 0) || partner >= master.segments().size())
+                  continue;
+                const auto s_id = segment.cell->material_id();
+                const auto m_id =
+                  master.segments()[partner].cell->material_id();
+                if (s_id == m_id || !frames.count(s_id) ||
+                    !frames.count(m_id))
+                  continue;
+                const Tensor<1, 2> n({p.dx[1] / length, -p.dx[0] / length});
+                std::vector<std::pair<unsigned int, double>> row;
+                const auto a = mode_row(s_id, p.x, n);
+                const auto b = mode_row(m_id, p.x, n);
+                for (unsigned int i = 0; i < 3; ++i)
+                  {
+                    row.emplace_back(column[s_id] + i, a[i]);
+                    row.emplace_back(column[m_id] + i, -b[i]);
+                  }
+                for (const auto &[i, v] : row)
+                  for (const auto &[j, w] : row)
+                    H(i, j) += v * w;
+              }
+          }
+      }
+    H.compute_svd();
+    const double largest = std::max(H.singular_value(0), 1e-300);
+    const auto  &vt      = H.get_svd_vt();
+    for (unsigned int m = 0; m < n_modes; ++m)
+      if (H.singular_value(m) <= 1e-10 * largest)
+        {
+          std::string what;
+          for (unsigned int b = 0; b < ids.size(); ++b)
+            {
+              Tensor<1, 3> mode;
+              for (unsigned int i = 0; i < 3; ++i)
+                mode[i] = vt(m, 3 * b + i);
+              if (mode.norm() < 1e-6)
+                continue;
+              const auto body =
+                std::find_if(bodies.begin(), bodies.end(), [&](const Body &x) {
+                  return x.material_id == ids[b];
+                });
+              what += (what.empty() ? "" : ", ") + body->name + " " +
+                      describe_mode(mode / mode.norm(),
+                                    frames.at(ids[b]).centre,
+                                    frames.at(ids[b]).size);
+            }
+          throw std::runtime_error(
+            "nothing holds the bodies' common motion (" + what +
+            "): it changes no gap and no support fixes it, so the "
+            "problem has no unique solution (impose a displacement that "
+            "fixes it on one of these bodies)");
+        }
     return n_free;
   }
 

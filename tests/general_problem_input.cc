@@ -97,6 +97,14 @@ main()
                "subsection Boundary condition 5\n set Type = pressure\n"
                " set Boundary id = 11\n set Value = 1\nend\n",
                "has two loads");
+  // Both blocks loaded by balanced tractions: the contact holds their
+  // relative motion, nothing their common one.
+  expect_error("bodies_free_together",
+               "subsection Boundary condition 4\n set Type = traction\n"
+               " set Value = 0; p * t\nend\n",
+               "nothing holds the bodies' common motion (Body 1 the "
+               "translation along (0, 1), Body 2 the translation along (0, "
+               "1))");
   expect_error("two_displacements_on_one_component",
                "subsection Boundary condition 5\n set Type = displacement\n"
                " set Boundary id = 21\n set Components = y\n"
