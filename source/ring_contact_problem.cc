@@ -73,6 +73,37 @@ namespace RingContact
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
           body_of_boundary[face->boundary_id()] = cell->material_id();
+    // The bodies share no vertex: each is its own mesh, and they meet
+    // through the contact only. A mesh that joins two (one gmsh line as
+    // the boundary of both) would glue them there, silently.
+    std::vector<types::material_id> body_at(triangulation.n_vertices(),
+                                            numbers::invalid_material_id);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          auto &id = body_at[cell->vertex_index(v)];
+          if (id == numbers::invalid_material_id)
+            id = cell->material_id();
+          else if (id != cell->material_id())
+            {
+              const auto name = [&](const types::material_id m) {
+                for (const Body &body : bodies)
+                  if (body.material_id == m)
+                    return body.name + " (material " + std::to_string(m) +
+                           ")";
+                return "material " + std::to_string(m);
+              };
+              std::ostringstream where;
+              where << cell->vertex(v)[0] << ", " << cell->vertex(v)[1];
+              throw std::runtime_error(
+                "the mesh joins " + name(id) + " and " +
+                name(cell->material_id()) + " at the vertex (" +
+                where.str() +
+                "): bodies meet through their contact surfaces only, each "
+                "meshed on its own (in gmsh, points and lines of its own "
+                "for each body, as meshes/two_blocks.geo)");
+            }
+        }
     slave_ring = body_of_boundary.at(parameters.contact.slave_boundary_id);
   }
 

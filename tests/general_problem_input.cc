@@ -105,6 +105,27 @@ main()
                "nothing holds the bodies' common motion (Body 1 the "
                "translation along (0, 1), Body 2 the translation along (0, "
                "1))");
+  // The blocks drawn on shared corner points: the mesh joins them there.
+  std::ofstream("glued.geo")
+    << "Point(1) = {0, -0.5, 0}; Point(2) = {1, -0.5, 0};\n"
+       "Point(3) = {1, 0, 0}; Point(4) = {0, 0, 0};\n"
+       "Point(7) = {1, 0.5, 0}; Point(8) = {0, 0.5, 0};\n"
+       "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+       "Line(4) = {4, 1}; Line(5) = {4, 3}; Line(6) = {3, 7};\n"
+       "Line(7) = {7, 8}; Line(8) = {8, 4};\n"
+       "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+       "Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};\n"
+       "Transfinite Curve{1, 3} = 6; Transfinite Curve{5, 7} = 8;\n"
+       "Transfinite Curve{2, 4, 6, 8} = 4;\n"
+       "Transfinite Surface{1, 2}; Recombine Surface{1, 2};\n"
+       "Physical Surface(1) = {1}; Physical Surface(2) = {2};\n"
+       "Physical Curve(20) = {3}; Physical Curve(21) = {1};\n"
+       "Physical Curve(22) = {4}; Physical Curve(23) = {2};\n"
+       "Physical Curve(10) = {5}; Physical Curve(11) = {7};\n"
+       "Physical Curve(12) = {8}; Physical Curve(13) = {6};\n";
+  expect_error("glued_bodies",
+               "subsection Mesh\n set Mesh file = glued.geo\nend\n",
+               "the mesh joins Body 1 (material 1) and Body 2 (material 2)");
   expect_error("two_displacements_on_one_component",
                "subsection Boundary condition 5\n set Type = displacement\n"
                " set Boundary id = 21\n set Components = y\n"
