@@ -1860,6 +1860,28 @@ namespace RingContact
     // The pair whose slave surface is nearest to the point.
     const auto            nearest = contact_node_nearest_to(check.point);
     const ContactSurface &slave   = contact_of(nearest).slave_surface();
+    // A traction is read at a contact node: the point must be on a slave
+    // surface (the nearest node within a segment of it), not anywhere.
+    if (check.quantity == ProblemQuantity::contact_pressure ||
+        check.quantity == ProblemQuantity::tangential_traction)
+      {
+        double distance = 0, longest = 0;
+        contact_of(nearest).multiplier_dof_nearest_to(check.point, &distance);
+        for (unsigned int k = 0; k < slave.segments().size(); ++k)
+          longest = std::max(longest,
+                             slave.reference_point(k, 0).x.distance(
+                               slave.reference_point(k, 1).x));
+        if (!(distance <= longest))
+          {
+            std::ostringstream where;
+            where << check.point[0] << ", " << check.point[1] << ") is "
+                  << distance;
+            throw std::runtime_error(
+              check.name + ": the point (" + where.str() +
+              " from the nearest contact node, farther than a segment of "
+              "its slave surface: give a point on a slave surface");
+          }
+      }
     switch (check.quantity)
       {
         case ProblemQuantity::contact_pressure:

@@ -126,6 +126,9 @@ main()
   expect_error("glued_bodies",
                "subsection Mesh\n set Mesh file = glued.geo\nend\n",
                "the mesh joins Body 1 (material 1) and Body 2 (material 2)");
+  expect_error("pressure_point_off_the_surface",
+               "subsection Check 1\n set Point = 100, 100\nend\n",
+               "give a point on a slave surface");
   expect_error("two_displacements_on_one_component",
                "subsection Boundary condition 5\n set Type = displacement\n"
                " set Boundary id = 21\n set Components = y\n"
