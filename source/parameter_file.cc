@@ -68,7 +68,9 @@ namespace RingContact
         include_stack.push_back(canonical);
         const std::size_t depth_at_start = path.size();
 
-        std::istringstream in(text);
+        // A UTF-8 byte order mark (some editors write one) is not text.
+        const bool         bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+        std::istringstream in(bom ? text.substr(3) : text);
         std::string        raw;
         unsigned int       line_number = 0;
         while (std::getline(in, raw))

@@ -692,6 +692,13 @@ namespace RingContact
                   {
                     require(false, "Contact", "Integration schemes", e.what());
                   }
+                // One run per scheme: a scheme listed twice would run twice
+                // and write its files over its own.
+                for (unsigned int k = 0; k + 1 < schemes.size(); ++k)
+                  require(schemes[k].name() != schemes.back().name(),
+                          "Contact",
+                          "Integration schemes",
+                          "lists '" + schemes.back().name() + "' twice");
               }
           });
     s.add("Smooth master normals",
@@ -907,15 +914,18 @@ namespace RingContact
       for (unsigned int k = 1; k <= number_of_steps; ++k)
         time_points.push_back(static_cast<double>(k) / number_of_steps);
     // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
+    // Named: the pressure itself when it is beyond reason on its own
+    // (over 1e99 Pa), else the time step that ramps it too far.
     require(program != LoadProgramType::ramp ||
               std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
                 100,
             "Load program",
-            "Time step",
+            reference_pressure >= 1e99 ? "Reference pressure" : "Time step",
             "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
-            "exceed 1e100 Pa (n = " +
-              std::to_string(ramp_steps) + ", dt = " + to_text(time_step) +
-              ")");
+            "exceed 1e100 Pa (p0 = " +
+              to_text(reference_pressure) +
+              " Pa, n = " + std::to_string(ramp_steps) +
+              ", dt = " + to_text(time_step) + ")");
   }
 
   // ------------------------------------------------------------------
@@ -1247,8 +1257,9 @@ namespace RingContact
           throw std::runtime_error(origin->second.file + ":" +
                                    std::to_string(origin->second.line) + ": " +
                                    e.what());
-        throw std::runtime_error(filename + ": " + e.what() +
-                                 " (its default value)");
+        throw std::runtime_error(filename + ": " + e.what() + " ('" +
+                                 e.entry +
+                                 "' is not set in the file: its default)");
       }
   }
 

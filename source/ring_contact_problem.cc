@@ -321,6 +321,25 @@ namespace RingContact
                    master_body.material.youngs_modulus),
           geometrically_linear,
           sector));
+        // Every scheme of the file suits this pair's surfaces: known now,
+        // not after the schemes listed before it have run.
+        const unsigned int surface_degree =
+          std::max(contacts.back()->slave_surface().displacement_basis().size(),
+                   contacts.back()
+                     ->master_surface()
+                     .displacement_basis()
+                     .size()) -
+          1;
+        for (const auto &other : parameters.contact.schemes)
+          try
+            {
+              contact_quadrature(other, surface_degree);
+            }
+          catch (const std::exception &e)
+            {
+              throw std::runtime_error("Contact/Integration schemes: " +
+                                       one_line_message(e));
+            }
         for (const auto node : contacts.back()->all_multiplier_dofs())
           pair_of_node[node] = contacts.size() - 1;
         for (const auto node : contacts.back()->tangential_dofs())

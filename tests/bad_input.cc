@@ -140,6 +140,21 @@ main()
                "subsection Contact\n set Integration schemes = nodal, "
                "Lobatto 3\nend\n",
                "Lobatto 3");
+  expect_error("scheme_twice",
+               "subsection Contact\n set Integration schemes = nodal, "
+               "Gauss 2, nodal\nend\n",
+               "lists 'nodal' twice");
+  // Refused before the first scheme runs, not after it.
+  expect_error("later_scheme_unsuited",
+               "subsection Finite elements\n"
+               " set Displacement degree outer ring = 2\n"
+               " set Displacement degree inner ring = 2\n"
+               " set Multiplier degree = 1\nend\n"
+               "subsection Contact\n set Integration schemes = nodal, "
+               "segment-based 1\nend\n",
+               "Contact/Integration schemes: contact integration scheme "
+               "'segment-based 1' is first order on a quadratic contact "
+               "surface");
 
   // A mesh without the slave group (the original mesh less its S2R2
   // segments): the error names the missing boundary.

@@ -9,7 +9,8 @@
 //   set twice;
 // - a value refused by its entry's check names the file and the line that
 //   set it, an included file's own;
-// - a general problem keeps only the slots it uses.
+// - a general problem keeps only the slots it uses;
+// - a UTF-8 byte order mark is skipped.
 #include <deal.II/base/parameter_handler.h>
 
 #include <ring_contact/config.h>
@@ -187,6 +188,27 @@ main()
     deallog_file << "time points: " << error_of("time_points.prm") << std::endl;
     write("body.prm", "subsection Body 3\n  set Poisson's ratio = 0.7\nend\n");
     deallog_file << "body: " << error_of("body.prm") << std::endl;
+    // An error that comes from an entry the file does not set says so.
+    write("default_entry.prm",
+          "subsection Mesh\n  set Mesh source = gmsh file\nend\n");
+    deallog_file << "default entry: " << error_of("default_entry.prm")
+                 << std::endl;
+    // The pressure named when it alone is beyond reason.
+    write("huge_pressure.prm",
+          "subsection Load program\n  set Reference pressure = 1e300\nend\n");
+    deallog_file << "huge pressure: " << error_of("huge_pressure.prm")
+                 << std::endl;
+  }
+
+  // A UTF-8 byte order mark at the start of a file is not text.
+  {
+    write("bom.prm",
+          "\xEF\xBB\xBFsubsection Materials\n"
+          "  set Poisson's ratio inner ring = 0.25\nend\n");
+    Parameters p;
+    p.read("bom.prm");
+    check(p.materials.poissons_ratio_inner == 0.25, "byte order mark");
+    deallog_file << "byte order mark: read" << std::endl;
   }
 
   // A general problem keeps the bodies and pairs of its numbers and the
