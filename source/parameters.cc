@@ -1284,6 +1284,20 @@ namespace RingContact
             "Finite elements",
             "Multiplier degree",
             "must not exceed the displacement degree of the slave ring");
+    // The rings' loaded boundaries are not contact surfaces.
+    for (const auto &[entry, id] :
+         {std::pair<const char *, unsigned int>{"Slave boundary",
+                                                contact.slave_boundary_id},
+          {"Master boundary", contact.master_boundary_id}})
+      require(id != Ids::outer_boundary && id != Ids::inner_boundary,
+              "Contact",
+              entry,
+              "= " + std::to_string(id) + " is " +
+                (id == Ids::outer_boundary ?
+                   std::string("the outer ring's loaded boundary r = R1") :
+                   std::string("the inner ring's loaded boundary r = R3")) +
+                ", not a contact surface (SSNP152's are 300, the outer "
+                "ring's, and 400, the inner ring's, at r = R2)");
 
     // Rotations: at most ten turns (the angle is 2 pi s over the elements
     // around the refined mesh); beyond, the rotated copies of the master

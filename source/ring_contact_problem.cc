@@ -1364,10 +1364,11 @@ namespace RingContact
     // is then the load itself.
     reaction =
       std::max(std::sqrt(reaction + external_force.norm_sqr()), 1e-300);
+    ResidualMeasure measure;
+    measure.at_rest      = largest_displacement == 0;
     largest_displacement = std::max(largest_displacement, 1e-300);
     largest_pressure     = std::max(largest_pressure, 1e-300);
 
-    ResidualMeasure measure;
     double          force = 0, force_floor = 0, merit = 0;
     for (types::global_dof_index i = 0; i < solution.size(); ++i)
       {
@@ -1499,8 +1500,12 @@ namespace RingContact
               log << " (floor " << measure.force_floor << ")";
             else
               log << " (floor not needed)";
-            log << "  gap " << measure.gap << " (floor " << measure.gap_floor
-                << ")" << std::defaultfloat << "  active " << n_active_nodes()
+            if (measure.at_rest)
+              log << "  gap (nothing has moved yet)";
+            else
+              log << "  gap " << measure.gap << " (floor "
+                  << measure.gap_floor << ")";
+            log << std::defaultfloat << "  active " << n_active_nodes()
                 << "/" << n_contact_nodes() << "  changed " << n_changed
                 << '\n';
           }

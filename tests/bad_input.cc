@@ -140,6 +140,10 @@ main()
                "subsection Contact\n set Integration schemes = nodal, "
                "Lobatto 3\nend\n",
                "Lobatto 3");
+  expect_error("slave_on_loaded_boundary",
+               "subsection Contact\n set Slave boundary = 200\nend\n",
+               "is the outer ring's loaded boundary r = R1, not a contact "
+               "surface");
   expect_error("scheme_twice",
                "subsection Contact\n set Integration schemes = nodal, "
                "Gauss 2, nodal\nend\n",

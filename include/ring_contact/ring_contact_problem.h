@@ -58,6 +58,9 @@ namespace RingContact
     double gap = 0;
     /// The round-off floor of that ratio (largest over the rows).
     double gap_floor = 0;
+    /// True while nothing has moved (the first iteration from rest): gap
+    /// is then a length over no displacement, not a ratio worth showing.
+    bool at_rest = false;
     /// Euclidean norm of the free rows: the merit of the line search.
     double merit = 0;
     /// False when the system was assembled without its tangent: the bulk's
