@@ -456,8 +456,8 @@ namespace RingContact
             }
         if (!any_cell)
           fail(mesh.filename,
-               "no quadrilaterals (the rings are meshed with gmsh types 3, 10 "
-               "or 16)");
+               "no quadrilaterals (the bodies are meshed with gmsh types 3, 10 "
+               "or 16; in a .geo, 'Recombine Surface' makes them)");
         if (linear && mesh.quadratic)
           fail(mesh.filename, "linear and quadratic elements mixed");
         for (const auto &e : mesh.elements)
@@ -511,7 +511,7 @@ namespace RingContact
             fail(filename,
                  "node " + std::to_string(node_tags[i]) +
                    " has z = " + std::to_string(coordinates[3 * i + 2]) +
-                   ": the rings are a plane mesh");
+                   ": the mesh must lie in the plane z = 0");
 
         // A mesh file declared its elements: gmsh must have read them all.
         // A script keeps only the entities in physical groups (if it has
@@ -555,7 +555,7 @@ namespace RingContact
                    "gmsh entity " + std::to_string(entity.tag) +
                      " (dimension " + std::to_string(entity.dim) +
                      ") has physical tag " + std::to_string(physical) +
-                     " (the rings' tags are between 0 and 1e9)");
+                     " (physical tags are between 0 and 1e9)");
             for (unsigned int t = 0; t < entity.types.size(); ++t)
               {
                 const int          type    = entity.types[t];
@@ -567,8 +567,9 @@ namespace RingContact
                        "element " + std::to_string(tags.empty() ? 0 : tags[0]) +
                          " is a " + name_of_type(type) + " (gmsh type " +
                          std::to_string(type) +
-                         "): the rings must be meshed with quadrilaterals "
-                         "(gmsh types 3, 10 and 16) and lines (1 and 8)");
+                         "): the bodies must be meshed with quadrilaterals "
+                         "(gmsh types 3, 10 and 16; in a .geo, 'Recombine "
+                         "Surface' makes them) and lines (1 and 8)");
                 if (nodes.size() != n_nodes * tags.size())
                   fail(filename, "the answer of gmsh's reader is inconsistent");
                 for (std::size_t i = 0; i < tags.size(); ++i)

@@ -170,11 +170,18 @@ namespace RingContact
         << "  verdict\n";
     for (const auto &v : verdicts)
       {
+        // A step not reached has no value, reference or error: "-".
+        const bool none = std::isnan(v.value) && std::isnan(v.error);
         out << std::left << std::setw(18) << v.scheme << std::setw(22)
             << v.quantity << std::right << std::setw(5) << v.step
-            << std::setprecision(7) << std::setw(15) << v.value << std::setw(15)
-            << v.reference << std::fixed << std::setprecision(4)
-            << std::setw(11) << 100 * v.error << "%" << std::setw(10)
+            << std::setprecision(7) << std::setw(15);
+        if (none)
+          out << "-" << std::setw(15) << "-" << std::setw(12) << "-";
+        else
+          out << v.value << std::setw(15) << v.reference << std::fixed
+              << std::setprecision(4) << std::setw(11) << 100 * v.error
+              << "%";
+        out << std::fixed << std::setprecision(4) << std::setw(10)
             << 100 * v.tolerance << "%" << (v.pass ? "  PASS" : "  FAIL")
             << std::defaultfloat << '\n';
         all_pass = all_pass && v.pass;

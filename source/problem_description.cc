@@ -238,7 +238,8 @@ namespace RingContact
           "1",
           1,
           4,
-          "Degree of the displacement elements (1: Q1, 2: Q2).");
+          "Degree of the displacement elements (1: Q1, 2: Q2, up to 4: "
+          "Q4).");
     std::string names;
     for (const auto &[name, value] : kinematics_choices())
       names += "|" + name;

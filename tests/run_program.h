@@ -66,12 +66,14 @@ namespace RingContactTests
 
   /// Run the command `arguments` (the program first); `on_line(line, pid)`
   /// sees every line as it is printed. `file_size_limit` > 0 sets
-  /// RLIMIT_FSIZE (bytes) for the run.
+  /// RLIMIT_FSIZE (bytes) for the run. `on_start(pid)` is called once the
+  /// process is started, before its output is read.
   inline RunResult
   run_command(
     const std::vector<std::string>                        &arguments,
-    const std::function<void(const std::string &, pid_t)> &on_line         = {},
-    const rlim_t                                           file_size_limit = 0)
+    const std::function<void(const std::string &, pid_t)> &on_line = {},
+    const rlim_t                                           file_size_limit = 0,
+    const std::function<void(pid_t)>                      &on_start        = {})
   {
     int pipe_ends[2];
     check(::pipe(pipe_ends) == 0, "pipe");
@@ -100,6 +102,8 @@ namespace RingContactTests
         ::_exit(127);
       }
     ::close(pipe_ends[1]);
+    if (on_start)
+      on_start(pid);
     RunResult   result;
     FILE       *in = ::fdopen(pipe_ends[0], "r");
     std::string line;
