@@ -611,10 +611,12 @@ namespace RingContact
 
   constexpr double stick_regularisation = 1e-12;
 
+  template <typename Visitor>
   void
-  ContactInterface::assemble(const Vector<double>            &solution,
-                             const AffineConstraints<double> &constraints,
-                             LinearSystem                    &system) const
+  ContactInterface::visit_points(const Vector<double> &solution,
+                                 const bool            derivatives,
+                                 const unsigned int    process,
+                                 const Visitor        &visit) const
   {
     const auto is_active = [this](const types::global_dof_index dof) {
       return static_cast<bool>(active[multiplier_index.at(dof)]);
@@ -624,18 +626,20 @@ namespace RingContact
       const unsigned int k = multiplier_index.at(dof);
       return active[k] ? slip_sign[k] : 2;
     };
-    const bool friction = friction_coefficient > 0;
-    const auto process  = this_process(system.get_communicator());
+    // (Before the first assembly there is no converged state yet: only
+    // add_forces() can come that early, and the tangential rows, which
+    // need it, are not forces.)
     const std::optional<ConvergedState> converged =
-      friction ?
+      friction_coefficient > 0 && converged_slave ?
         std::optional<ConvergedState>(ConvergedState{converged_solution,
                                                      *converged_slave,
                                                      *converged_master}) :
         std::nullopt;
     for (const auto &point : points)
       {
-        if (slave.segments()[point.slave_segment].cell->subdomain_id() !=
-            process)
+        if (process != numbers::invalid_unsigned_int &&
+            slave.segments()[point.slave_segment].cell->subdomain_id() !=
+              process)
           continue;
         ContactElement element(slave,
                                master,
@@ -643,15 +647,29 @@ namespace RingContact
                                !geometrically_linear,
                                segment_based,
                                converged ? &*converged : nullptr);
-        element.gather_unknowns(solution);
+        element.gather_unknowns(solution, derivatives);
         element.evaluate_slave_point();
         element.evaluate_partner_and_normal();
         std::vector<AD> residual = element.residual(complementarity_constant,
                                                     is_active,
                                                     friction_state,
                                                     friction_coefficient);
-        element.scatter(residual, constraints, system);
+        visit(element, residual);
       }
+  }
+
+  void
+  ContactInterface::assemble(const Vector<double>            &solution,
+                             const AffineConstraints<double> &constraints,
+                             LinearSystem                    &system) const
+  {
+    const bool friction = friction_coefficient > 0;
+    visit_points(solution,
+                 true,
+                 this_process(system.get_communicator()),
+                 [&](ContactElement &element, std::vector<AD> &residual) {
+                   element.scatter(residual, constraints, system);
+                 });
 
     // Open nodes: w_k lambda_k = 0 (and w_k lambda_t,k = 0).
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
@@ -701,38 +719,12 @@ namespace RingContact
   ContactInterface::add_forces(const Vector<double> &solution,
                                Vector<double>       &forces) const
   {
-    const auto is_active = [this](const types::global_dof_index dof) {
-      return static_cast<bool>(active[multiplier_index.at(dof)]);
-    };
-    const auto friction_state = [this](const types::global_dof_index dof) {
-      const unsigned int k = multiplier_index.at(dof);
-      return active[k] ? slip_sign[k] : 2;
-    };
-    // (Before the first assembly there is no converged state yet: the
-    // tangential rows, which need it, are not forces.)
-    const std::optional<ConvergedState> converged =
-      friction_coefficient > 0 && converged_slave ?
-        std::optional<ConvergedState>(ConvergedState{converged_solution,
-                                                     *converged_slave,
-                                                     *converged_master}) :
-        std::nullopt;
-    for (const auto &point : points)
-      {
-        ContactElement element(slave,
-                               master,
-                               point,
-                               !geometrically_linear,
-                               segment_based,
-                               converged ? &*converged : nullptr);
-        element.gather_unknowns(solution, false);
-        element.evaluate_slave_point();
-        element.evaluate_partner_and_normal();
-        std::vector<AD> residual = element.residual(complementarity_constant,
-                                                    is_active,
-                                                    friction_state,
-                                                    friction_coefficient);
-        element.add_values(residual, forces);
-      }
+    visit_points(solution,
+                 false,
+                 numbers::invalid_unsigned_int,
+                 [&](ContactElement &element, std::vector<AD> &residual) {
+                   element.add_values(residual, forces);
+                 });
   }
 
   // s~_k = sum Phi_k s ds over the slave points, from the same contact

@@ -232,6 +232,18 @@ namespace RingContact
     }
 
   private:
+    /// Evaluate the contact element of each slave point (those on cells of
+    /// `process`, or all with numbers::invalid_unsigned_int) at `solution`,
+    /// with derivatives or without, and hand it and its residual to
+    /// `visit(element, residual)`: assemble() and add_forces(). Defined and
+    /// used in contact_assembly.cc only.
+    template <typename Visitor>
+    void
+    visit_points(const Vector<double> &solution,
+                 const bool            derivatives,
+                 const unsigned int    process,
+                 const Visitor        &visit) const;
+
     /// Small strain: (u_s - u_m) . n0 at a slave point and its partner.
     double
     linear_gap_increment(const Vector<double> &solution,
