@@ -607,62 +607,17 @@ namespace RingContact
               free = true;
             }
         any_free = any_free || free;
-        if (!free)
-          continue;
-        // A frictionless contact pushes along its normals only: a free
-        // motion that moves none of the body's contact surfaces along
-        // their normals (a block sliding along a flat interface, a disc
-        // turning in a ring) is held by nothing, and the tangent is
-        // singular: its solution, if the solver finds one, is arbitrary
-        // along that motion.
-        if (parameters.contact.friction_coefficient > 0)
-          continue;
-        SymmetricTensor<2, 3> H = G;
-        for (const auto &contact : contacts)
-          for (const ContactSurface *surface :
-               {&contact->slave_surface(), &contact->master_surface()})
-            for (unsigned int k = 0; k < surface->segments().size(); ++k)
-              {
-                const auto &segment = surface->segments()[k];
-                if (segment.is_copy ||
-                    segment.cell->material_id() != body.material_id)
-                  continue;
-                for (const double t : {0.0, 0.5, 1.0})
-                  {
-                    const auto   p = surface->reference_point(k, t);
-                    const double length = p.dx.norm();
-                    if (!(length > 0))
-                      continue;
-                    const Tensor<1, 2> n({p.dx[1] / length, -p.dx[0] / length});
-                    const Tensor<1, 2> r      = p.x - centre;
-                    const double       row[3] = {n[0],
-                                                 n[1],
-                                                 (-n[0] * r[1] + n[1] * r[0]) /
-                                                   size};
-                    for (unsigned int i = 0; i < 3; ++i)
-                      for (unsigned int j = i; j < 3; ++j)
-                        H[i][j] += row[i] * row[j];
-                  }
-              }
-        const auto   held      = eigenvectors(H);
-        const double h_largest = std::max(held[0].first, 1e-300);
-        for (const auto &[value, mode] : held)
-          if (value <= 1e-10 * h_largest)
-            throw std::runtime_error(
-              body.name + " (material " + std::to_string(body.material_id) +
-              "): nothing holds " + describe(mode) +
-              ": no imposed displacement fixes it, and the frictionless "
-              "contact, which pushes along its normals only, does not resist "
-              "it either; the problem has no unique solution (impose a "
-              "displacement on a boundary of the body that fixes this "
-              "motion)");
       }
 
-    // The bodies together: a motion of several bodies that keeps every
-    // gap (two blocks held by the contact between them, both free along
-    // it) is held by nothing either. The rigid modes of all bodies, the
-    // supports' constraints of each, and per slave point the normal
-    // relative motion n . (r_slave - r_master).
+    // A frictionless contact pushes along its normals only: a motion of
+    // one body, or of several together, that changes no gap (a block
+    // sliding along a flat interface, a disc turning in a ring, two blocks
+    // held by the contact between them and both free along it) is held by
+    // nothing, and the tangent is singular: its solution, if the solver
+    // finds one, is arbitrary along that motion. The rigid modes of all
+    // bodies, the supports' constraints of each, and per slave point the
+    // normal relative motion n . (r_slave - r_master): their null space.
+    // (With friction, sticking may hold such a motion.)
     if (!any_free || parameters.contact.friction_coefficient > 0 ||
         frames.size() < 2)
       return n_free;
@@ -730,7 +685,8 @@ namespace RingContact
     for (unsigned int m = 0; m < n_modes; ++m)
       if (H.singular_value(m) <= 1e-10 * largest)
         {
-          std::string what;
+          std::string  what, alone;
+          unsigned int n_moving = 0;
           for (unsigned int b = 0; b < ids.size(); ++b)
             {
               Tensor<1, 3> mode;
@@ -742,11 +698,24 @@ namespace RingContact
                 std::find_if(bodies.begin(), bodies.end(), [&](const Body &x) {
                   return x.material_id == ids[b];
                 });
-              what += (what.empty() ? "" : ", ") + body->name + " " +
-                      describe_mode(mode / mode.norm(),
-                                    frames.at(ids[b]).centre,
-                                    frames.at(ids[b]).size);
+              const std::string motion =
+                describe_mode(mode / mode.norm(),
+                              frames.at(ids[b]).centre,
+                              frames.at(ids[b]).size);
+              what += (what.empty() ? "" : ", ") + body->name + " " + motion;
+              alone = body->name + " (material " +
+                      std::to_string(body->material_id) + "): nothing holds " +
+                      motion;
+              ++n_moving;
             }
+          if (n_moving == 1)
+            throw std::runtime_error(
+              alone +
+              ": no imposed displacement fixes it, and the frictionless "
+              "contact, which pushes along its normals only, does not resist "
+              "it either; the problem has no unique solution (impose a "
+              "displacement on a boundary of the body that fixes this "
+              "motion)");
           throw std::runtime_error(
             "nothing holds the bodies' common motion (" + what +
             "): it changes no gap and no support fixes it, so the "
