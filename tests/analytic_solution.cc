@@ -1,4 +1,4 @@
-// The closed-form solution against the values that SSNP152.md gives, and
+// The closed-form solution against the values that doc/intro.md gives, and
 // against its own definition: continuity of u_r and of the radial stress at
 // r = R2, the pressure p at r = R1 and zero traction at r = R3.
 #include <ring_contact/analytic_solution.h>

@@ -2,8 +2,8 @@
 # SSNP152 (two concentric elastic rings in frictionless contact) with GetFEM 5.4
 # ============================================================================
 # An independent comparison model for the benchmark of ring_contact: the same
-# problems as its modelisations B and C on the seed mesh (../../../shared/
-# SSNP152.md, prm/ssnp152b.prm, prm/ssnp152c.prm), solved by GetFEM 5.4
+# problems as its modelisations B and C on the seed mesh (doc/intro.md,
+# prm/ssnp152b.prm, prm/ssnp152c.prm), solved by GetFEM 5.4
 # (Debian package python3-getfem, run with Debian's /usr/bin/python3).
 #
 # Usage:  /usr/bin/python3 bench/getfem/ssnp152.py b     (or c)
