@@ -102,7 +102,9 @@ namespace RingContact
   {
     const std::string temporary = temporary_name(filename);
     const int         descriptor =
-      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      ::open(temporary.c_str(),
+             O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW,
+             0644);
     if (descriptor < 0)
       fail("write", filename, errno);
     if (!write_all(descriptor, contents.data(), contents.size()) ||
@@ -131,7 +133,7 @@ namespace RingContact
                                  const std::string &header)
       : filename(filename)
       , descriptor(::open(filename.c_str(),
-                          O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC,
+                          O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW,
                           0644))
       , size(0)
   {
@@ -183,10 +185,19 @@ namespace RingContact
                                "': " + error.message());
     // The lock file is also the mark of a folder this program has written
     // in: only there are files with its results' names its own.
+    // O_NOFOLLOW: a symbolic link planted under the lock's name would
+    // otherwise get its target overwritten with our pid.
     const std::string lock_name = directory + "/.ring_contact.lock";
-    const bool        used_before = std::filesystem::exists(lock_name);
-    lock_descriptor =
-      ::open(lock_name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    const bool        used_before =
+      std::filesystem::exists(std::filesystem::symlink_status(lock_name));
+    lock_descriptor = ::open(lock_name.c_str(),
+                             O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW,
+                             0644);
+    if (lock_descriptor < 0 && errno == ELOOP)
+      throw std::runtime_error(
+        "the output folder's lock file '" + lock_name +
+        "' is a symbolic link, which this program does not follow: remove "
+        "it, or choose another Output/Directory");
     if (lock_descriptor < 0)
       fail("create the lock file", lock_name, errno);
     if (::flock(lock_descriptor, LOCK_EX | LOCK_NB) != 0)

@@ -243,6 +243,36 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  // A symbolic link planted under the lock file's name: refused, its
+  // target untouched (the lock was opened through it and the pid written
+  // into the target).
+  void
+  planted_lock_link()
+  {
+    auto &out = RingContactTests::deallog_file;
+    std::filesystem::remove_all("results_link");
+    std::filesystem::create_directories("results_link");
+    std::ofstream("victim.txt") << "precious\n";
+    std::filesystem::create_symlink(std::filesystem::absolute("victim.txt"),
+                                    "results_link/.ring_contact.lock");
+    const auto result =
+      RingContactTests::run_program(write_prm("link", 3, "nodal", 0));
+    const std::string message = last_line(result);
+    check(result.exit_code == 1,
+          "planted link: exit code " + std::to_string(result.exit_code));
+    check(message.find("is a symbolic link") != std::string::npos,
+          "planted link: the message says so: " + message);
+    std::ifstream     in("victim.txt");
+    std::stringstream contents;
+    contents << in.rdbuf();
+    check(contents.str() == "precious\n",
+          "planted link: the link's target is untouched");
+    out << "planted link: " << message << std::endl;
+  }
+} // namespace
+
 int
 main()
 {
@@ -250,6 +280,7 @@ main()
   rerun();
   failed_start();
   foreign_files();
+  planted_lock_link();
   // About ten rows of history.csv fit in 2000 bytes.
   file_size_limit("fsize_history",
                   0,
