@@ -19,12 +19,18 @@ namespace RingContact
   {
     if (component >= 2)
       return 0.0;
-    const double   r = X.norm();
-    const Point<2> moved(X * (1 + radial_displacement / r));
-    const double   c = std::cos(rotation_angle), s = std::sin(rotation_angle);
-    const double   x = c * moved[0] - s * moved[1];
-    const double   y = s * moved[0] + c * moved[1];
-    return component == 0 ? x - X[0] : y - X[1];
+    // The displacement itself, u = (R - I) X + R u_r X / |X|, not the
+    // difference of the moved and the reference positions: a displacement
+    // below the round-off of the position (1e-200 m on rings of 1 m) would
+    // be lost in it. c - 1 = -2 sin^2(angle / 2), without cancellation.
+    const double       r = X.norm();
+    const Tensor<1, 2> radial(X * (radial_displacement / r));
+    const double       c = std::cos(rotation_angle), s = std::sin(rotation_angle);
+    const double       half_sine = std::sin(0.5 * rotation_angle);
+    const double       c_minus_1 = -2 * half_sine * half_sine;
+    const double       x = c_minus_1 * X[0] - s * X[1] + c * radial[0] - s * radial[1];
+    const double       y = s * X[0] + c_minus_1 * X[1] + s * radial[0] + c * radial[1];
+    return component == 0 ? x : y;
   }
 
   void

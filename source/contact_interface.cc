@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace RingContact
 {
@@ -257,11 +258,49 @@ namespace RingContact
     const CurvePoint x   = slave.current_point(slave_segment, point.eta);
     point.projection     = project(x.x);
     point.current_length = x.dx.norm() * point.weight;
+    point.projection.gap = gap_of(slave_segment, point.eta, point.projection);
+    point.reference_gap  = reference_gap_of(slave_segment,
+                                           point.eta,
+                                           point.projection);
     if (geometrically_linear)
       point.projection.gap += linear_gap_increment(solution,
                                                    slave_segment,
                                                    point.eta,
                                                    point.projection);
+  }
+
+  // The normal distance of the reference points of a slave point and its
+  // partner, zero where it is within the round-off of the positions (a few
+  // eps |X|: a slave Gauss point and its projection on a facing segment of
+  // a node-matching mesh). Left as it is, that round-off would be a gap of
+  // its own: negligible against displacements of 1e-3, a thousand orders of
+  // magnitude above those of a load of 1e-200.
+  double
+  ContactInterface::reference_gap_of(const unsigned int slave_segment,
+                                     const double       eta,
+                                     const Projection  &projection) const
+  {
+    const Point<2> Xs = slave.reference_point(slave_segment, eta).x;
+    const Point<2> Xm =
+      master.reference_point(projection.segment, projection.t).x;
+    const double gap = (Xs - Xm) * master.normal(projection);
+    return std::abs(gap) <= SurfaceKernel::position_round_off(Xm) ? 0.0 : gap;
+  }
+
+  // The gap at the surfaces' current state (small strain: the reference
+  // state): the reference part plus the normal jump of the displacement,
+  // computed apart so that a displacement below the round-off of the
+  // positions is not lost in X + u (see the contact element).
+  double
+  ContactInterface::gap_of(const unsigned int slave_segment,
+                           const double       eta,
+                           const Projection  &projection) const
+  {
+    const Tensor<1, 2> jump =
+      slave.displacement_at(slave_segment, eta) -
+      master.displacement_at(projection.segment, projection.t);
+    return reference_gap_of(slave_segment, eta, projection) +
+           jump * master.normal(projection);
   }
 
   void
@@ -579,6 +618,7 @@ namespace RingContact
   {
     const auto [s, t] = node_sites.at(dof).front();
     Projection p      = master.project(slave.current_point(s, t).x);
+    p.gap             = gap_of(s, t, p);
     if (geometrically_linear)
       p.gap += linear_gap_increment(solution, s, t, p);
     return p.gap;
@@ -609,8 +649,11 @@ namespace RingContact
               measure == PressureMeasure::cauchy ? lambda : lambda * ds / dS;
             const double length =
               (measure == PressureMeasure::cauchy ? ds : dS) * rule.weight(q);
-            error += (pressure - reference) * (pressure - reference) * length;
-            norm += reference * reference * length;
+            // Relative to the reference before squaring: pressures of
+            // 1e-200 would underflow.
+            const double relative = (pressure - reference) / reference;
+            error += relative * relative * length;
+            norm += length;
           }
       }
     return std::sqrt(error / norm);

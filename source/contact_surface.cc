@@ -5,11 +5,13 @@
 
 #include <ring_contact/components.h>
 #include <ring_contact/contact_surface.h>
+#include <ring_contact/utilities.h>
 
 #include <boost/geometry/index/rtree.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace RingContact
@@ -382,6 +384,20 @@ namespace RingContact
   }
 
   Tensor<1, 2>
+  ContactSurface::displacement_at(const unsigned int segment,
+                                  const double       t) const
+  {
+    double N[LagrangeBasis1D::max_size], dN[LagrangeBasis1D::max_size],
+      ddN[LagrangeBasis1D::max_size];
+    displacement.evaluate(t, N, dN, ddN);
+    const auto  &u = segment_list[segment].nodal_displacements;
+    Tensor<1, 2> value;
+    for (unsigned int i = 0; i < u.size(); ++i)
+      value += N[i] * u[i];
+    return value;
+  }
+
+  Tensor<1, 2>
   ContactSurface::normal(const unsigned int segment,
                          const CurvePoint  &point) const
   {
@@ -568,6 +584,16 @@ namespace RingContact
       }
     if (best.segment == numbers::invalid_unsigned_int)
       best = closest_end;
+    // No candidate at any finite distance: x, or the surface, is not a
+    // finite position.
+    if (best.segment == numbers::invalid_unsigned_int)
+      {
+        std::ostringstream what;
+        what << "a contact point at (" << x[0] << ", " << x[1]
+             << ") has no partner on the master surface at a finite distance "
+                "(a position is not a finite number)";
+        throw NonFiniteState(what.str());
+      }
 
     // At a vertex (a corner of the faceted surface, or a point sitting on
     // one as slave nodes do on a node-matching interface) the segment normal

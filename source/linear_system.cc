@@ -1,4 +1,5 @@
 #include <ring_contact/linear_system.h>
+#include <ring_contact/utilities.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
@@ -309,7 +310,14 @@ namespace RingContact
         Vector<double> residual(rhs_vector.size());
         matrix.vmult(residual, x);
         residual -= rhs_vector;
-        return residual.l2_norm() / std::max(rhs_vector.l2_norm(), 1e-300);
+        // Norms that do not underflow (a load of 1e-200).
+        EuclideanNorm r, b;
+        for (types::global_dof_index i = 0; i < residual.size(); ++i)
+          {
+            r.add(residual(i));
+            b.add(rhs_vector(i));
+          }
+        return r.value() / std::max(b.value(), 1e-300);
       }
 
     auto &d = *distributed_part;
@@ -321,9 +329,16 @@ namespace RingContact
         d.mumps->factorize(d.matrix.trilinos_matrix(), pattern_version);
         d.mumps->solve(rhs_vector, x);
       }
-    // |K x - rhs|, each process its own rows.
-    double                  squares[2] = {0, 0};
-    const Epetra_CrsMatrix &m          = d.matrix.trilinos_matrix();
+    // |K x - rhs| / |rhs|, each process its own rows, the squares scaled
+    // by the largest |rhs| so that they do not underflow (a load of 1e-200).
+    const Epetra_CrsMatrix &m     = d.matrix.trilinos_matrix();
+    double                  scale = 0;
+    for (int row = 0; row < m.NumMyRows(); ++row)
+      scale = std::max(scale, std::abs(rhs_vector(m.GRID64(row))));
+    scale = dealii::Utilities::MPI::max(scale, communicator);
+    if (!(scale > 0))
+      scale = 1;
+    double squares[2] = {0, 0};
     for (int row = 0; row < m.NumMyRows(); ++row)
       {
         int     n;
@@ -334,8 +349,8 @@ namespace RingContact
         double       r = -b;
         for (int k = 0; k < n; ++k)
           r += values[k] * x(global_column[columns[k]]);
-        squares[0] += r * r;
-        squares[1] += b * b;
+        squares[0] += (r / scale) * (r / scale);
+        squares[1] += (b / scale) * (b / scale);
       }
     dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(squares, 2),
                                 communicator,

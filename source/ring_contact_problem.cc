@@ -1206,6 +1206,13 @@ namespace RingContact
     const ContactInterface::Pairing pairing,
     const Assembly                  what)
   {
+    // Only finite numbers in the state: an update that overflowed (a body
+    // as soft as E = 1e-200, a diverging iterate) fails the iteration here,
+    // with its reason, before the contact search computes with it.
+    for (const double value : solution)
+      if (!std::isfinite(value))
+        throw NonFiniteState("the displacement or contact pressure is not a "
+                             "finite number after the Newton update");
     unsigned int n_changed;
     {
       TimerOutput::Scope t(timer, "contact search");
@@ -1313,16 +1320,20 @@ namespace RingContact
   {
     // Several roundings per term, the linear solver's backward error, and
     // the row sums of the noise: a factor of ten over eps |K| |z|,
-    // measured on the variants of scripts/variants (the stalled residuals
+    // measured on the variants of scripts/studies/variants (the stalled residuals
     // of steel/aluminium at p = 1e2 are 0.05 to 0.3 of eps |K| |z|).
     constexpr double round_off_factor = 10;
     const double     eps              = std::numeric_limits<double>::epsilon();
 
-    double reaction = 0, largest_displacement = 0, largest_pressure = 0;
+    // The norms with a running scale (EuclideanNorm): squares of forces
+    // of 1e-200 would underflow to zero, and every ratio below with them.
+    EuclideanNorm reaction;
+    double        largest_displacement = 0, largest_pressure = 0;
     for (types::global_dof_index i = 0; i < solution.size(); ++i)
       {
         if (is_dirichlet[i] && !is_multiplier[i])
-          reaction += internal_force(i) * internal_force(i);
+          reaction.add(internal_force(i));
+        reaction.add(external_force(i));
         if (is_multiplier[i])
           largest_pressure = std::max(largest_pressure, std::abs(solution(i)));
         else
@@ -1330,25 +1341,25 @@ namespace RingContact
             std::max(largest_displacement, std::abs(solution(i)));
       }
     // Under the pressure load the reactions vanish: the scale of the forces
-    // is then the load itself.
-    reaction =
-      std::max(std::sqrt(reaction + external_force.norm_sqr()), 1e-300);
+    // is then the load itself (both are in `reaction`).
+    const double reaction_norm = reaction.value() > 0 ? reaction.value() :
+                                                        1e-300;
     ResidualMeasure measure;
     measure.at_rest      = largest_displacement == 0;
     largest_displacement = std::max(largest_displacement, 1e-300);
     largest_pressure     = std::max(largest_pressure, 1e-300);
 
-    double          force = 0, force_floor = 0, merit = 0;
+    EuclideanNorm force, force_floor, merit;
     for (types::global_dof_index i = 0; i < solution.size(); ++i)
       {
         if (constraints.is_constrained(i))
           continue;
         const double r = system->rhs()(i);
-        merit += r * r;
+        merit.add(r);
         if (!is_multiplier[i])
           {
-            force += r * r;
-            force_floor += residual_magnitude(i) * residual_magnitude(i);
+            force.add(r);
+            force_floor.add(residual_magnitude(i));
             continue;
           }
         // A contact row: active when it depends on displacements. Its
@@ -1379,13 +1390,20 @@ namespace RingContact
         measure.gap_floor =
           Utilities::MPI::max(measure.gap_floor, communicator);
       }
-    measure.force             = std::sqrt(force) / reaction;
+    // The floor estimates the round-off of positions |X| over the
+    // displacement, but the gap is computed with its reference part apart
+    // (zero where node-matching surfaces face each other), so that it
+    // stays accurate far below that: displacements of 1e-210 on bodies of
+    // 1 m gave a floor of 1e195, which accepted any iterate. A gap residual
+    // of 1e-4 of the displacement is never a round-off worth accepting.
+    measure.gap_floor = std::min(measure.gap_floor, 1e-4);
+    measure.force             = force.value() / reaction_norm;
     measure.force_floor_known = tangent_assembled;
     measure.force_floor =
       tangent_assembled ?
-        round_off_factor * eps * std::sqrt(force_floor) / reaction :
+        round_off_factor * eps * force_floor.value() / reaction_norm :
         0;
-    measure.merit = std::sqrt(merit);
+    measure.merit = merit.value();
     return measure;
   }
 
@@ -1423,6 +1441,14 @@ namespace RingContact
     double update_from = 0;
     for (unsigned int it = 0;; ++it)
       {
+        // A signal ends the step here, not after it (and its cuts): the
+        // converged steps are on disk already.
+        if (stop_requested())
+          {
+            failure_reason = "interrupted by a signal";
+            final_residual = std::numeric_limits<double>::infinity();
+            return false;
+          }
         if (n_inverted > 0)
           {
             std::ostringstream reason;
@@ -1609,6 +1635,16 @@ namespace RingContact
       }
   }
 
+  // Whether a signal asked the run to stop, on any process (all of them
+  // leave their Newton loop at the same iteration).
+  bool
+  RingContactProblem::stop_requested() const
+  {
+    const bool here = stop_signal != 0;
+    return n_processes > 1 ? Utilities::MPI::logical_or(here, communicator) :
+                             here;
+  }
+
   // One step of the load program, cut in halves while Newton fails.
   bool
   RingContactProblem::solve_load_step(const unsigned int step)
@@ -1653,6 +1689,10 @@ namespace RingContact
           {
             failure_reason = e.what();
           }
+        catch (const NonFiniteState &e)
+          {
+            failure_reason = e.what();
+          }
         lifting = false;
         total_iterations += iterations;
         if (ok)
@@ -1669,6 +1709,13 @@ namespace RingContact
         current_load = load_program.state(current_time);
         for (const auto &contact : contacts)
           contact->update(solution);
+        if (stop_requested())
+          {
+            log << "Interrupted by a signal in step " << step
+                << ": stopping with the last converged state (t = "
+                << current_time << ")\n";
+            return false;
+          }
         if (cuts == parameters.newton.max_step_cuts)
           {
             log << "Step " << step << ": Newton did not converge after " << cuts

@@ -209,10 +209,60 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  // A step whose Newton iteration keeps failing is cut again and again
+  // (here up to 30 times, each cut a few Newton iterations on a mesh of
+  // 15 360 cells): SIGTERM at its first failure must stop the run within
+  // seconds, not after the step's every cut (before: about 20 s). The
+  // converged steps (none here) are complete, the step is not counted.
+  void
+  interrupt_step_cuts()
+  {
+    auto &out = RingContactTests::deallog_file;
+    std::ofstream("cuts.prm")
+      << "include " RING_CONTACT_SOURCE_DIR "/prm/ssnp152a.prm\n"
+      << "subsection Mesh\n set Global refinements = 3\nend\n"
+      << "subsection Contact\n set Integration schemes = nodal\nend\n"
+      << "subsection Newton\n set Maximum iterations = 1\n"
+         " set Maximum step cuts = 30\n set Verbose = false\nend\n"
+      << "subsection Output\n set Directory = cuts\n set VTU interval = 0\n"
+         " set Print timing = false\nend\n";
+    bool                                  sent = false;
+    std::chrono::steady_clock::time_point sent_at;
+    const auto                            result = RingContactTests::run_program(
+      "cuts.prm", [&](const std::string &line, const pid_t pid) {
+        if (!sent && line.find("Newton failed") != std::string::npos)
+          {
+            sent_at = std::chrono::steady_clock::now();
+            ::kill(pid, SIGTERM);
+            sent = true;
+          }
+      });
+    const double seconds = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - sent_at)
+                             .count();
+    check(sent, "step cuts: a step failed and was cut");
+    check(result.exit_code == 143,
+          "step cuts: exit code " + std::to_string(result.exit_code));
+    check(result.printed("Interrupted by a signal in step 1"),
+          "step cuts: the message");
+    check(result.count("  step 1: Newton failed") <= 2,
+          "step cuts: " + std::to_string(result.count("  step 1: Newton failed")) +
+            " cuts after the signal");
+    check(seconds < 5, "step cuts: stopped within seconds");
+    check(RingContactTests::count_rows("cuts/history.csv") == 0,
+          "step cuts: no row for the step that did not converge");
+    out << "step cuts: exit code 143 at the first cut, within seconds"
+        << std::endl;
+  }
+} // namespace
+
 int
 main()
 {
   interrupt_meshing();
+  interrupt_step_cuts();
   interrupt("int_setup", SIGINT, 1, 0);
   interrupt("int_step3", SIGINT, 1, 3);
   interrupt("term_step10", SIGTERM, 1, 10);

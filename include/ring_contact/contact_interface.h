@@ -59,6 +59,9 @@ namespace RingContact
     double       weight; ///< quadrature weight in eta
     Projection   projection;
     double       current_length; ///< ds = |dx_s/deta| weight
+    /// Small strain: the gap of the reference configuration, zero where it
+    /// is below the round-off of the positions (see complete_point()).
+    double reference_gap = 0;
     /// Segment-based integration: the point is eta = eta_a + (eta_b -
     /// eta_a) xi on a piece [eta_a, eta_b] of the slave segment, with the
     /// weight (eta_b - eta_a) w. An end of the piece is either fixed (a
@@ -243,6 +246,19 @@ namespace RingContact
                  const bool            derivatives,
                  const unsigned int    process,
                  const Visitor        &visit) const;
+
+    /// The normal distance of the reference points of a slave point and its
+    /// partner, zero within the round-off of the positions.
+    double
+    reference_gap_of(const unsigned int slave_segment,
+                     const double       eta,
+                     const Projection  &projection) const;
+    /// The gap at the surfaces' current state: reference_gap_of() plus the
+    /// normal jump of the displacement.
+    double
+    gap_of(const unsigned int slave_segment,
+           const double       eta,
+           const Projection  &projection) const;
 
     /// Small strain: (u_s - u_m) . n0 at a slave point and its partner.
     double

@@ -193,6 +193,11 @@ namespace RingContact
     CurvePoint
     reference_point(const unsigned int segment, const double t) const;
 
+    /// The displacement at parameter t of a segment (the current state of
+    /// update()), apart from the reference position.
+    Tensor<1, 2>
+    displacement_at(const unsigned int segment, const double t) const;
+
     /// Outward unit normal of a segment at a current-configuration point.
     Tensor<1, 2>
     normal(const unsigned int segment, const CurvePoint &point) const;

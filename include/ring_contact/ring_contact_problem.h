@@ -273,6 +273,9 @@ namespace RingContact
                 double                &step_length);
     bool
     solve_load_step(const unsigned int step);
+    /// A signal asked the run to stop (on any process).
+    bool
+    stop_requested() const;
     void
     postprocess_step(const unsigned int step,
                      const unsigned int iterations,

@@ -22,6 +22,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -39,6 +40,14 @@ namespace RingContact
       Tensor<1, 2, Number> dx;  ///< dx/dt
       Tensor<1, 2, Number> ddx; ///< d2x/dt2
     };
+
+    /// The round-off of a distance computed from positions of the size of
+    /// x: a gap below it is a gap of zero (see ContactInterface).
+    inline double
+    position_round_off(const Point<2> &x)
+    {
+      return 64 * std::numeric_limits<double>::epsilon() * x.norm();
+    }
 
     /// Add sum_i phi_i v_i to p.x, and the same with the derivatives dphi
     /// and ddphi to p.dx and p.ddx where they are given (not nullptr). The

@@ -3,6 +3,7 @@
 #define ring_contact_utilities_h
 
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <stdexcept>
@@ -34,6 +35,54 @@ namespace RingContact
   {
   public:
     using std::runtime_error::runtime_error;
+  };
+
+  /// Thrown where a state (a displacement, a position, a residual) is found
+  /// not to be a finite number: the load step fails with this message and
+  /// is cut, as when its Newton iteration fails, instead of the program
+  /// computing on with infinities (or crashing on an index that a NaN
+  /// comparison never set).
+  class NonFiniteState : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /// The Euclidean norm sqrt(sum x_i^2) of numbers of any magnitude, with
+  /// a running scale as LAPACK's dnrm2 computes it: the squares of a
+  /// residual of 1e-200 underflow to zero, and those of 1e200 overflow,
+  /// while this neither does. NaN if any x_i is NaN.
+  class EuclideanNorm
+  {
+  public:
+    void
+    add(const double x)
+    {
+      const double a = std::abs(x);
+      if (a == 0)
+        return;
+      if (a > scale)
+        {
+          const double ratio = scale / a;
+          scaled_sum         = 1 + scaled_sum * ratio * ratio;
+          scale              = a;
+        }
+      else
+        {
+          const double ratio = a / scale;
+          scaled_sum += ratio * ratio;
+        }
+    }
+
+    double
+    value() const
+    {
+      return scale * std::sqrt(scaled_sum);
+    }
+
+  private:
+    double scale      = 0;
+    double scaled_sum = 1;
   };
 
   /// The peak resident memory of this process so far (VmHWM), in bytes; 0
