@@ -21,24 +21,27 @@ namespace RingContact
   namespace
   {
     // The most local unknowns of a contact element: a slave segment's
-    // displacements (2 x 3 nodes at degree 2), four master segments' (the
-    // partner, its two neighbours, and with friction the old partner), the
-    // multipliers and the tangential tractions (3 each). AD numbers of that
-    // static capacity (their derivatives sized to the element's unknowns
-    // at run time) need no allocation: with dynamic ones, C's assembly on
-    // the seed mesh took 1.1 ms per iteration instead of 0.9 ms
-    // (bench/alternate --seed).
-    constexpr unsigned int max_local_unknowns = 2 * 3 + 4 * 2 * 3 + 3 + 3;
-    using AD = Sacado::Fad::SLFad<double, max_local_unknowns>;
-
-    using ADPoint  = SurfaceKernel::CurvePoint<AD>;
-    using ADVector = Tensor<1, 2, AD>;
+    // displacements, four master segments' (the partner, its two
+    // neighbours, and with friction the old partner), the multipliers and
+    // the tangential tractions. AD numbers of a static capacity (their
+    // derivatives sized to the element's unknowns at run time) need no
+    // allocation: with dynamic ones, C's assembly on the seed mesh took
+    // 1.1 ms per iteration instead of 0.9 ms (bench/alternate --seed). The
+    // capacity of degree 2 (2 x 3 + 4 x 2 x 3 + 3 + 3 = 36) serves the
+    // linear and quadratic surfaces; the elements of cubic and quartic ones
+    // (up to 2 x 5 + 4 x 2 x 5 + 5 + 5 = 60) take numbers of that capacity:
+    // with those for every element, C's assembly took 38 % longer.
+    constexpr unsigned int small_capacity = 2 * 3 + 4 * 2 * 3 + 3 + 3;
+    constexpr unsigned int large_capacity = 2 * 5 + 4 * 2 * 5 + 5 + 5;
+    using SmallAD = Sacado::Fad::SLFad<double, small_capacity>;
+    using LargeAD = Sacado::Fad::SLFad<double, large_capacity>;
 
     // A point of a segment in the current configuration with AD
     // coordinates: reference geometry (double) plus interpolated
     // displacement (AD); `with_displacement` = false keeps the reference
     // tangent (small strain).
-    ADPoint
+    template <typename AD>
+    SurfaceKernel::CurvePoint<AD>
     ad_curve_point(const CurvePoint          &reference,
                    const std::vector<double> &N,
                    const std::vector<double> &dN,
@@ -47,7 +50,7 @@ namespace RingContact
                    const AD                  *u_y,
                    const bool                 with_displacement)
     {
-      ADPoint p;
+      SurfaceKernel::CurvePoint<AD> p;
       for (unsigned int d = 0; d < 2; ++d)
         {
           p.x[d]   = reference.x[d];
@@ -60,7 +63,7 @@ namespace RingContact
                                        with_displacement ? dN.data() : nullptr,
                                        with_displacement ? ddN.data() : nullptr,
                                        [&](const unsigned int i) {
-                                         ADVector v;
+                                         Tensor<1, 2, AD> v;
                                          v[0] = u_x[i];
                                          v[1] = u_y[i];
                                          return v;
@@ -81,25 +84,60 @@ namespace RingContact
     // normal, the residual, and its value and exact derivative scattered
     // into the global system. Each step is a member function, in the order
     // ContactInterface::assemble() calls them.
-    class ContactElement
+    //
+    // ElementLayout is the part that does not depend on the number type:
+    // which unknowns enter. Local layout: slave u_x, u_y, then u_x, u_y of
+    // each master segment whose displacement enters (the partner, and the
+    // neighbours that define the normal: at a vertex the other segment
+    // there; smoothed normals and segment-based pieces: both neighbours of
+    // the partner; with friction the old partner), then the multipliers,
+    // then (friction) the tangential tractions.
+    class ElementLayout
     {
     public:
-      ContactElement(const ContactSurface &slave,
-                     const ContactSurface &master,
-                     const ContactPoint   &point,
-                     const bool            current,
-                     const bool            segment_based,
-                     const ConvergedState *converged = nullptr)
-          : slave(slave)
-          , master(master)
-          , point(point)
-          , projection(point.projection)
-          , s_seg(slave.segments()[point.slave_segment])
-          , m_seg(master.segments()[projection.segment])
-          , current(current)
-          , smooth(master.smooths_normals())
-          , segment_based(segment_based)
-          , converged(converged)
+      ElementLayout(const ContactSurface &slave,
+                    const ContactSurface &master,
+                    const ContactPoint   &point,
+                    const bool            current,
+                    const bool            segment_based,
+                    const ConvergedState *converged);
+
+      unsigned int
+      n_unknowns() const
+      {
+        return local_dofs.size();
+      }
+
+    protected:
+      const ContactSurface &slave;
+      const ContactSurface &master;
+      const ContactPoint   &point;
+      const Projection     &projection;
+      const SurfaceSegment &s_seg;
+      const SurfaceSegment &m_seg;
+      /// Finite strain: the current configuration (else the reference
+      /// tangent, small strain).
+      const bool current;
+      const bool smooth;
+      const bool segment_based;
+      /// Friction: the last converged state (nullptr: frictionless).
+      const ConvergedState *converged;
+
+      std::vector<types::global_dof_index> local_dofs;
+      std::map<unsigned int, unsigned int> offset_of; // segment -> its u_x
+      unsigned int ns = 0, nl = 0, lambda_offset = 0, tangential_offset = 0;
+    };
+
+    template <typename AD>
+    class ContactElement : public ElementLayout
+    {
+    public:
+      using ADPoint  = SurfaceKernel::CurvePoint<AD>;
+      using ADVector = Tensor<1, 2, AD>;
+
+      /// The layout's unknowns must fit the AD numbers' capacity.
+      explicit ContactElement(const ElementLayout &layout)
+          : ElementLayout(layout)
       {}
 
       void
@@ -148,32 +186,14 @@ namespace RingContact
       void
       turn_copies(std::vector<AD> &v, const bool back) const;
 
-      const ContactSurface &slave;
-      const ContactSurface &master;
-      const ContactPoint   &point;
-      const Projection     &projection;
-      const SurfaceSegment &s_seg;
-      const SurfaceSegment &m_seg;
-      /// Finite strain: the current configuration (else the reference
-      /// tangent, small strain).
-      const bool current;
-      const bool smooth;
-      const bool segment_based;
-      /// Friction: the last converged state (nullptr: frictionless).
-      const ConvergedState *converged;
-
-      // Local layout: slave u_x, u_y, then u_x, u_y of each master
-      // segment, then the multipliers, then (friction) the tangential
-      // tractions.
-      std::vector<types::global_dof_index> local_dofs;
-      std::map<unsigned int, unsigned int> offset_of; // segment -> its u_x
-      unsigned int    ns = 0, nl = 0, lambda_offset = 0, tangential_offset = 0;
       std::vector<AD> u;
 
       // The slave point.
       std::vector<double> N, dN, ddN, Phi, dPhi, ddPhi;
       AD                  d_eta, ds, lambda, lambda_t;
       ADPoint             xs;
+      /// Its reference position and its displacement, apart (see the gap).
+      ADVector xs_reference, us;
       std::vector<AD>     Phi_eta, N_eta;
 
       // The partner and the normal.
@@ -182,18 +202,22 @@ namespace RingContact
       ADVector            normal;
     };
 
-    // Local layout. Master segments whose displacement enters: the
-    // partner, and the neighbours that define the normal (at a vertex: the
-    // other segment there; smoothed normals and segment-based pieces: both
-    // neighbours of the partner). The local unknowns become AD variables
-    // (or AD constants, when only values are wanted); a
-    // rotated copy of a master segment (cyclic symmetry) moves by v = R a,
-    // a the unknowns of the original: its displacements are written in
-    // those (so that the derivatives are with respect to a), and its rows
-    // are turned back, r_a = R^T r_v, once the residual is known.
-    void
-    ContactElement::gather_unknowns(const Vector<double> &solution,
-                                    const bool            derivatives)
+    ElementLayout::ElementLayout(const ContactSurface &slave,
+                                 const ContactSurface &master,
+                                 const ContactPoint   &point,
+                                 const bool            current,
+                                 const bool            segment_based,
+                                 const ConvergedState *converged)
+        : slave(slave)
+        , master(master)
+        , point(point)
+        , projection(point.projection)
+        , s_seg(slave.segments()[point.slave_segment])
+        , m_seg(master.segments()[projection.segment])
+        , current(current)
+        , smooth(master.smooths_normals())
+        , segment_based(segment_based)
+        , converged(converged)
     {
       std::vector<unsigned int> master_segments = {projection.segment};
       if (smooth || segment_based)
@@ -241,13 +265,20 @@ namespace RingContact
         local_dofs.insert(local_dofs.end(),
                           s_seg.tangential_dofs.begin(),
                           s_seg.tangential_dofs.end());
+    }
+
+    // The local unknowns become AD variables (or AD constants, when only
+    // values are wanted); a rotated copy of a master segment (cyclic
+    // symmetry) moves by v = R a, a the unknowns of the original: its
+    // displacements are written in those (so that the derivatives are with
+    // respect to a), and its rows are turned back, r_a = R^T r_v, once the
+    // residual is known.
+    template <typename AD>
+    void
+    ContactElement<AD>::gather_unknowns(const Vector<double> &solution,
+                                        const bool            derivatives)
+    {
       const unsigned int n = local_dofs.size();
-      AssertThrow(n <= max_local_unknowns,
-                  ExcMessage("a contact element with " + std::to_string(n) +
-                             " unknowns, more than the " +
-                             std::to_string(max_local_unknowns) +
-                             " its AD numbers hold (displacement degree "
-                             "above 2?)"));
       u.resize(n);
       for (unsigned int i = 0; i < n; ++i)
         u[i] = derivatives ? AD(n, i, solution(local_dofs[i])) :
@@ -255,8 +286,9 @@ namespace RingContact
       turn_copies(u, false);
     }
 
+    template <typename AD>
     void
-    ContactElement::turn_copies(std::vector<AD> &v, const bool back) const
+    ContactElement<AD>::turn_copies(std::vector<AD> &v, const bool back) const
     {
       for (const auto &[m, o] : offset_of)
         {
@@ -275,8 +307,9 @@ namespace RingContact
     }
 
     // A point of a master segment in AD numbers.
-    ADPoint
-    ContactElement::master_point(const unsigned int m, const double t) const
+    template <typename AD>
+    SurfaceKernel::CurvePoint<AD>
+    ContactElement<AD>::master_point(const unsigned int m, const double t) const
     {
       std::vector<double> Nb, dNb, ddNb;
       const unsigned int  nm = master.segments()[m].dofs_x.size();
@@ -291,16 +324,18 @@ namespace RingContact
     }
 
     // Outward normal scaled by |x'| of a master segment at t.
-    ADVector
-    ContactElement::scaled_normal(const unsigned int m, const double t) const
+    template <typename AD>
+    Tensor<1, 2, AD>
+    ContactElement<AD>::scaled_normal(const unsigned int m, const double t) const
     {
       return SurfaceKernel::scaled_normal(master_point(m, t).dx,
                                           master.segments()[m].orientation);
     }
 
     // Unit vertex normal at the end `end` of the partner segment.
-    ADVector
-    ContactElement::vertex_normal(const unsigned int end) const
+    template <typename AD>
+    Tensor<1, 2, AD>
+    ContactElement<AD>::vertex_normal(const unsigned int end) const
     {
       const unsigned int b             = m_seg.neighbours[end];
       const bool         has_neighbour = b != numbers::invalid_unsigned_int;
@@ -315,8 +350,9 @@ namespace RingContact
     // line through a vertex of the partner along its normal: eta_end = eta0
     // - h / h' with h = (x_s(eta) - x_v) x n_v, whose value is eta0 and
     // whose derivative is that of the crossing.
+    template <typename AD>
     std::array<AD, 2>
-    ContactElement::piece_ends()
+    ContactElement<AD>::piece_ends()
     {
       const AD         *us_x = &u[0], *us_y = &u[ns];
       std::array<AD, 2> eta_of_end = {{point.piece[0], point.piece[1]}};
@@ -349,8 +385,9 @@ namespace RingContact
     // piece, written eta0 + d eta with d eta of value 0 and the derivative
     // of the moving ends; its position, length element and the pressure
     // there, the basis functions expanded to first order around eta0.
+    template <typename AD>
     void
-    ContactElement::evaluate_slave_point()
+    ContactElement<AD>::evaluate_slave_point()
     {
       const AD               *us_x = &u[0], *us_y = &u[ns];
       std::vector<double>     G, dG, ddG;
@@ -381,6 +418,13 @@ namespace RingContact
                                        [&](const unsigned int j) {
                                          return s_seg.reference_nodes[j];
                                        });
+      xs_reference = xs.x;
+      us           = ADVector();
+      for (unsigned int i = 0; i < ns; ++i)
+        {
+          us[0] += N_eta[i] * us_x[i];
+          us[1] += N_eta[i] * us_y[i];
+        }
       SurfaceKernel::add_interpolation(xs,
                                        ns,
                                        N_eta.data(),
@@ -411,8 +455,9 @@ namespace RingContact
     // part of its displacement increment relative to that of its old
     // partner's material point, s = tau . [(u_s - u_s,n) - (u_m(xi_n) -
     // u_m,n(xi_n))], tau = e_z x n (see contact_interface.h).
+    template <typename AD>
     AD
-    ContactElement::slip() const
+    ContactElement<AD>::slip() const
     {
       const Vector<double> &u_n = converged->solution;
       ADVector              relative;
@@ -474,8 +519,9 @@ namespace RingContact
     // f = (x_s - x_m) . x_m'; along the smoothed normal m(xi) = (1 - xi) n0
     // + xi n1: f = (x_s - x_m) x m. At a vertex or a clamped corner xi is
     // fixed. Then the unit normal there and the gap along it.
+    template <typename AD>
     void
-    ContactElement::evaluate_partner_and_normal()
+    ContactElement<AD>::evaluate_partner_and_normal()
     {
       const double xi0 = projection.t;
       master.displacement_basis().evaluate(xi0, Nm, dNm, ddNm);
@@ -508,13 +554,48 @@ namespace RingContact
           normal = SurfaceKernel::scaled_normal(dx, m_seg.orientation);
         }
       normal = SurfaceKernel::unit(normal);
-      gap    = (xs.x[0] - x_m[0]) * normal[0] + (xs.x[1] - x_m[1]) * normal[1];
+
+      // The gap, (x_s - x_m) . n, as the normal distance of the two
+      // reference points plus the normal jump of the displacement: the
+      // same number, but computed from positions X + u a displacement below
+      // their round-off (1e-200 m on a body of 1 m) would be lost, and the
+      // round-off of the reference part (a few eps |X| where node-matching
+      // surfaces face each other) would be a gap of its own, orders of
+      // magnitude above such displacements. So the reference part is zero
+      // where it is within that round-off (its value only: its derivatives
+      // through the moving parameters stay). Small strain: the reference
+      // gap of the search (ContactInterface::complete_point()), the jump
+      // along the reference normal.
+      const unsigned int nm = m_seg.dofs_x.size();
+      const AD          *um = &u[offset_of.at(projection.segment)];
+      ADVector           jump = us;
+      for (unsigned int i = 0; i < nm; ++i)
+        {
+          const AD Nm_xi = Nm[i] + dNm[i] * dxi;
+          jump[0] -= Nm_xi * um[i];
+          jump[1] -= Nm_xi * um[nm + i];
+        }
+      AD reference_gap = point.reference_gap;
+      if (current)
+        {
+          const CurvePoint Xm = master.reference_point(projection.segment, xi0);
+          ADVector         difference;
+          for (unsigned int dim = 0; dim < 2; ++dim)
+            difference[dim] = xs_reference[dim] - Xm.x[dim] - Xm.dx[dim] * dxi;
+          reference_gap =
+            difference[0] * normal[0] + difference[1] * normal[1];
+          if (std::abs(reference_gap.val()) <=
+              SurfaceKernel::position_round_off(Xm.x))
+            reference_gap -= reference_gap.val();
+        }
+      gap = reference_gap + jump[0] * normal[0] + jump[1] * normal[1];
     }
 
     // The residual: the contact virtual work on the slave and the master
     // rows, and the weighted gap on the rows of the active multipliers.
+    template <typename AD>
     std::vector<AD>
-    ContactElement::residual(
+    ContactElement<AD>::residual(
       const double                                        c,
       const std::function<bool(types::global_dof_index)> &active,
       const std::function<int(types::global_dof_index)>  &friction_state,
@@ -572,8 +653,9 @@ namespace RingContact
     // A vertex shared by the partner and its neighbour appears twice in the
     // local unknowns: the two copies (rows and columns) are summed into one
     // first.
+    template <typename AD>
     void
-    ContactElement::scatter(std::vector<AD>                 &residual,
+    ContactElement<AD>::scatter(std::vector<AD>                 &residual,
                             const AffineConstraints<double> &constraints,
                             LinearSystem                    &system)
     {
@@ -600,8 +682,9 @@ namespace RingContact
       system.add(constraints, local_matrix, local_rhs, unique_dofs);
     }
 
+    template <typename AD>
     void
-    ContactElement::add_values(std::vector<AD> &residual, Vector<double> &v)
+    ContactElement<AD>::add_values(std::vector<AD> &residual, Vector<double> &v)
     {
       turn_copies(residual, true);
       for (unsigned int i = 0; i < local_dofs.size(); ++i)
@@ -641,20 +724,34 @@ namespace RingContact
             slave.segments()[point.slave_segment].cell->subdomain_id() !=
               process)
           continue;
-        ContactElement element(slave,
-                               master,
-                               point,
-                               !geometrically_linear,
-                               segment_based,
-                               converged ? &*converged : nullptr);
-        element.gather_unknowns(solution, derivatives);
-        element.evaluate_slave_point();
-        element.evaluate_partner_and_normal();
-        std::vector<AD> residual = element.residual(complementarity_constant,
-                                                    is_active,
-                                                    friction_state,
-                                                    friction_coefficient);
-        visit(element, residual);
+        const ElementLayout layout(slave,
+                                   master,
+                                   point,
+                                   !geometrically_linear,
+                                   segment_based,
+                                   converged ? &*converged : nullptr);
+        // The element in AD numbers that hold its unknowns.
+        const auto evaluate = [&](auto &&element) {
+          element.gather_unknowns(solution, derivatives);
+          element.evaluate_slave_point();
+          element.evaluate_partner_and_normal();
+          auto residual = element.residual(complementarity_constant,
+                                           is_active,
+                                           friction_state,
+                                           friction_coefficient);
+          visit(element, residual);
+        };
+        AssertThrow(layout.n_unknowns() <= large_capacity,
+                    ExcMessage("a contact element with " +
+                               std::to_string(layout.n_unknowns()) +
+                               " unknowns, more than the " +
+                               std::to_string(large_capacity) +
+                               " its AD numbers hold (displacement degree "
+                               "above 4?)"));
+        if (layout.n_unknowns() <= small_capacity)
+          evaluate(ContactElement<SmallAD>(layout));
+        else
+          evaluate(ContactElement<LargeAD>(layout));
       }
   }
 
@@ -667,7 +764,7 @@ namespace RingContact
     visit_points(solution,
                  true,
                  this_process(system.get_communicator()),
-                 [&](ContactElement &element, std::vector<AD> &residual) {
+                 [&](auto &element, auto &residual) {
                    element.scatter(residual, constraints, system);
                  });
 
@@ -722,7 +819,7 @@ namespace RingContact
     visit_points(solution,
                  false,
                  numbers::invalid_unsigned_int,
-                 [&](ContactElement &element, std::vector<AD> &residual) {
+                 [&](auto &element, auto &residual) {
                    element.add_values(residual, forces);
                  });
   }
@@ -738,21 +835,27 @@ namespace RingContact
                                    *converged_master};
     for (const auto &point : points)
       {
-        ContactElement element(slave,
-                               master,
-                               point,
-                               !geometrically_linear,
-                               segment_based,
-                               &converged);
-        element.gather_unknowns(solution, false); // values, no derivatives
-        element.evaluate_slave_point();
-        element.evaluate_partner_and_normal();
-        const double s   = element.slip().val();
-        const double ds  = element.length_element().val();
-        const auto  &seg = slave.segments()[point.slave_segment];
-        for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
-          weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
-            element.multiplier_basis(k).val() * s * ds;
+        const ElementLayout layout(slave,
+                                   master,
+                                   point,
+                                   !geometrically_linear,
+                                   segment_based,
+                                   &converged);
+        const auto          add_slip = [&](auto &&element) {
+          element.gather_unknowns(solution, false); // values only
+          element.evaluate_slave_point();
+          element.evaluate_partner_and_normal();
+          const double s   = element.slip().val();
+          const double ds  = element.length_element().val();
+          const auto  &seg = slave.segments()[point.slave_segment];
+          for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
+            weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
+              element.multiplier_basis(k).val() * s * ds;
+        };
+        if (layout.n_unknowns() <= small_capacity)
+          add_slip(ContactElement<SmallAD>(layout));
+        else
+          add_slip(ContactElement<LargeAD>(layout));
       }
   }
 } // namespace RingContact

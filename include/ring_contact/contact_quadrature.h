@@ -50,9 +50,17 @@ namespace RingContact
   /// nodes); see theory.md. Throws, with the reason, for the rules that
   /// leave some nodes of a quadratic surface without weight (first order):
   /// one point per segment or piece, and the trapezoid rule.
+  /// Also throws for a rule that does not integrate the shape functions of
+  /// a surface of that degree exactly (see exactness_degree()).
   Quadrature<1>
   contact_quadrature(const IntegrationScheme &scheme,
                      const unsigned int       degree);
+
+  /// The highest polynomial degree the scheme's rule integrates exactly on
+  /// a segment (on each piece, for segment-based integration) whose
+  /// surfaces are of degree `degree`.
+  unsigned int
+  exactness_degree(const IntegrationScheme &scheme, const unsigned int degree);
 } // namespace RingContact
 
 #endif
