@@ -58,8 +58,8 @@ namespace RingContact
       {
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
-        const double J = determinant(unit_symmetric_tensor<2>() + H);
-        return c.lambda_3d * std::log(J) / J;
+        return c.lambda_3d * log_J2(H) /
+               determinant(unit_symmetric_tensor<2>() + H);
       }
 
       double
@@ -67,33 +67,44 @@ namespace RingContact
       {
         if (c.plane == PlaneAssumption::plane_strain)
           return 1.0;
-        return plane_stress_stretch(
-          determinant(unit_symmetric_tensor<2>() + H));
+        return std::exp(log_plane_stress_stretch(H));
       }
 
     private:
-      // F33 of plane stress: f(x) = mu (e^2x - 1) + lambda (ln J2 + x) = 0
-      // with x = ln F33 (3d lambda). f is increasing and convex, so Newton's
-      // method from x = 0 converges (from above after its first step,
-      // monotonically); a few iterations reach round-off.
-      double
-      plane_stress_stretch(const double J2) const
+      // ln det F of the in-plane F = I + H, as log1p(tr H + det H): with
+      // log(det F) the strains of 1e-8 that a stiff body under a small load
+      // has were known to 2e-8 of themselves only (det F - 1 lost in the
+      // round-off of det F ~ 1), a noise in the stress that kept Newton's
+      // residual above its tolerance (found by the standing probe).
+      static double
+      log_J2(const Tensor<2, 2> &H)
       {
-        if (!(J2 > 0))
-          return 1.0; // an inverted element: rejected by the caller
+        return std::log1p(trace(H) + determinant(H));
+      }
+
+      // ln F33 of plane stress: f(x) = mu (e^2x - 1) + lambda (ln J2 + x) =
+      // 0 with x = ln F33 (3d lambda), e^2x - 1 as expm1(2x). f is
+      // increasing and convex, so Newton's method from x = 0 converges
+      // (from above after its first step, monotonically); a few iterations
+      // reach round-off.
+      double
+      log_plane_stress_stretch(const Tensor<2, 2> &H) const
+      {
+        if (!(determinant(unit_symmetric_tensor<2>() + H) > 0))
+          return 0; // an inverted element: rejected by the caller
+        const double lnJ2 = log_J2(H);
         const double mu = c.mu, lambda = c.lambda_3d;
         double       x = 0; // ln F33
         for (unsigned int it = 0; it < 100; ++it)
           {
-            const double e  = std::exp(2 * x);
-            const double f  = mu * (e - 1) + lambda * (std::log(J2) + x);
-            const double df = 2 * mu * e + lambda;
+            const double f  = mu * std::expm1(2 * x) + lambda * (lnJ2 + x);
+            const double df = 2 * mu * std::exp(2 * x) + lambda;
             const double dx = -f / df;
             x += dx;
-            if (std::abs(dx) <= 1e-15 * (1 + std::abs(x)))
+            if (!(std::abs(dx) > 1e-15 * std::abs(x)))
               break;
           }
-        return std::exp(x);
+        return x;
       }
 
       // P and (if asked) A_iJkL = dP_iJ / dF_kL:
@@ -106,14 +117,14 @@ namespace RingContact
       {
         const Tensor<2, 2> I      = unit_symmetric_tensor<2>();
         const Tensor<2, 2> F      = I + H;
-        const double       J2     = determinant(F);
         const Tensor<2, 2> Fi     = invert(F);
         const Tensor<2, 2> FiT    = transpose(Fi);
-        const double       F33    = c.plane == PlaneAssumption::plane_strain ?
-                                      1.0 :
-                                      plane_stress_stretch(J2);
+        const double       lnF33  = c.plane == PlaneAssumption::plane_strain ?
+                                      0.0 :
+                                      log_plane_stress_stretch(H);
+        const double       F33    = std::exp(lnF33);
         const double       lambda = c.lambda_3d;
-        const double       lnJ    = std::log(J2 * F33);
+        const double       lnJ    = log_J2(H) + lnF33;
         // F - F^-T written in H: H + (I - F^-T) = H + F^-T (F^T - I) =
         // H + F^-T H^T, without the cancellation of F - F^-T at small H.
         P = c.mu * (H + FiT * transpose(H)) + lambda * lnJ * FiT;
