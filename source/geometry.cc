@@ -175,7 +175,7 @@ namespace RingContact
       // silently straightened).
       void
       build_triangulation(Triangulation<2> &triangulation,
-                          const GmshMesh   &mesh,
+                          GmshMesh         &mesh,
                           const bool        on_circles)
       {
         std::map<std::size_t, unsigned int> vertex_of_node;
@@ -185,10 +185,12 @@ namespace RingContact
                ++i)
             vertex_of_node[element.nodes[i]] = 0;
         std::vector<Point<2>> vertices;
+        mesh.node_of_vertex.clear();
         for (auto &[node, vertex] : vertex_of_node)
           {
             vertex = vertices.size();
             vertices.push_back(mesh.nodes.at(node));
+            mesh.node_of_vertex.push_back(node);
           }
         std::vector<CellData<2>> cells;
         SubCellData              lines;
@@ -255,51 +257,81 @@ namespace RingContact
           }
       }
 
-      // Every boundary face of the triangulation must be one of the file's
-      // lines with the face's boundary id: a face without one is a line
-      // the file dropped (or a crack in the mesh), and its boundary
-      // condition would silently be missing.
+      // The mesh audit of the boundary: every boundary face of the
+      // triangulation must be one line of the file (a face without one is a
+      // line the file dropped, or a crack in the mesh, and its boundary
+      // condition would silently be missing), that line must carry a
+      // physical tag (an untagged line got boundary id 0: a slave line left
+      // out of its contact surface, the pressure off by up to 200 % in the
+      // patch test), and one only (two lines of two entities on one face,
+      // with two tags: one of them silently won). Each error names the
+      // file, the entity and the element. (A tagged line that is no edge of
+      // a cell, or an inner edge, is refused by the reader and by deal.II.)
       void
       check_boundary_tags(const Triangulation<2> &triangulation,
                           const GmshMesh         &mesh)
       {
-        using Key      = std::array<double, 4>;
-        const auto key = [](Point<2> a, Point<2> b) {
-          if (std::make_pair(b[0], b[1]) < std::make_pair(a[0], a[1]))
-            std::swap(a, b);
-          return Key{{a[0], a[1], b[0], b[1]}};
+        // A line and a face are the same when they join the same two
+        // nodes: by node, not by position (the two copies of a contact
+        // interface's line lie on each other).
+        using Key      = std::pair<std::size_t, std::size_t>;
+        const auto key = [](const std::size_t a, const std::size_t b) {
+          return std::make_pair(std::min(a, b), std::max(a, b));
         };
-        std::map<Key, std::set<long>> tags;
+        const auto face_key = [&](const auto &face) {
+          return key(mesh.node_of_vertex.at(face->vertex_index(0)),
+                     mesh.node_of_vertex.at(face->vertex_index(1)));
+        };
+        const auto describe = [&](const GmshElement &e) {
+          return "element " + std::to_string(e.tag) + " (gmsh entity " +
+                 std::to_string(e.entity) + ")";
+        };
+        const auto near = [](const Point<2> &x) {
+          std::ostringstream where;
+          where << "(" << x[0] << ", " << x[1] << ")";
+          return where.str();
+        };
+        std::map<Key, std::vector<const GmshElement *>> lines;
         for (const auto &element : mesh.elements)
           if (element.type == 1 || element.type == 8)
-            tags[key(mesh.nodes.at(element.nodes[0]),
-                     mesh.nodes.at(element.nodes[1]))]
-              .insert(element.physical);
+            lines[key(element.nodes[0], element.nodes[1])].push_back(&element);
         unsigned int untagged = 0;
         Point<2>     example;
         for (const auto &face : triangulation.active_face_iterators())
           if (face->at_boundary())
             {
-              const auto it = tags.find(key(face->vertex(0), face->vertex(1)));
-              if (it == tags.end() ||
-                  it->second.count(face->boundary_id()) == 0)
+              const Key  k  = face_key(face);
+              const auto it = lines.find(k);
+              if (it == lines.end())
                 {
                   if (untagged == 0)
                     example = face->center();
                   ++untagged;
+                  continue;
                 }
+              for (const GmshElement *line : it->second)
+                if (line->physical == 0)
+                  throw std::runtime_error(
+                    "mesh file '" + mesh.filename + "': the boundary line " +
+                    describe(*line) + " near " + near(face->center()) +
+                    " has no physical tag: give its curve a 'Physical "
+                    "Curve', or every boundary line of a body one");
+              for (const GmshElement *line : it->second)
+                if (line->physical != it->second.front()->physical)
+                  throw std::runtime_error(
+                    "mesh file '" + mesh.filename + "': the boundary face "
+                    "near " + near(face->center()) + " carries two physical "
+                    "tags, " + std::to_string(it->second.front()->physical) +
+                    " (" + describe(*it->second.front()) + ") and " +
+                    std::to_string(line->physical) + " (" + describe(*line) +
+                    "): a face belongs to one boundary");
             }
         if (untagged > 0)
-          {
-            std::ostringstream where;
-            where << example;
-            throw std::runtime_error(
-              "mesh file '" + mesh.filename + "': " + std::to_string(untagged) +
-              " boundary face(s) carry no physical tag from the file (the "
-              "first near (" +
-              where.str() +
-              ")): a boundary line is missing or the mesh has a crack");
-          }
+          throw std::runtime_error(
+            "mesh file '" + mesh.filename + "': " + std::to_string(untagged) +
+            " boundary face(s) carry no physical tag from the file (the "
+            "first near " + near(example) +
+            "): a boundary line is missing or the mesh has a crack");
       }
     } // namespace
 
@@ -310,8 +342,7 @@ namespace RingContact
               const unsigned int element_order,
               const bool         on_circles)
     {
-      const GmshMesh mesh =
-        read_gmsh_file(filename, geo_numbers, element_order);
+      GmshMesh mesh = read_gmsh_file(filename, geo_numbers, element_order);
       build_triangulation(triangulation, mesh, on_circles);
       return mesh;
     }
@@ -470,8 +501,10 @@ namespace RingContact
                                           parameters.mesh.geo_numbers,
                                           1,
                                           false);
-          check_bodies(triangulation, parameters);
+          // The audit of the file's tags first: a line it drops leaves a
+          // boundary without faces, which check_bodies() would report.
           check_boundary_tags(triangulation, mesh);
+          check_bodies(triangulation, parameters);
           check_size(triangulation.n_active_cells(), parameters);
           triangulation.refine_global(parameters.mesh.global_refinements);
           return;

@@ -584,6 +584,7 @@ namespace RingContact
                     element.type     = type;
                     element.physical = physical;
                     element.tag      = tags[i];
+                    element.entity   = entity.tag;
                     element.nodes.assign(nodes.begin() + i * n_nodes,
                                          nodes.begin() + (i + 1) * n_nodes);
                     for (const std::size_t node : element.nodes)

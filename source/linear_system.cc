@@ -302,7 +302,10 @@ namespace RingContact
     if (!use_trilinos)
       {
         if (!umfpack)
-          umfpack = std::make_unique<DirectSolver>();
+          {
+            umfpack                    = std::make_unique<DirectSolver>();
+            umfpack->estimate_observer = estimate_observer;
+          }
         umfpack->factorize(matrix, pattern_version);
         umfpack->solve(rhs_vector, x);
         // UMFPACK refines its solution iteratively: on a regular matrix,

@@ -24,6 +24,7 @@
 #include <ring_contact/linear_system.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/output_folder.h>
+#include <ring_contact/parameter_file.h>
 #include <ring_contact/parameters.h>
 #include <ring_contact/postprocessing.h>
 #include <ring_contact/ring_contact_problem.h>
@@ -436,6 +437,11 @@ main(int argc, char **argv)
                   << e.what() << ", before the first step: nothing written"
                   << std::endl;
       return 128 + signal;
+    }
+  catch (const ParameterError &e)
+    {
+      // A value found wrong once the mesh is known: its file and line.
+      return fail(parameters.located(e));
     }
   catch (const std::bad_alloc &)
     {

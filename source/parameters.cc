@@ -1165,7 +1165,7 @@ namespace RingContact
     // as the file is read; what remains is what involves several entries.
     ParameterHandler prm;
     add_parameters(prm);
-    const auto origins = read_parameter_file(prm, filename);
+    origins = read_parameter_file(prm, filename);
 
     const std::filesystem::path path(filename);
     const std::string           folder =
@@ -1250,17 +1250,23 @@ namespace RingContact
       }
     catch (const ParameterError &e)
       {
-        // Name the file and line that set the value, or say that it is
-        // the default.
-        const auto origin = origins.find(entry_key(e.subsection, e.entry));
-        if (origin != origins.end())
-          throw std::runtime_error(origin->second.file + ":" +
-                                   std::to_string(origin->second.line) + ": " +
-                                   e.what());
-        throw std::runtime_error(filename + ": " + e.what() + " ('" +
-                                 e.entry +
-                                 "' is not set in the file: its default)");
+        throw std::runtime_error(located(e));
       }
+  }
+
+  // Name the file and line that set the value, or say that it is the
+  // default: for the checks as the file is read, and for those that need
+  // the mesh (a traction on a supported direction, a rule too low for the
+  // surfaces' degree), which come later.
+  std::string
+  Parameters::located(const ParameterError &e) const
+  {
+    const auto origin = origins.find(entry_key(e.subsection, e.entry));
+    if (origin != origins.end())
+      return origin->second.file + ":" + std::to_string(origin->second.line) +
+             ": " + e.what();
+    return prm_file + ": " + e.what() + " ('" + e.entry +
+           "' is not set in the file: its default)";
   }
 
   void

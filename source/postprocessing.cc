@@ -44,7 +44,9 @@ namespace RingContact
                                    0,
                                    std::nan(""),
                                    tolerance,
-                                   false});
+                                   false,
+                                   true,
+                                   ""});
       };
       if (every_step)
         {
@@ -83,6 +85,9 @@ namespace RingContact
       v.scheme    = row.scheme;
       v.step      = row.step;
       v.tolerance = checks.tolerance;
+      // Against the closed form of the rings (Lame's solution): the
+      // pressure itself, or the spread and the L2 error relative to it.
+      v.source = "closed form";
       if (checks.quantity == CheckedQuantity::pressure_at_A)
         {
           v.quantity  = "pressure at A";
@@ -96,6 +101,7 @@ namespace RingContact
           v.value = (row.pressure_max - row.pressure_min) / row.analytic;
           v.reference = 0;
           v.error     = v.value;
+          v.relative  = false;
         }
       else
         {
@@ -103,6 +109,7 @@ namespace RingContact
           v.value     = row.l2_relative_error;
           v.reference = 0;
           v.error     = row.l2_relative_error;
+          v.relative  = false;
         }
       v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
       verdicts.push_back(v);
@@ -143,6 +150,8 @@ namespace RingContact
           v.error     = v.value - v.reference;
           if (check.relative)
             v.error /= std::abs(v.reference);
+          v.relative = check.relative;
+          v.source   = check.source;
           v.pass = std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
           verdicts.push_back(v);
         };
@@ -158,16 +167,27 @@ namespace RingContact
     return verdicts;
   }
 
+  // The verdict table, after Code_Aster's TEST_RESU: each check's value,
+  // reference, whether the error is relative or absolute, the error and the
+  // tolerance in a form that shows small numbers (1.0e-08, not 0.0000 %),
+  // the kind of reference, and the verdict. At most 132 columns.
   bool
   print_verdicts(std::ostream &out, const std::vector<Verdict> &verdicts)
   {
+    if (verdicts.empty())
+      {
+        out << "\nChecks: none\n";
+        return true;
+      }
     bool all_pass = true;
     out << "\nChecks\n"
         << std::left << std::setw(18) << "scheme" << std::setw(22) << "quantity"
         << std::right << std::setw(5) << "step" << std::setw(15) << "value"
-        << std::setw(15) << "reference" << std::setw(12) << "error"
+        << std::setw(15) << "reference" << "  " << std::left << std::setw(8)
+        << "error is" << std::right << std::setw(11) << "error"
         << std::setw(11) << "tolerance"
-        << "  verdict\n";
+        << "  " << std::left << std::setw(13) << "reference is"
+        << "verdict\n";
     for (const auto &v : verdicts)
       {
         // A step not reached has no value, reference or error: "-".
@@ -176,14 +196,17 @@ namespace RingContact
             << v.quantity << std::right << std::setw(5) << v.step
             << std::setprecision(7) << std::setw(15);
         if (none)
-          out << "-" << std::setw(15) << "-" << std::setw(12) << "-";
+          out << "-" << std::setw(15) << "-" << "  " << std::left
+              << std::setw(8) << "" << std::right << std::setw(11) << "-";
         else
-          out << v.value << std::setw(15) << v.reference << std::fixed
-              << std::setprecision(4) << std::setw(11) << 100 * v.error
-              << "%";
-        out << std::fixed << std::setprecision(4) << std::setw(10)
-            << 100 * v.tolerance << "%" << (v.pass ? "  PASS" : "  FAIL")
-            << std::defaultfloat << '\n';
+          out << v.value << std::setw(15) << v.reference << "  " << std::left
+              << std::setw(8) << (v.relative ? "relative" : "absolute")
+              << std::right << std::scientific << std::setprecision(2)
+              << std::setw(11) << v.error;
+        out << std::scientific << std::setprecision(2) << std::setw(11)
+            << v.tolerance << std::defaultfloat << "  " << std::left
+            << std::setw(13) << (v.source.empty() ? "-" : v.source)
+            << (v.pass ? "PASS" : "FAIL") << std::right << '\n';
         all_pass = all_pass && v.pass;
       }
     unsigned int n_pass = 0;
@@ -218,12 +241,15 @@ namespace RingContact
       return quoted + "\"";
     };
     std::ostringstream out;
-    out << "scheme,quantity,step,value,reference,error,tolerance,verdict\n";
+    out << "scheme,quantity,step,value,reference,error,tolerance,error_is,"
+           "reference_is,verdict\n";
     out << std::setprecision(10);
     for (const auto &v : verdicts)
       out << field(v.scheme) << ',' << field(v.quantity) << ',' << v.step << ','
           << v.value << ',' << v.reference << ',' << v.error << ','
-          << v.tolerance << ',' << (v.pass ? "PASS" : "FAIL") << '\n';
+          << v.tolerance << ',' << (v.relative ? "relative" : "absolute")
+          << ',' << field(v.source) << ',' << (v.pass ? "PASS" : "FAIL")
+          << '\n';
     return out.str();
   }
 
@@ -243,7 +269,7 @@ namespace RingContact
       "newton_iterations,step_cuts,active_nodes,wall_time";
     for (const auto &column : extra_columns)
       header += "," + column;
-    return header + "\n";
+    return header + ",equilibrium_error,action_reaction_error\n";
   }
 
   std::string
@@ -258,7 +284,8 @@ namespace RingContact
         << ',' << r.step_cuts << ',' << r.active_nodes << ',' << r.wall_time;
     for (const double q : r.quantities)
       out << ',' << q;
-    out << '\n';
+    out << std::setprecision(3) << ',' << r.equilibrium_error << ','
+        << r.action_reaction_error << '\n';
     return out.str();
   }
 

@@ -479,6 +479,13 @@ namespace RingContact
           "0.01",
           "Largest admitted |error|.",
           not_negative());
+    s.add("Reference source",
+          "",
+          Patterns::Selection("|closed form|Code_Aster|publication|"
+                              "other code"),
+          "Where the reference comes from, shown in the verdict table "
+          "(empty: not said).",
+          [this](const std::string &text) { source = text; });
     s.add("Steps",
           "last",
           Patterns::Anything(),

@@ -18,6 +18,7 @@
 
 #include <ring_contact/boundary_motion.h>
 #include <ring_contact/components.h>
+#include <ring_contact/equilibrium.h>
 #include <ring_contact/geometry.h>
 #include <ring_contact/ring_contact_problem.h>
 #include <ring_contact/utilities.h>
@@ -241,6 +242,20 @@ namespace RingContact
     system = std::make_unique<LinearSystem>(communicator,
                                             parameters.newton.linear_solver,
                                             parameters.newton.linear_tolerance);
+    // A factorization of more than a gigabyte is said before it runs, with
+    // what makes it large, once per size.
+    system->estimate_observer = [this](const double bytes) {
+      constexpr double gigabyte = 1e9;
+      if (bytes > gigabyte && bytes > 2 * largest_estimate_said)
+        {
+          largest_estimate_said = bytes;
+          log << "Note: the direct solver's factorization will need about "
+              << std::setprecision(3) << bytes / gigabyte
+              << " GB (UMFPACK's estimate) and take long" << describe_fill_in()
+              << '\n'
+              << std::setprecision(6);
+        }
+    };
     if (system->iterative())
       {
         // The iterative solver's blocks: each displacement component, and
@@ -337,8 +352,11 @@ namespace RingContact
             }
           catch (const std::exception &e)
             {
-              throw std::runtime_error("Contact/Integration schemes: " +
-                                       one_line_message(e));
+              // Named with the file and line that list it (main.cc).
+              throw ParameterError("Contact",
+                                   "Integration schemes",
+                                   "Contact/Integration schemes: " +
+                                     one_line_message(e));
             }
         for (const auto node : contacts.back()->all_multiplier_dofs())
           pair_of_node[node] = contacts.size() - 1;
@@ -380,6 +398,19 @@ namespace RingContact
     is_multiplier.assign(dof_handler.n_dofs(), false);
     for (const auto i : all_multipliers)
       is_multiplier[i] = true;
+
+    // The unknowns whose reaction a support takes (equilibrium.h): the
+    // imposed ones, both of a node with a normal condition (its reaction is
+    // along the normal), and the two sides of a cyclic sector (the rest of
+    // the rings acts there).
+    supported.assign(dof_handler.n_dofs(), false);
+    for (const auto dof : imposed_dofs)
+      supported[dof] = true;
+    for (const auto &line : normal_target)
+      supported[line.dofs[0]] = supported[line.dofs[1]] = true;
+    for (const auto &pair : cyclic_pairs)
+      for (const unsigned int c : {Components::ux, Components::uy})
+        supported[pair.end[c]] = supported[pair.start[c]] = true;
   }
 
   // The constraints of a Newton update. The fixed displacements get the
@@ -1049,6 +1080,10 @@ namespace RingContact
           sum_over_processes(*v, communicator);
         n_inverted = Utilities::MPI::sum(n_inverted, communicator);
         min_det_F  = Utilities::MPI::min(min_det_F, communicator);
+        for (const BoundaryLoad &load : boundary_loads)
+          for (unsigned int d = 0; d < 2; ++d)
+            applied_resultant[load.boundary_id][d] = Utilities::MPI::sum(
+              applied_resultant[load.boundary_id][d], communicator);
         for (const auto &message :
              Utilities::MPI::all_gather(communicator, boundary_data_error))
           if (!message.empty())
@@ -1059,6 +1094,12 @@ namespace RingContact
       }
     if (!boundary_data_error.empty())
       throw BoundaryDataError(boundary_data_error);
+    // The magnitude of the terms of each row at the last assembly with the
+    // tangent (the others have the contact's only): the round-off scale of
+    // the forces for the invariants of the converged state, whose own
+    // assembly may have skipped the tangent.
+    if (tangent)
+      tangent_magnitude = residual_magnitude;
   }
 
   // Add a cell's (or face's) matrix and right-hand side -R to the system,
@@ -1107,6 +1148,7 @@ namespace RingContact
   void
   RingContactProblem::assemble_boundary_loads()
   {
+    applied_resultant.clear();
     if (boundary_loads.empty())
       return;
     const auto cofactor = [](const Tensor<2, 2> &G) {
@@ -1173,6 +1215,7 @@ namespace RingContact
                          N) *
                         dA) :
                       Tensor<1, 2>(value * dA);
+                  applied_resultant[load.boundary_id] += force;
                   for (unsigned int i = 0; i < n; ++i)
                     {
                       const unsigned int c =
@@ -1255,6 +1298,12 @@ namespace RingContact
               log << "      GMRES: " << system->last_iterations()
                   << " iterations\n";
           }
+      }
+    catch (const FactorizationTooLarge &e)
+      {
+        // Cutting the step would not help: say what makes the system so
+        // large to factorize.
+        throw std::runtime_error(one_line_message(e) + describe_fill_in());
       }
     catch (const IterativeSolverFailure &e)
       {
@@ -1635,6 +1684,32 @@ namespace RingContact
       }
   }
 
+  // Why a factorization may need so much memory: the contact couples each
+  // slave segment to every master segment it faces, and a slave segment
+  // facing many (a coarse slave on a fine master) makes a dense block of
+  // their unknowns, whose factor fills in.
+  std::string
+  RingContactProblem::describe_fill_in() const
+  {
+    std::ostringstream text;
+    text << std::setprecision(3);
+    for (unsigned int k = 0; k < contacts.size(); ++k)
+      {
+        const double slave  = contacts[k]->slave_surface().min_segment_length();
+        const double master = contacts[k]->master_surface().min_segment_length();
+        if (slave > 4 * master)
+          text << "; contact pair " << k + 1 << ": the slave surface's "
+               << "segments are up to " << slave / master
+               << " times longer than the master's, and each couples to "
+                  "every master segment it faces (a dense block): make the "
+                  "slave the finer surface, or mesh them alike";
+      }
+    const std::string causes = text.str();
+    return causes.empty() ? "; a coarser mesh, or Newton/Linear solver = "
+                            "iterative, needs less" :
+                            causes;
+  }
+
   // Whether a signal asked the run to stop, on any process (all of them
   // leave their Newton loop at the same iteration).
   bool
@@ -1840,7 +1915,10 @@ namespace RingContact
           n_slipping += contact->n_slipping();
         row.quantities.push_back(n_slipping);
       }
-    history_rows.push_back(row);
+    // A state that fails an invariant is reported, not recorded.
+    const bool balanced = measure_balance_of_forces(row);
+    if (balanced)
+      history_rows.push_back(row);
 
     if (parameters.output.print_steps && parameters.general())
       {
@@ -1874,8 +1952,16 @@ namespace RingContact
     if (parameters.output.print_steps && friction)
       log << "  q_A " << std::setprecision(7) << row.quantities.end()[-2]
           << "  sliding " << row.quantities.back();
+    // The invariants: the larger of the equilibrium and the action-reaction
+    // errors (equilibrium.h).
     if (parameters.output.print_steps)
-      log << '\n';
+      log << "  balance " << std::setprecision(2)
+          << (std::isnan(row.action_reaction_error) ?
+                row.equilibrium_error :
+                std::max(row.equilibrium_error, row.action_reaction_error))
+          << std::setprecision(6) << '\n';
+    if (!balanced)
+      throw UntrustedState(unbalanced_forces);
 
     // A converged state with every contact node open under a load that
     // closes the contact (analytic pressure > 0) is another solution of the
@@ -1890,6 +1976,73 @@ namespace RingContact
     if (interval > 0 &&
         (step % interval == 0 || step == load_program.n_steps()))
       output_results(step);
+  }
+
+  // The invariants of the converged state (equilibrium.h): each body in
+  // equilibrium, and each contact pair's action equal to its reaction, both
+  // relative to the forces involved. Recorded in the history; a warning
+  // beyond what the Newton tolerance leaves, and false (the state cannot be
+  // trusted: its reason in unbalanced_forces) beyond 1e-3.
+  bool
+  RingContactProblem::measure_balance_of_forces(HistoryRow &row)
+  {
+    NodalForces forces;
+    forces.internal = internal_force;
+    forces.applied  = external_force;
+    forces.applied *= -1; // external_force is the loads' part of R
+    forces.supported = supported;
+    // As the Newton loop's floor of the forces (residual_measure()).
+    forces.round_off = tangent_magnitude;
+    forces.round_off *= 10 * std::numeric_limits<double>::epsilon();
+    std::vector<std::pair<types::material_id, types::material_id>> pairs;
+    for (const auto &contact : contacts)
+      {
+        forces.contact.emplace_back(dof_handler.n_dofs());
+        contact->add_forces(solution, forces.contact.back());
+        pairs.emplace_back(
+          contact->slave_surface().segments().front().cell->material_id(),
+          contact->master_surface().segments().front().cell->material_id());
+      }
+    std::vector<std::pair<types::material_id, std::string>> names;
+    for (const Body &body : bodies)
+      names.emplace_back(body.material_id, body.name);
+    // A cyclic sector's master copies carry the master's forces turned:
+    // their sum is not the slave's.
+    const Balance balance =
+      measure_balance(dof_handler, forces, names, pairs, cyclic_pairs.empty());
+    row.equilibrium_error     = balance.worst_body();
+    row.action_reaction_error = balance.worst_pair();
+
+    constexpr double warn_body = 1e-6, warn_pair = 1e-8, fail = 1e-3;
+    std::ostringstream what;
+    what << std::setprecision(3);
+    bool failed = false;
+    for (unsigned int b = 0; b < balance.bodies.size(); ++b)
+      {
+        const auto &[name, error] = balance.bodies[b];
+        if (!balance.beyond_round_off[b] || error <= warn_body)
+          continue;
+        what << (what.tellp() > 0 ? "; " : "") << name
+             << " is out of equilibrium by " << error
+             << " of its forces (applied loads, reactions and contact)";
+        failed = failed || !(error <= fail);
+      }
+    for (unsigned int k = 0; k < balance.pairs.size(); ++k)
+      if (!std::isnan(balance.pairs[k]) && !(balance.pairs[k] <= warn_pair))
+        what << (what.tellp() > 0 ? "; " : "") << "contact pair " << k + 1
+             << "'s forces on its two bodies differ by " << balance.pairs[k]
+             << " of their magnitude";
+    if (what.tellp() == 0)
+      return true;
+    const bool trusted = !failed && !(row.action_reaction_error > fail);
+    if (trusted)
+      {
+        log << "Warning: step " << row.step << ": " << what.str() << '\n';
+        return true;
+      }
+    unbalanced_forces = "step " + std::to_string(row.step) + ": " +
+                        what.str() + ": the state cannot be trusted";
+    return false;
   }
 
   // A general problem's checked quantity at the current (converged) state.
@@ -1990,24 +2143,39 @@ namespace RingContact
         case ProblemQuantity::resultant_force_x:
         case ProblemQuantity::resultant_force_y:
           {
-            const unsigned int component =
-              check.quantity == ProblemQuantity::resultant_force_x ?
-                Components::ux :
-                Components::uy;
-            const ComponentMask mask =
-              Components::displacement_mask(component == Components::ux,
-                                            component == Components::uy);
-            const IndexSet dofs = DoFTools::extract_boundary_dofs(
-              dof_handler,
-              mask,
-              {static_cast<types::boundary_id>(check.boundary_id)});
-            Vector<double> contact_force(dof_handler.n_dofs());
+            if (!boundary_resultants)
+              {
+                // The directions each boundary's displacement holds.
+                std::vector<SupportCondition> supports;
+                for (const auto &condition :
+                     parameters.problem.boundary_conditions)
+                  if (condition.type == BoundaryConditionType::displacement)
+                    supports.push_back(
+                      {static_cast<types::boundary_id>(condition.boundary_id),
+                       condition.normal ? SupportCondition::Kind::normal :
+                       condition.polar  ? SupportCondition::Kind::polar :
+                                          SupportCondition::Kind::cartesian,
+                       condition.components});
+                boundary_resultants =
+                  std::make_unique<BoundaryResultants>(dof_handler,
+                                                       mapping_collection,
+                                                       supports);
+              }
+            NodalForces forces;
+            forces.internal = internal_force;
+            forces.applied  = external_force;
+            forces.applied *= -1;
+            forces.supported = supported;
             for (const auto &contact : contacts)
-              contact->add_forces(solution, contact_force);
-            double force = 0;
-            for (const auto i : dofs)
-              force += internal_force(i) + contact_force(i);
-            return force;
+              {
+                forces.contact.emplace_back(dof_handler.n_dofs());
+                contact->add_forces(solution, forces.contact.back());
+              }
+            const Tensor<1, 2> force = boundary_resultants->resultant(
+              check.boundary_id, forces.reactions(), applied_resultant);
+            return check.quantity == ProblemQuantity::resultant_force_x ?
+                     force[0] :
+                     force[1];
           }
 
         case ProblemQuantity::displacement_x:
@@ -2082,6 +2250,12 @@ namespace RingContact
   RingContactProblem::run()
   {
     setup();
+    {
+      std::vector<double> times;
+      for (unsigned int step = 1; step <= load_program.n_steps(); ++step)
+        times.push_back(load_program.time(step));
+      scenario->check_boundary_data(dof_handler, mapping_collection, times);
+    }
     report_rigid_body_modes();
     log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
         << " cells, " << dof_handler.n_dofs() << " unknowns, "

@@ -8,6 +8,8 @@
 #include <ring_contact/analytic_solution.h>
 #include <ring_contact/boundary_motion.h>
 #include <ring_contact/components.h>
+#include <ring_contact/equilibrium.h>
+#include <ring_contact/parameter_file.h>
 #include <ring_contact/scenario.h>
 
 #include <array>
@@ -382,6 +384,80 @@ namespace RingContact
                 }});
             }
         return loads;
+      }
+
+      // A load on a boundary whose displacement is imposed along a
+      // direction the load acts in: the support takes that part of the
+      // load, which is silently ignored (a traction (0.1 p, -p) on a
+      // boundary held in y: its y part never reached the body). Refused,
+      // at the quadrature points of the loaded faces and the load
+      // program's pseudo-times, where the load's component along a held
+      // direction exceeds 1e-12 of its magnitude.
+      void
+      check_boundary_data(const DoFHandler<2>            &dof_handler,
+                          const hp::MappingCollection<2> &mapping,
+                          const std::vector<double>      &times) const override
+      {
+        const auto &conditions = parameters.problem.boundary_conditions;
+        for (const auto &load : boundary_loads())
+          for (const auto &condition : conditions)
+            {
+              if (condition.type != BoundaryConditionType::displacement ||
+                  condition.boundary_id != load.boundary_id)
+                continue;
+              const SupportCondition support{
+                load.boundary_id,
+                condition.normal ? SupportCondition::Kind::normal :
+                condition.polar  ? SupportCondition::Kind::polar :
+                                   SupportCondition::Kind::cartesian,
+                condition.components};
+              const BoundaryConditionParameters *loaded = nullptr;
+              for (const auto &other : conditions)
+                if (other.boundary_id == load.boundary_id &&
+                    other.type != BoundaryConditionType::displacement)
+                  loaded = &other;
+              for_each_boundary_face(
+                dof_handler,
+                mapping,
+                [&](const auto                      &cell,
+                    const unsigned int               f,
+                    const std::vector<BoundaryNode> &nodes) {
+                  if (cell->face(f)->boundary_id() != load.boundary_id)
+                    return;
+                  for (const BoundaryNode &node : nodes)
+                    for (const double t : times)
+                      {
+                        const LoadState    state{0, 0, t};
+                        const Tensor<1, 2> value = load.value(node.X, state);
+                        const Tensor<1, 2> force =
+                          load.type == BoundaryLoad::Type::pressure ?
+                            Tensor<1, 2>(-value[0] * node.N) :
+                            value;
+                        for (const auto &d : support.directions(node.X, node.N))
+                          if (std::abs(force * d) > 1e-12 * force.norm())
+                            {
+                              std::ostringstream what;
+                              what << "= " << load.boundary_id << " is loaded by "
+                                   << loaded->name << " along a direction ("
+                                   << d[0] << ", " << d[1] << ") that "
+                                   << condition.name
+                                   << " holds (at (" << node.X[0] << ", "
+                                   << node.X[1] << "), t = " << t
+                                   << "): the support would take that part "
+                                      "of the load, which would never reach "
+                                      "the body; impose the displacement "
+                                      "only along the other direction, or "
+                                      "load only across the held one";
+                              throw ParameterError(loaded->name,
+                                                   "Boundary id",
+                                                   "parameter 'Boundary id' "
+                                                   "in subsection '" +
+                                                     loaded->name + "' " +
+                                                     what.str());
+                            }
+                      }
+                });
+            }
       }
 
     private:

@@ -2,9 +2,12 @@
 
 #include <ring_contact/utilities.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include <sys/resource.h>
 
 namespace RingContact
 {
@@ -113,5 +116,42 @@ namespace RingContact
           return kilobytes * 1024;
         }
     return 0;
+  }
+
+  namespace
+  {
+    // A "Name:   123 kB" line of a /proc file, in bytes (0 if none).
+    std::size_t
+    proc_kilobytes(const std::string &file, const std::string &name)
+    {
+      std::ifstream in(file);
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind(name, 0) == 0)
+          {
+            std::istringstream value(line.substr(name.size()));
+            std::size_t        kilobytes = 0;
+            value >> kilobytes;
+            return kilobytes * 1024;
+          }
+      return 0;
+    }
+  } // namespace
+
+  std::size_t
+  available_memory()
+  {
+    std::size_t available = proc_kilobytes("/proc/meminfo", "MemAvailable:");
+    // An address-space limit (ulimit -v, a batch system's) bounds what this
+    // process can have: what is left of it.
+    struct rlimit limit;
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      {
+        const std::size_t used = proc_kilobytes("/proc/self/status", "VmSize:");
+        const std::size_t left =
+          limit.rlim_cur > used ? static_cast<std::size_t>(limit.rlim_cur) - used :
+                                  0;
+        available = available > 0 ? std::min(available, left) : left;
+      }
+    return available;
   }
 } // namespace RingContact

@@ -148,6 +148,16 @@ main()
                "subsection Contact\n set Integration schemes = nodal, "
                "Gauss 2, nodal\nend\n",
                "lists 'nodal' twice");
+  // Rings as soft as E = 1e-200 are imposed displacements of 1e204 m:
+  // positions beyond any finite distance. The contact search crashed on an
+  // invalid segment (SIGSEGV); now the state is found not finite, each try
+  // of the step fails with that reason, and the run stops cleanly.
+  expect_error("rings_of_1e_minus_200",
+               "subsection Materials\n set Young's modulus outer ring = "
+               "1e-200\n set Young's modulus inner ring = 1e-200\nend\n" +
+                 quiet,
+               "could not be solved");
+
   // Refused before the first scheme runs, not after it.
   expect_error("later_scheme_unsuited",
                "subsection Finite elements\n"

@@ -4,8 +4,10 @@
     /usr/bin/python3 check_results.py FOLDER [options]
 
 (Debian's /usr/bin/python3, which has python3-vtk9.) Checks:
-- history.csv: the header and rows of 15 fields, every number parses;
-- verdicts.csv (if present): rows of 8 fields;
+- history.csv: the header and rows of 15 fields, the checked quantities,
+  and the invariants (equilibrium_error, action_reaction_error), every
+  number parses;
+- verdicts.csv (if present): rows of 10 fields;
 - every .pvd parses and every file it lists exists; every listed .vtu (or
   .pvtu of an MPI run, with its pieces) is read
   with VTK's own XML reader without error or warning, has cells, every cell's
@@ -27,7 +29,8 @@ import sys
 import xml.etree.ElementTree as ET
 
 HISTORY_FIELDS = 15
-VERDICT_FIELDS = 8
+VERDICT_FIELDS = 10
+INVARIANTS = ["equilibrium_error", "action_reaction_error"]
 
 
 def fail(message):
@@ -50,14 +53,16 @@ def check_csv(path, n_fields):
 
 
 def history_fields(path):
-    """The 15 fields of every run, and a general problem's checked
-    quantities after them (check_1_contact_pressure, ...)."""
+    """The 15 fields of every run, a general problem's checked quantities
+    after them (check_1_contact_pressure, ...), and the invariants last."""
     with open(path, newline="") as f:
         header = next(csv.reader(f), [])
-    extra = header[HISTORY_FIELDS:]
+    if header[-len(INVARIANTS):] != INVARIANTS:
+        fail(f"{path}: the header does not end with {INVARIANTS}")
+    extra = header[HISTORY_FIELDS:-len(INVARIANTS)]
     if any(not name.startswith("check_") for name in extra):
         fail(f"{path}: header has unknown fields {extra}")
-    return HISTORY_FIELDS + len(extra)
+    return HISTORY_FIELDS + len(extra) + len(INVARIANTS)
 
 
 def check_history(path):

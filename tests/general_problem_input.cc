@@ -52,9 +52,51 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  // A factorization beyond the memory the process can have (here an
+  // address-space limit of 4 GB): a fine master under a coarse slave (6000
+  // against 7 cells along the interface) makes dense blocks, 4.2 GB by
+  // UMFPACK's estimate. Said at once, naming the mesh ratio, instead of
+  // a factorization that runs out of memory, or for minutes (5.5 GB and
+  // 150 s at 10 000 cells).
+  void
+  factorization_too_large()
+  {
+    {
+      std::ofstream prm("fill_in.prm");
+      prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
+          << "subsection Mesh\n set Mesh file = " SOURCE_DIR
+             "/../meshes/two_blocks.geo\n"
+             " set Geo parameters = nl = 6000, nu = 7, nh = 1\nend\n"
+          << "subsection Output\n set VTU interval = 0\n"
+             " set Write history = false\n set Print timing = false\n"
+             " set Print steps = false\nend\n"
+          << "subsection Newton\n set Verbose = false\nend\n";
+    }
+    const auto result = RingContactTests::run_command(
+      {"/bin/sh",
+       "-c",
+       "ulimit -v 4000000; exec " RING_CONTACT_EXECUTABLE " fill_in.prm"});
+    check(result.exit_code == 1, "fill_in: exit code 1");
+    check(result.printed("error: the direct solver's factorization of the "
+                         "24052 unknowns would need about"),
+          "fill_in: the estimate is said");
+    check(result.printed("the slave surface's segments are up to 857 times "
+                         "longer than the master's"),
+          "fill_in: the mesh ratio is named");
+    RingContactTests::deallog_file
+      << "fill_in: exit code 1: error: the direct solver's factorization "
+         "... would need about ... GB ...; contact pair 1: the slave "
+         "surface's segments are up to 857 times longer than the master's ..."
+      << std::endl;
+  }
+} // namespace
+
 int
 main()
 {
+  factorization_too_large();
   // The problem itself solves: exit code 0, every check passes.
   {
     std::ofstream prm("valid.prm");
@@ -221,6 +263,63 @@ main()
   expect_error("multiplier_above_the_slave_degree",
                "subsection Finite elements\n set Multiplier degree = 2\nend\n",
                "exceeds the displacement degree of the slave body");
+  // The mesh audit: two unit blocks as a gmsh 2.2 file written here, with
+  // one line changed in each case. An untagged slave line (it was dropped
+  // from the contact surface, the pressure reading 0.36-3.1 MPa for 1 MPa),
+  // a face given two tags by two lines of two entities (one silently won),
+  // and a tagged line inside a body (its tag would apply nowhere: deal.II
+  // refuses it).
+  const auto write_blocks = [](const std::string &name,
+                               const std::string &slave_line,
+                               const std::string &extra_line) {
+    std::ofstream msh(name);
+    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n"
+           "1 0 -1 0\n2 1 -1 0\n3 1 0 0\n4 0 0 0\n"
+           "5 0 0 0\n6 1 0 0\n7 1 1 0\n8 0 1 0\n$EndNodes\n$Elements\n"
+        << (extra_line.empty() ? 10 : 11)
+        << "\n1 3 2 1 1 1 2 3 4\n2 3 2 2 2 5 6 7 8\n"
+           "3 1 2 21 11 1 2\n4 1 2 23 12 2 3\n5 1 2 20 13 3 4\n"
+           "6 1 2 22 14 4 1\n"
+        << slave_line
+        << "\n8 1 2 13 16 6 7\n9 1 2 11 17 7 8\n10 1 2 12 18 8 5\n"
+        << (extra_line.empty() ? "" : extra_line + "\n") << "$EndElements\n";
+  };
+  write_blocks("untagged_slave.msh", "7 1 2 0 15 5 6", "");
+  write_blocks("two_tags.msh", "7 1 2 10 15 5 6", "11 1 2 14 19 7 8");
+  {
+    // The upper block in two cells, the line between them tagged.
+    std::ofstream msh("inner_line.msh");
+    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n10\n"
+           "1 0 -1 0\n2 1 -1 0\n3 1 0 0\n4 0 0 0\n5 0 0 0\n6 1 0 0\n"
+           "7 1 1 0\n8 0 1 0\n9 0.5 0 0\n10 0.5 1 0\n$EndNodes\n"
+           "$Elements\n14\n1 3 2 1 1 1 2 3 4\n2 3 2 2 2 5 9 10 8\n"
+           "3 3 2 2 2 9 6 7 10\n4 1 2 21 11 1 2\n5 1 2 23 12 2 3\n"
+           "6 1 2 20 13 3 4\n7 1 2 22 14 4 1\n8 1 2 10 15 5 9\n"
+           "9 1 2 10 15 9 6\n10 1 2 13 16 6 7\n11 1 2 11 17 7 10\n"
+           "12 1 2 11 17 10 8\n13 1 2 12 18 8 5\n14 1 2 14 19 9 10\n"
+           "$EndElements\n";
+  }
+  expect_error("untagged_slave_line",
+               "subsection Mesh\n set Mesh file = untagged_slave.msh\nend\n",
+               "the boundary line element 7 (gmsh entity 15) near (0.5, 0) "
+               "has no physical tag");
+  expect_error("face_with_two_tags",
+               "subsection Mesh\n set Mesh file = two_tags.msh\nend\n",
+               "carries two physical tags, 11 (element 9 (gmsh entity 17)) "
+               "and 14 (element 11 (gmsh entity 19))");
+  expect_error("tagged_line_inside_a_body",
+               "subsection Mesh\n set Mesh file = inner_line.msh\nend\n",
+               "specified a boundary id for an internal face");
+
+  // A traction on a boundary whose displacement is held along it: the
+  // support took that part of the load, silently.
+  expect_error("traction_along_a_held_direction",
+               "subsection Boundary condition 5\n set Boundary id = 11\n"
+               " set Type = displacement\n set Components = x\n"
+               " set Value = 0; 0\nend\n"
+               "subsection Boundary condition 1\n"
+               " set Value = 0.1 * p * t; -p * t\nend\n",
+               "along a direction (1, 0) that Boundary condition 5 holds");
   expect_error("curved_quadratic_mesh",
                "subsection Mesh\n set Mesh file = " SOURCE_DIR
                "/../meshes/ssnp152g.msh\nend\n",

@@ -48,6 +48,17 @@ namespace
     std::istringstream in_a(read_file(a)), in_b(read_file(b));
     std::string        line_a, line_b;
     unsigned int       lines = 0;
+    // The column of the wall time, which differs: from the header.
+    unsigned int wall_time = 0;
+    {
+      std::istringstream header(read_file(a));
+      std::string        first, name;
+      std::getline(header, first);
+      std::istringstream names(first);
+      for (unsigned int k = 0; std::getline(names, name, ','); ++k)
+        if (name == "wall_time")
+          wall_time = k;
+    }
     while (std::getline(in_a, line_a))
       {
         if (!std::getline(in_b, line_b))
@@ -61,9 +72,11 @@ namespace
               return false;
             fields.emplace_back(field_a, field_b);
           }
-        fields.pop_back(); // the wall time
-        for (const auto &[x, y] : fields)
+        for (unsigned int k = 0; k < fields.size(); ++k)
           {
+            if (k == wall_time && lines > 0)
+              continue;
+            const auto &[x, y] = fields[k];
             char        *end_x, *end_y;
             const double u       = std::strtod(x.c_str(), &end_x);
             const double v       = std::strtod(y.c_str(), &end_y);

@@ -18,6 +18,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace RingContact
@@ -61,6 +62,11 @@ namespace RingContact
     {
       return counts;
     }
+
+    /// Called after each analysis with UMFPACK's estimate of the
+    /// factorization's peak memory [bytes], before it runs (a note in the
+    /// log when it is large: a long factorization is then said before).
+    std::function<void(double)> estimate_observer;
 
   private:
     void

@@ -35,6 +35,7 @@ namespace RingContact
       long                     physical; ///< physical tag (0 if none)
       std::vector<std::size_t> nodes;    ///< node tags, gmsh order
       std::size_t              tag;      ///< gmsh element tag
+      int                      entity = 0; ///< its gmsh (elementary) entity
     };
 
     struct GmshMesh
@@ -44,6 +45,9 @@ namespace RingContact
       /// Lines and quadrilaterals, by increasing tag (points are dropped).
       std::vector<GmshElement> elements;
       bool                     quadratic = false; ///< types 8, 10 or 16
+      /// The node tag of each vertex of the triangulation built from it
+      /// (set by Geometry::read_gmsh()).
+      std::vector<std::size_t> node_of_vertex;
     };
 
     /// Numbers handed to a .geo script, as gmsh's `-setnumber name value`.

@@ -173,6 +173,9 @@ namespace RingContact
     FactorizationStatistics
     direct_statistics() const;
 
+    /// See DirectSolver::estimate_observer (UMFPACK only).
+    std::function<void(double)> estimate_observer;
+
     /// The matrix on one process (deal.II's): for tests.
     const SparseMatrix<double> &
     serial_matrix() const

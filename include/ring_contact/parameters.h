@@ -12,8 +12,10 @@
 #include <deal.II/base/point.h>
 
 #include <ring_contact/contact_quadrature.h>
+#include <ring_contact/parameter_file.h>
 #include <ring_contact/problem_description.h>
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -289,6 +291,14 @@ namespace RingContact
     /// explanation that names the file and the entry on any problem.
     void
     read(const std::string &filename);
+
+    /// The message of a ParameterError with the file and line that set
+    /// the entry (or the note that it is its default).
+    std::string
+    located(const ParameterError &e) const;
+
+    /// Where each entry the file sets was set ("Subsection/Entry").
+    std::map<std::string, EntryOrigin> origins;
 
     /// Checks across subsections (called by read()): the multiplier degree
     /// against the slave ring's, the rotation against the mesh, the

@@ -40,6 +40,10 @@ namespace RingContact
     unsigned int step_cuts;
     unsigned int active_nodes;
     double       wall_time; ///< seconds spent on the step
+    /// The invariants (equilibrium.h): the worst body's equilibrium and
+    /// the worst pair's action and reaction, relative to their forces.
+    double equilibrium_error     = 0;
+    double action_reaction_error = 0;
     /// A general problem: the value of each of its checks' quantities.
     std::vector<double> quantities;
   };
@@ -52,9 +56,13 @@ namespace RingContact
     unsigned int step;
     double       value;
     double       reference;
-    double       error; ///< relative (pressure) or absolute (L2 error)
+    double       error; ///< relative or absolute, as `relative` says
     double       tolerance;
     bool         pass;
+    /// (value - reference) / |reference|, or value - reference.
+    bool relative = true;
+    /// Where the reference comes from: "closed form", "Code_Aster", "publication", "other code", or "" (not said).
+    std::string source;
   };
 
   /// Turn the history of scheme `scheme` into the verdicts asked for. The

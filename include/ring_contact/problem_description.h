@@ -155,6 +155,8 @@ namespace RingContact
     std::string               reference;
     double                    tolerance;
     bool                      relative;
+    /// Where the reference comes from (for the verdict table).
+    std::string source;
     bool                      every_step;
     std::vector<unsigned int> steps; ///< invalid_unsigned_int: the last
     std::string               name;  ///< "Check 2"

@@ -22,6 +22,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact_interface.h>
+#include <ring_contact/equilibrium.h>
 #include <ring_contact/linear_system.h>
 #include <ring_contact/load_program.h>
 #include <ring_contact/material.h>
@@ -276,6 +277,10 @@ namespace RingContact
     /// A signal asked the run to stop (on any process).
     bool
     stop_requested() const;
+    /// Why the factorization of the tangent may need much memory (the
+    /// contact surfaces' relative mesh sizes), for the error that says so.
+    std::string
+    describe_fill_in() const;
     void
     postprocess_step(const unsigned int step,
                      const unsigned int iterations,
@@ -283,6 +288,10 @@ namespace RingContact
                      const double       wall_time);
     void
     output_results(const unsigned int step);
+    /// The invariants of a converged state into `row` (equilibrium.h);
+    /// false if the state cannot be trusted (see unbalanced_forces).
+    bool
+    measure_balance_of_forces(HistoryRow &row);
     /// A quantity of a general problem's check at the current state.
     double
     checked_quantity(const ProblemCheckParameters &check) const;
@@ -358,6 +367,15 @@ namespace RingContact
     Vector<double> external_force;
     /// The displacement unknowns the scenario imposes.
     std::vector<types::global_dof_index> imposed_dofs;
+    /// The unknowns whose reaction a support takes (NodalForces).
+    std::vector<bool> supported;
+    /// The integral of the applied loads on each loaded boundary, from the
+    /// last assembly.
+    std::map<types::boundary_id, Tensor<1, 2>> applied_resultant;
+    /// The resultant forces of boundaries (built when a check asks).
+    mutable std::unique_ptr<BoundaryResultants> boundary_resultants;
+    /// Why the last converged state cannot be trusted.
+    std::string unbalanced_forces;
 
     /// The constraints of the first update of a load step: the same lines,
     /// with the remaining boundary increment as inhomogeneity (step-44).
@@ -381,6 +399,8 @@ namespace RingContact
     /// or the position X + u and the multiplier (contact): machine epsilon
     /// times this is the noise of evaluating R_i.
     Vector<double> residual_magnitude;
+    /// residual_magnitude at the last assembly with the tangent.
+    Vector<double> tangent_magnitude;
     /// |X| of the support point of every displacement unknown.
     Vector<double> position_magnitude;
     unsigned int   n_inverted = 0;
@@ -449,6 +469,8 @@ namespace RingContact
     unsigned int linear_solves     = 0;
     /// Why the last Newton solve stopped without converging.
     std::string failure_reason;
+    /// The largest factorization's memory estimate said in the log.
+    double largest_estimate_said = 0;
     /// The contact points keep their partners (pairing cycles).
     bool                    keep_partners = false;
     Vector<double>          solution;

@@ -117,6 +117,15 @@ namespace RingContact
     /// slave surface (its analytic solution); NaN where none is known.
     virtual double
     reference_pressure(const LoadState &load) const;
+
+    /// Check the boundary data against the mesh, at the load states of
+    /// `times`, before the first step: throws a ParameterError that names
+    /// the entry at fault (none by default).
+    virtual void
+    check_boundary_data(const DoFHandler<2> &,
+                        const hp::MappingCollection<2> &,
+                        const std::vector<double> &) const
+    {}
   };
 
   /// The scenario of the parameters.

@@ -85,10 +85,37 @@ namespace RingContact
     double scaled_sum = 1;
   };
 
+  /// Thrown where a converged state fails an invariant that the program
+  /// checks (equilibrium.h): its results are not written as converged,
+  /// and the run stops with the reason.
+  class UntrustedState : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /// The peak resident memory of this process so far (VmHWM), in bytes; 0
   /// where the system does not say.
   std::size_t
   peak_memory();
+
+  /// The memory the system can give without swapping (MemAvailable), in
+  /// bytes; 0 where the system does not say.
+  std::size_t
+  available_memory();
+
+  /// Thrown before a factorization that would need more memory than the
+  /// machine has: what() says how much, and the run stops (a step cut
+  /// would not help).
+  class FactorizationTooLarge : public std::runtime_error
+  {
+  public:
+    FactorizationTooLarge(const std::string &what, const double bytes)
+        : std::runtime_error(what)
+        , bytes(bytes)
+    {}
+    const double bytes;
+  };
 } // namespace RingContact
 
 #endif
