@@ -1728,18 +1728,27 @@ namespace RingContact
     double       dt    = t_end - current_time;
     unsigned int cuts = 0, total_iterations = 0;
     Timer        wall;
+    // Whether the increment being tried starts from the last converged
+    // state itself: after a failure from the extrapolated state, the same
+    // increment is tried from there before it is cut.
+    bool from_converged = false;
     while (current_time < t_end - 1e-12 * std::abs(t_end))
       {
         const double         t_next    = std::min(current_time + dt, t_end);
         const Vector<double> converged = solution;
 
         // Predictor: extrapolate the last increment when it was of the
-        // same kind (pressure only, or rotation only).
+        // same kind (pressure only, or rotation only), in the parameter the
+        // state is linear in: the pressure of the rings' ramp, the rotation,
+        // or else the pseudo-time, in which a general problem's boundary
+        // data are written (its load states carry no pressure or rotation:
+        // it was never extrapolated).
         const LoadState next  = load_program.state(t_next);
         const LoadState now   = current_load;
         const LoadState prev  = load_program.state(previous_time);
         double          scale = 0;
-        if (parameters.newton.extrapolate && current_time > previous_time)
+        if (parameters.newton.extrapolate && current_time > previous_time &&
+            !from_converged)
           {
             const double dp0 = now.pressure - prev.pressure,
                          dp1 = next.pressure - now.pressure;
@@ -1749,6 +1758,8 @@ namespace RingContact
               scale = dp1 / dp0;
             else if (dp0 == 0 && dp1 == 0 && ds0 != 0)
               scale = ds1 / ds0;
+            else if (dp0 == 0 && dp1 == 0 && ds0 == 0 && ds1 == 0)
+              scale = (t_next - current_time) / (current_time - previous_time);
           }
         if (scale != 0)
           solution.add(scale, converged, -scale, previous_solution);
@@ -1777,6 +1788,7 @@ namespace RingContact
             previous_solution = converged;
             previous_time     = current_time;
             current_time      = t_next;
+            from_converged    = false;
             continue;
           }
         // Failed: back to the last converged state, half the increment.
@@ -1791,6 +1803,19 @@ namespace RingContact
                 << current_time << ")\n";
             return false;
           }
+        // The extrapolation is a guess: a state off the path (a body held
+        // by the contact whose first step removed an initial overlap, not
+        // in proportion to the load, was extrapolated apart from it) is
+        // not a reason to cut the step.
+        if (scale != 0)
+          {
+            from_converged = true;
+            log << "  step " << step << ": Newton failed from the extrapolated "
+                << "state (" << failure_reason
+                << "); trying again from the last converged state\n";
+            continue;
+          }
+        from_converged = false;
         if (cuts == parameters.newton.max_step_cuts)
           {
             log << "Step " << step << ": Newton did not converge after " << cuts
