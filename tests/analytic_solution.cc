@@ -1,7 +1,7 @@
 // The closed-form solution against the values that doc/intro.md gives, and
 // against its own definition: continuity of u_r and of the radial stress at
 // r = R2, the pressure p at r = R1 and zero traction at r = R3.
-#include <ring_contact/analytic_solution.h>
+#include <ring_contact/scenarios/ssnp152/analytic_solution.h>
 
 #include "tests.h"
 

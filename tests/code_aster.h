@@ -32,7 +32,7 @@ namespace RingContactTests
                      extra));
     std::vector<double> p;
     for (const auto &row : history)
-      p.push_back(row.pressure_A);
+      p.push_back(row.value("pressure_A"));
     return p;
   }
 

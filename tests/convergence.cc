@@ -3,7 +3,7 @@
 // refined (40, 80 and 160 elements around, the rings refined radially in
 // proportion), for nodal and Gauss integration; the observed order is
 // printed.
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -33,7 +33,7 @@ main()
               << "end\n";
           const auto history =
             RingContactTests::run_problem("convergence", prm.str());
-          errors.push_back(std::abs(history.back().relative_error));
+          errors.push_back(std::abs(history.back().value("relative_error")));
           out << scheme << ", " << std::setw(3) << around
               << " elements around: relative error " << std::scientific
               << std::setprecision(3) << errors.back() << std::defaultfloat;

@@ -7,7 +7,7 @@
 // slave vertices alone it was first order and 10 % off at 40 around. The
 // error at A must fall at order 1.8 or more between 80 and 160 around, and
 // on these facing meshes the nodal result is the mortar result (Gauss 3).
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -43,7 +43,7 @@ namespace
         << " set Ramp steps = 1\n set Reference pressure = 1e8\nend\n";
     return RingContactTests::run_problem("convergence_mixed", prm.str())
       .back()
-      .relative_error;
+      .value("relative_error");
   }
 } // namespace
 

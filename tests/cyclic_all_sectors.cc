@@ -6,7 +6,7 @@
 // (asserted: 1e-8 relative), for a short ramp and a short rotation (half an
 // element) with the nodal, Gauss and segment-based schemes.
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -37,19 +37,19 @@ namespace
         double difference = 0, difference_A = 0;
         for (unsigned int i = 0; i < whole.size(); ++i)
           {
-            const double scale = std::abs(whole[i].analytic);
+            const double scale = std::abs(whole[i].value("analytic"));
             difference_A =
               std::max(difference_A,
-                       std::abs(whole[i].pressure_A - sector[i].pressure_A) /
-                         std::abs(whole[i].pressure_A));
+                       std::abs(whole[i].value("pressure_A") - sector[i].value("pressure_A")) /
+                         std::abs(whole[i].value("pressure_A")));
             for (const auto &[a, b] :
-                 {std::make_pair(whole[i].pressure_min, sector[i].pressure_min),
-                  std::make_pair(whole[i].pressure_max,
-                                 sector[i].pressure_max)})
+                 {std::make_pair(whole[i].value("pressure_min"), sector[i].value("pressure_min")),
+                  std::make_pair(whole[i].value("pressure_max"),
+                                 sector[i].value("pressure_max"))})
               difference = std::max(difference, std::abs(a - b) / scale);
             difference = std::max(difference,
-                                  std::abs(whole[i].l2_relative_error -
-                                           sector[i].l2_relative_error));
+                                  std::abs(whole[i].value("l2_relative_error") -
+                                           sector[i].value("l2_relative_error")));
           }
         // The figures themselves are round-off: on the console only.
         std::cout << name << ", k = " << std::setw(2) << k << ": pressure at A "

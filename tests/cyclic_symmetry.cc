@@ -7,7 +7,7 @@
 // geometry, with linear, quadratic and mixed elements, either ring slave,
 // and after a global refinement.
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -35,16 +35,16 @@ namespace
         double difference = 0;
         for (unsigned int i = 0; i < whole.size(); ++i)
           {
-            const double scale = std::abs(whole[i].analytic);
+            const double scale = std::abs(whole[i].value("analytic"));
             for (const auto &[a, b] :
-                 {std::make_pair(whole[i].pressure_A, sector[i].pressure_A),
-                  std::make_pair(whole[i].pressure_min, sector[i].pressure_min),
-                  std::make_pair(whole[i].pressure_max,
-                                 sector[i].pressure_max)})
+                 {std::make_pair(whole[i].value("pressure_A"), sector[i].value("pressure_A")),
+                  std::make_pair(whole[i].value("pressure_min"), sector[i].value("pressure_min")),
+                  std::make_pair(whole[i].value("pressure_max"),
+                                 sector[i].value("pressure_max"))})
               difference = std::max(difference, std::abs(a - b) / scale);
             difference = std::max(difference,
-                                  std::abs(whole[i].l2_relative_error -
-                                           sector[i].l2_relative_error));
+                                  std::abs(whole[i].value("l2_relative_error") -
+                                           sector[i].value("l2_relative_error")));
           }
         RingContactTests::deallog_file
           << name << ", sector of " << k << " element" << (k > 1 ? "s" : "")

@@ -22,7 +22,7 @@
 // convergence: second order (error ratio above 3 per refinement, C, nodal).
 #include <deal.II/lac/full_matrix.h>
 
-#include <ring_contact/analytic_solution.h>
+#include <ring_contact/scenarios/ssnp152/analytic_solution.h>
 
 #include "run_problem.h"
 
@@ -174,7 +174,7 @@ main()
           "friction_convergence",
           prm_text(rings, 0.5, "nodal", refinements, alpha, 1));
         const double error =
-          std::abs(history.back().quantities[0] / (K * std::sin(alpha)) - 1);
+          std::abs(history.back().value("tangential_traction_A") / (K * std::sin(alpha)) - 1);
         log << "C, nodal, " << 40 * (1u << refinements)
             << " around: stick traction error " << error;
         if (refinements > 0)
@@ -219,8 +219,8 @@ main()
           for (unsigned int k = 0; k < steps; ++k)
             {
               const auto        &row      = history[k];
-              const double       traction = row.quantities[0];
-              const unsigned int sliding  = row.quantities[1];
+              const double       traction = row.value("tangential_traction_A");
+              const unsigned int sliding  = row.value("slipping_nodes");
               const double       alpha    = alpha_f * (k + 1) / steps;
               most_iterations =
                 std::max(most_iterations, row.newton_iterations);
@@ -238,7 +238,7 @@ main()
                         case_name + ": every node slides after alpha_s");
                   slide_exact =
                     std::max(slide_exact,
-                             std::abs(traction / (-mu * row.pressure_A) - 1));
+                             std::abs(traction / (-mu * row.value("pressure_A")) - 1));
                   const double R3 = rings.R3;
                   const double sigma_n_alpha =
                     lame_contact_pressure(rings,

@@ -218,7 +218,7 @@ namespace
       {"Mesh", "Interface radius"},
       {"Mesh", "Inner radius"},
       {"Mesh", "Mesh source"},
-      {"Mesh", "Patch test elements lower block"},
+      {"Patch test", "Elements lower block"},
       {"Materials", "Young's modulus outer ring"},
       {"Materials", "Poisson's ratio inner ring"},
       {"Materials", "Kinematics"},
@@ -685,8 +685,8 @@ namespace
       "subsection Checks\n set Steps =\nend\n",
       "subsection Checks\n set Steps = ,\nend\n",
       "subsection Checks\n set Steps = 99\nend\n",
-      "subsection Mesh\n set Mesh source = patch test\n"
-      " set Patch test elements lower block = 10000000\nend\n"};
+      "subsection Problem\n set Scenario = patch test\nend\n"
+      "subsection Patch test\n set Elements lower block = 10000000\nend\n"};
     unsigned int n = 0;
     for (const auto &text : texts)
       add_prm("size_" + std::to_string(n++), quiet_base + text);

@@ -250,7 +250,7 @@ main()
                "is read for SSNP152 only");
   expect_error("ssnp152_checks_in_a_general_problem",
                "subsection Checks\n set Tolerance = 0.1\nend\n",
-               "is read for SSNP152 only");
+               "is read for SSNP152 and the patch test only");
   expect_error("ramp_for_a_general_problem",
                "subsection Load program\n set Program = ramp\nend\n",
                "must be 'steps'");

@@ -12,9 +12,9 @@
 #include <deal.II/grid/tria.h>
 
 #include <ring_contact/config.h>
-#include <ring_contact/geometry.h>
-#include <ring_contact/gmsh_file.h>
-#include <ring_contact/utilities.h>
+#include <ring_contact/input/gmsh_mesh.h>
+#include <ring_contact/input/gmsh_file.h>
+#include <ring_contact/base/utilities.h>
 
 #include "run_problem.h"
 
@@ -83,7 +83,7 @@ namespace
           "\nend\nsubsection Load program\n set Ramp steps = 2\n"
           " set Time step = 1\nend\n"
           "subsection Contact\n set Integration schemes = nodal\nend\n"));
-    return history.back().pressure_A;
+    return history.back().value("pressure_A");
   }
 
   std::string

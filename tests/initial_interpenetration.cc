@@ -11,7 +11,7 @@
 // nothing but the contact holds it: no warning there either, asserted by
 // the log of the test hertz.)
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -41,7 +41,7 @@ namespace
     Parameters parameters;
     parameters.read("case.prm");
     std::ostringstream log;
-    RingContactProblem problem(parameters,
+    ContactProblem problem(parameters,
                                parameters.contact.schemes.front(),
                                log);
     problem.run();

@@ -3,7 +3,7 @@
 // the bulk quadrature points); the step is cut, then the run stops and says
 // why, with no converged step.
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -28,7 +28,7 @@ main()
   Parameters parameters;
   parameters.read("inverted.prm");
   std::ostringstream log;
-  RingContactProblem problem(parameters,
+  ContactProblem problem(parameters,
                              parameters.contact.schemes.front(),
                              log);
   check(!problem.run(), "the run stops");

@@ -14,7 +14,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "compare_histories.h"
 #include "run_problem.h"
@@ -49,7 +49,7 @@ namespace
     for (const auto &scheme : parameters.contact.schemes)
       {
         std::ostringstream log;
-        RingContactProblem problem(parameters, scheme, log, MPI_COMM_WORLD);
+        ContactProblem problem(parameters, scheme, log, MPI_COMM_WORLD);
         check(problem.run(), name + ", " + scheme.name() + ": solved");
         run.histories.push_back(problem.history());
         std::smatch       match;

@@ -19,7 +19,7 @@
 //   round-off at 1e-9 was 100 times that).
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <ring_contact/material.h>
+#include <ring_contact/materials/material.h>
 
 #include "tests.h"
 

@@ -16,7 +16,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "compare_histories.h"
 #include "run_problem.h"
@@ -45,7 +45,7 @@ namespace
     for (const auto &scheme : parameters.contact.schemes)
       {
         std::ostringstream log;
-        RingContactProblem problem(parameters, scheme, log, communicator);
+        ContactProblem problem(parameters, scheme, log, communicator);
         check(problem.run(), scheme.name() + ": every step is solved");
         histories.push_back(problem.history());
       }

@@ -27,7 +27,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/mumps_solver.h>
+#include <ring_contact/linear_algebra/mumps_solver.h>
 
 #include "tests.h"
 

@@ -14,7 +14,7 @@
 // - in uniaxial strain the stress decreases monotonically down to s = 0.05
 //   (Saint Venant-Kirchhoff's has a maximum at s = 0.58: its Newton
 //   iteration finds no state beyond; the test shows it for comparison).
-#include <ring_contact/material.h>
+#include <ring_contact/materials/material.h>
 
 #include "tests.h"
 

@@ -7,7 +7,7 @@
 // 1e-9 (written with G - 2 F / kappa, its deviatoric part had a round-off of
 // 1e-7 of the stress, and Newton stalled at the first step).
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -47,6 +47,6 @@ main()
           << std::left << std::setw(16) << scheme
           << " at most 2 iterations per step; p_A error at p = 1e4: "
           << std::fixed << std::setprecision(3)
-          << 100 * history.back().relative_error << " %" << std::endl;
+          << 100 * history.back().value("relative_error") << " %" << std::endl;
       }
 }

@@ -14,7 +14,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ring_contact/config.h>
-#include <ring_contact/parameters.h>
+#include <ring_contact/input/parameters.h>
+#include <ring_contact/scenarios/general/problem_description.h>
+#include <ring_contact/scenarios/ssnp152/ssnp152.h>
 
 #include "tests.h"
 
@@ -86,6 +88,20 @@ namespace
       }
     return "(not printed)";
   }
+  // The entries of a scenario, as its type.
+  const Ssnp152::RingParameters &
+  rings(const Parameters &p)
+  {
+    return dynamic_cast<const Ssnp152::RingParameters &>(
+      *p.scenario_parameters.at("SSNP152"));
+  }
+
+  const ProblemParameters &
+  general(const Parameters &p)
+  {
+    return dynamic_cast<const ProblemParameters &>(
+      *p.scenario_parameters.at("general"));
+  }
 } // namespace
 
 int
@@ -96,7 +112,7 @@ main()
     Parameters       p;
     ParameterHandler prm;
     p.add_parameters(prm);
-    check(p.materials.youngs_modulus_outer == 1e9 &&
+    check(rings(p).youngs_modulus_outer == 1e9 &&
             printed_default("Materials", "Young's modulus outer ring") == "1e9",
           "number default");
     check(p.load.ramp_steps == 21 &&
@@ -114,8 +130,8 @@ main()
     check(p.contact.probe_point.distance(Point<2>(0.6, 0)) == 0,
           "point default");
     check(p.checks.every_step && p.checks.steps.empty(), "steps default");
-    check(p.problem.bodies.size() == ProblemParameters::max_bodies &&
-            p.problem.checks.size() == ProblemParameters::max_checks,
+    check(general(p).bodies.size() == ProblemParameters::max_bodies &&
+            general(p).checks.size() == ProblemParameters::max_checks,
           "every slot of a general problem is bound before the file is read");
     deallog_file << "defaults: the members hold the printed defaults"
                  << std::endl;
@@ -151,7 +167,7 @@ main()
           "end\n");
     Parameters p;
     p.read("values.prm");
-    check(p.materials.youngs_modulus_outer == 2e11, "number");
+    check(rings(p).youngs_modulus_outer == 2e11, "number");
     check(p.materials.plane == PlaneAssumption::plane_strain, "choice");
     check(p.materials.kinematics == Kinematics::neo_hookean, "kinematics");
     check(p.finite_elements.reduced_integration, "flag");
@@ -166,7 +182,7 @@ main()
     check(p.newton.linear_solver == LinearSolverType::mumps, "solver");
     check(p.output.directory == "elsewhere", "text");
     // Untouched entries keep their defaults.
-    check(p.materials.youngs_modulus_inner == 1e9 && p.load.time_step == 0.1,
+    check(rings(p).youngs_modulus_inner == 1e9 && p.load.time_step == 0.1,
           "defaults of the entries not set");
     deallog_file << "values: every kind of entry reaches its member"
                  << std::endl;
@@ -207,7 +223,7 @@ main()
           "  set Poisson's ratio inner ring = 0.25\nend\n");
     Parameters p;
     p.read("bom.prm");
-    check(p.materials.poissons_ratio_inner == 0.25, "byte order mark");
+    check(rings(p).poissons_ratio_inner == 0.25, "byte order mark");
     deallog_file << "byte order mark: read" << std::endl;
   }
 
@@ -232,19 +248,20 @@ main()
           "  set Boundary id = 6\n  set Reference = -q\nend\n");
     Parameters p;
     p.read("general.prm");
-    check(p.problem.bodies.size() == 3 && p.problem.bodies[2].material_id == 7,
+    const auto &problem = p.scenario_entries<ProblemParameters>();
+    check(problem.bodies.size() == 3 && problem.bodies[2].material_id == 7,
           "bodies");
-    check(p.problem.boundary_conditions.size() == 2 &&
-            p.problem.boundary_conditions[0].name == "Boundary condition 2" &&
-            p.problem.boundary_conditions[0].expressions.size() == 1 &&
-            p.problem.boundary_conditions[1].boundary_id == 6,
+    check(problem.boundary_conditions.size() == 2 &&
+            problem.boundary_conditions[0].name == "Boundary condition 2" &&
+            problem.boundary_conditions[0].expressions.size() == 1 &&
+            problem.boundary_conditions[1].boundary_id == 6,
           "boundary conditions");
-    check(p.problem.checks.size() == 1 &&
-            p.problem.checks[0].name == "Check 4" &&
-            p.problem.checks[0].reference == "-q",
+    check(problem.checks.size() == 1 &&
+            problem.checks[0].name == "Check 4" &&
+            problem.checks[0].reference == "-q",
           "checks");
-    check(p.problem.more_contact_pairs.empty(), "contact pairs");
-    check(p.problem.constants.at("q") == 2, "constants");
+    check(problem.more_contact_pairs().empty(), "contact pairs");
+    check(problem.constants.at("q") == 2, "constants");
     deallog_file << "general: the slots in use, in order" << std::endl;
   }
 }

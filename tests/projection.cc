@@ -15,8 +15,8 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/hp/fe_collection.h>
 
-#include <ring_contact/contact_surface.h>
-#include <ring_contact/geometry.h>
+#include <ring_contact/contact/contact_surface.h>
+#include <ring_contact/scenarios/ssnp152/ssnp152.h>
 
 #include "tests.h"
 
@@ -84,15 +84,15 @@ main()
       check(worst_kronecker < 1e-14, "basis not interpolatory");
     }
 
-  MeshParameters mesh;
-  mesh.elements_around       = 40;
-  mesh.radial_elements_outer = 3;
-  mesh.radial_elements_inner = 3;
-  mesh.outer_radius          = 1.0;
-  mesh.interface_radius      = 0.6;
-  mesh.inner_radius          = 0.2;
+  Ssnp152::RingParameters rings;
+  rings.elements_around       = 40;
+  rings.radial_elements_outer = 3;
+  rings.radial_elements_inner = 3;
+  rings.outer_radius          = 1.0;
+  rings.interface_radius      = 0.6;
+  rings.inner_radius          = 0.2;
   Triangulation<2> triangulation;
-  Geometry::make_rings(triangulation, mesh);
+  Ssnp152::make_rings(triangulation, rings);
   triangulation.set_all_manifold_ids(0);
   triangulation.set_manifold(0, PolarManifold<2>(Point<2>()));
 
@@ -100,14 +100,14 @@ main()
   hp::FECollection<2> fe(FESystem<2>(FE_Q<2>(1), 2, FE_Nothing<2>(), 1),
                          FESystem<2>(FE_Q<2>(1), 2, FE_Q<2>(1), 1));
   for (const auto &cell : dof_handler.active_cell_iterators())
-    cell->set_active_fe_index(cell->material_id() == Ids::outer_ring ? 0 : 1);
+    cell->set_active_fe_index(cell->material_id() == Ssnp152::Ids::outer_ring ? 0 : 1);
   dof_handler.distribute_dofs(fe);
   const Vector<double> zero(dof_handler.n_dofs());
 
   const double R2 = 0.6, h = 2 * numbers::PI / 40;
   for (const unsigned int degree : {1u, 2u, 3u})
     {
-      ContactSurface master(dof_handler, Ids::outer_ring_contact, degree);
+      ContactSurface master(dof_handler, Ssnp152::Ids::outer_ring_contact, degree);
       master.update(zero);
       check(master.segments().size() == 40, "40 master segments");
       double       worst_gap = 0, worst_t = 0;

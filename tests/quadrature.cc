@@ -1,8 +1,8 @@
 // The contact quadrature rules on a slave segment (t in [0, 1]): the points
 // and weights of each scheme, and the polynomial degree each integrates
 // exactly.
-#include <ring_contact/contact_surface.h>
-#include <ring_contact/utilities.h>
+#include <ring_contact/contact/contact_surface.h>
+#include <ring_contact/base/utilities.h>
 
 #include "tests.h"
 

@@ -12,8 +12,8 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <ring_contact/config.h>
-#include <ring_contact/material.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/materials/material.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -77,7 +77,7 @@ namespace
     const auto          history = RingContactTests::run_problem("h", prm.str());
     std::vector<double> pressures;
     for (const auto &row : history)
-      pressures.push_back(row.pressure_A);
+      pressures.push_back(row.value("pressure_A"));
     return pressures;
   }
 } // namespace

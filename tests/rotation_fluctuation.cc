@@ -6,7 +6,7 @@
 // curved geometry and quadratic elements (isoparametric: the rigid rotation
 // is in the discrete space).
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -35,8 +35,8 @@ namespace
     double     smallest = 1, largest = -1;
     for (const auto &row : history)
       {
-        smallest = std::min(smallest, row.relative_error);
-        largest  = std::max(largest, row.relative_error);
+        smallest = std::min(smallest, row.value("relative_error"));
+        largest  = std::max(largest, row.value("relative_error"));
       }
     const double points = 100 * (largest - smallest);
     RingContactTests::deallog_file

@@ -14,7 +14,7 @@
 //    2, 3 and 10, Simpson 4, segment-based 3), linear and quadratic elements,
 //    elastic and rigid inner ring.
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "run_problem.h"
 
@@ -53,7 +53,7 @@ namespace
     check(history.size() == 100, "every rotation step is solved");
     double largest = 0;
     for (const auto &row : history)
-      largest = std::max(largest, std::abs(row.relative_error));
+      largest = std::max(largest, std::abs(row.value("relative_error")));
     return 100 * largest;
   }
 

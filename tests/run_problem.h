@@ -5,7 +5,7 @@
 #define ring_contact_run_problem_h
 
 #include <ring_contact/config.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -36,7 +36,7 @@ namespace RingContactTests
     RingContact::Parameters parameters;
     parameters.read(name + ".prm");
     std::ostringstream              log;
-    RingContact::RingContactProblem problem(parameters,
+    RingContact::ContactProblem problem(parameters,
                                             parameters.contact.schemes.front(),
                                             log);
     check(problem.run(), name + ": every step is solved");

@@ -260,7 +260,7 @@ main()
           check(false, name + c.description + ": refused: " + e.what());
         }
       std::ostringstream              log;
-      RingContact::RingContactProblem problem(
+      RingContact::ContactProblem problem(
         parameters, parameters.contact.schemes.front(), log);
       bool solved = false;
       try
@@ -290,16 +290,16 @@ main()
           unsigned int q      = 0;
           for (unsigned int component : {1u, 0u})
             for (unsigned int b = 0;
-                 b < c.free_boundaries.size() && q < row.quantities.size();
+                 b < c.free_boundaries.size() && q < row.trailing.size();
                  ++b, ++q)
               {
-                const double value = row.quantities[q];
+                const double value = row.trailing[q].second;
                 check(std::isfinite(value), at + "a resultant is not finite");
                 sum[component] += value;
                 magnitude[component] += std::abs(value);
               }
           // x is summed only when every boundary's x resultant is there.
-          const bool all_x = row.quantities.size() >= 2 * c.free_boundaries.size();
+          const bool all_x = row.trailing.size() >= 2 * c.free_boundaries.size();
           for (unsigned int component = 0; component < 2; ++component)
             if (component == 1 || all_x)
               check(std::abs(sum[component]) <=

@@ -11,10 +11,11 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ring_contact/analytic_solution.h>
-#include <ring_contact/components.h>
-#include <ring_contact/material.h>
-#include <ring_contact/ring_contact_problem.h>
+#include <ring_contact/scenarios/ssnp152/analytic_solution.h>
+#include <ring_contact/base/components.h>
+#include <ring_contact/materials/material.h>
+#include <ring_contact/problem/inspector.h>
+#include <ring_contact/scenarios/ssnp152/ssnp152.h>
 
 #include "tests.h"
 
@@ -147,15 +148,18 @@ namespace
     }
     parameters.read("tangent.prm");
     std::ostringstream log;
-    RingContactProblem problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
+    ContactProblem          contact_problem(parameters,
+                                   parameters.contact.schemes.front(),
+                                   log);
+    ContactProblemInspector problem(contact_problem);
     problem.setup();
     problem.set_load_state({1e7, 0});
 
     // A third of an element of sliding: slave points project inside master
     // segments, away from vertices (where the pairing is not smooth).
-    const AnalyticSolution analytic(parameters.mesh, parameters.materials);
+    const AnalyticSolution analytic(
+      parameters.scenario_entries<Ssnp152::RingParameters>(),
+      parameters.materials.plane);
     const double           angle = 2 * numbers::PI / 12 / 3;
     const double           slide = vertex ? 0.0 : angle;
     Vector<double>        &u     = problem.current_solution();
@@ -197,7 +201,7 @@ namespace
     // measures but the force floor, which needs the tangent.
     {
       problem.assemble_newton_system(ContactInterface::Pairing::search,
-                                     RingContactProblem::Assembly::residual);
+                                     ContactProblem::Assembly::residual);
       const ResidualMeasure measure = problem.residual_measure();
       double                largest = 0, difference = 0;
       for (types::global_dof_index i = 0; i < u.size(); ++i)
@@ -244,7 +248,7 @@ namespace
       for (const auto i : DoFTools::extract_boundary_dofs(
              problem.get_dof_handler(),
              Components::displacement_mask(),
-             {static_cast<types::boundary_id>(Ids::outer_boundary)}))
+             {static_cast<types::boundary_id>(Ssnp152::Ids::outer_boundary)}))
         columns.push_back(i);
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());

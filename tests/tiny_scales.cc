@@ -45,7 +45,7 @@ namespace
       run_problem("a", RingContactTests::modelisation('a', extra.str()));
     std::vector<double> r;
     for (const auto &row : history)
-      r.push_back(row.pressure_A / row.analytic);
+      r.push_back(row.value("pressure_A") / row.value("analytic"));
     return r;
   }
 
@@ -103,7 +103,7 @@ main()
           << "\nend\n";
       const auto history = run_problem("blocks", prm.str());
       // The first check's quantity: the contact pressure at (0.3, 0).
-      const double pressure = history.back().quantities.at(0);
+      const double pressure = history.back().trailing.at(0).second;
       check(std::abs(pressure / p - 1) < 1e-10,
             "patch test at p = " + std::to_string(p) + ": pressure / p = " +
               std::to_string(pressure / p));

@@ -1,0 +1,37 @@
+// @sect3{Diagnostics: surfaces that interpenetrate before any load}
+//
+// The contact pushes them apart in the first step, a load that the problem
+// does not state (a curved slave against a faceted master starts inside it
+// by up to the sagitta, which is 2 % of the element size at 40 elements
+// around a circle; at E / p = 100 that is several times the pressure
+// sought). Measured by each node's mean gap g~_k / w_k in the reference
+// state; said when deeper than 1e-4 of the slave's shortest segment
+// (round-off of touching surfaces is 1e-16 of it). The caller leaves out
+// the pairs with a body held by the contact only (rigid_body_modes.h): its
+// motion absorbs the overlap, which is then a way to start in contact (the
+// Hertz problem's cylinder).
+#ifndef ring_contact_diagnostics_initial_interpenetration_h
+#define ring_contact_diagnostics_initial_interpenetration_h
+
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/contact/contact_interface.h>
+
+#include <ostream>
+
+namespace RingContact
+{
+  namespace Diagnostics
+  {
+    using namespace dealii;
+
+    /// Warn in `log` when the surfaces of `contact` interpenetrate at
+    /// `solution` (the reference state).
+    void
+    report_initial_interpenetration(ContactInterface     &contact,
+                                    const Vector<double> &solution,
+                                    std::ostream         &log);
+  } // namespace Diagnostics
+} // namespace RingContact
+
+#endif

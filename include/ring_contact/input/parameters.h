@@ -1,0 +1,344 @@
+// The run-time parameters of the program: one struct per subsection of the
+// `.prm` file that every problem reads, each with `add_parameters()`, which
+// declares every entry once, bound to the member it sets, with its default,
+// pattern, units, documentation and checks (ParameterChecks::Subsection,
+// after deal.II's ParameterHandler::add_parameter()), and, where entries
+// depend on each other, `finish()`, the checks once the whole file is read.
+// Units are SI throughout: metres, pascals.
+//
+// What differs between problems is the scenario's (Problem/Scenario): each
+// scenario declares its own entries (ScenarioParameters), and an entry that
+// only another scenario reads is refused, not silently ignored.
+#ifndef ring_contact_input_parameters_h
+#define ring_contact_input_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <ring_contact/contact/contact_quadrature.h>
+#include <ring_contact/input/parameter_file.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// Where the mesh comes from.
+  enum class MeshSource
+  {
+    generated, ///< built in code by the scenario
+    gmsh_file  ///< read from a gmsh mesh (.msh) or made by a gmsh script (.geo)
+  };
+
+  /// Kinematics of the bulk.
+  enum class Kinematics
+  {
+    finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
+    small_strain,  ///< linear elasticity
+    /// Hencky: the linear law on the logarithmic strain ln(C) / 2
+    /// (GDEF_LOG)
+    logarithmic_strain,
+    /// compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
+    /// (ln J)^2
+    neo_hookean
+  };
+
+  /// The kinematics by their names in a .prm.
+  inline std::vector<std::pair<std::string, Kinematics>>
+  kinematics_choices()
+  {
+    return {{"finite strain", Kinematics::finite_strain},
+            {"small strain", Kinematics::small_strain},
+            {"logarithmic strain", Kinematics::logarithmic_strain},
+            {"neo-Hookean", Kinematics::neo_hookean}};
+  }
+
+  /// The 2d assumption.
+  enum class PlaneAssumption
+  {
+    plane_stress, ///< S33 = 0 (C_PLAN)
+    plane_strain  ///< E33 = 0 (D_PLAN)
+  };
+
+  /// Which contact pressure is reported (the unknown is always the Cauchy one).
+  enum class PressureMeasure
+  {
+    cauchy, ///< force per current length of the slave surface
+    nominal ///< force per reference length of the slave surface
+  };
+
+  /// The load programs: the pseudo-times of the steps and the load state at
+  /// each (load_program.h).
+  enum class LoadProgramType
+  {
+    ramp,     ///< p(t) = p0 10^(t - 1.1) at t = k dt, no rotation
+    rotation, ///< p fixed, a boundary turned through s elements
+    steps     ///< given pseudo-times, the boundary data expressions of t
+  };
+
+  /// The linear solver of the Newton systems.
+  enum class LinearSolverType
+  {
+    automatic, ///< UMFPACK on one process, MUMPS on several
+    umfpack,   ///< SuiteSparse's UMFPACK (one process)
+    mumps,     ///< MUMPS through Trilinos Amesos (one or several processes)
+    iterative  ///< GMRES with a block preconditioner (AMG; see BlockSolver)
+  };
+
+  /// The quantity checked against a scenario's reference pressure
+  /// (subsection Checks).
+  enum class CheckedQuantity
+  {
+    pressure_at_A,     ///< contact pressure at the probe node A
+    l2_pressure_error, ///< relative L2 error of the pressure on the slave
+    pressure_spread    ///< (max - min) / reference over the slave nodes
+  };
+
+  struct MeshParameters
+  {
+    MeshSource  source;
+    std::string mesh_file; ///< absolute, resolved against the .prm's folder
+    unsigned int global_refinements;
+    /// Numbers handed to a .geo mesh file (gmsh's -setnumber), in order.
+    std::vector<std::pair<std::string, double>> geo_numbers;
+
+    /// Declare subsection Mesh, bound to these members.
+    void
+    add_parameters(ParameterHandler &prm);
+    /// Resolve the mesh file against `prm_folder`; check the entries
+    /// against each other.
+    void
+    finish(const std::string &prm_folder);
+  };
+
+  struct MaterialParameters
+  {
+    Kinematics      kinematics;
+    PlaneAssumption plane;
+
+    void
+    add_parameters(ParameterHandler &prm);
+  };
+
+  struct FiniteElementParameters
+  {
+    unsigned int multiplier_degree;
+    unsigned int mapping_degree; ///< 0: isoparametric (each body's degree)
+    bool         reduced_integration;
+
+    void
+    add_parameters(ParameterHandler &prm);
+  };
+
+  struct ContactParameters
+  {
+    unsigned int                   slave_boundary_id;
+    unsigned int                   master_boundary_id;
+    std::vector<IntegrationScheme> schemes;
+    bool                           smooth_master_normals;
+    double                         complementarity_constant; ///< 0: automatic
+    double                         friction_coefficient;     ///< mu; 0: none
+    PressureMeasure                reported_pressure;
+    Point<2>                       probe_point;
+
+    void
+    add_parameters(ParameterHandler &prm);
+    /// Slave and master differ.
+    void
+    finish() const;
+  };
+
+  struct LoadParameters
+  {
+    LoadProgramType program;
+    double          reference_pressure; ///< p0 of the ramp
+    unsigned int    ramp_steps;
+    double          time_step;
+    double          rotation_pressure;
+    unsigned int    rotation_steps;
+    double          rotation_elements; ///< final s
+    /// Program = steps: the pseudo-time at the end of each step.
+    std::vector<double> time_points;
+    /// Program = steps: n equal steps when no time points are given.
+    unsigned int number_of_steps;
+    /// The most steps of a load program.
+    static constexpr int max_steps = 100000;
+
+    void
+    add_parameters(ParameterHandler &prm);
+    /// The equal steps when no time points are given; the ramp's last
+    /// pressure a number.
+    void
+    finish();
+  };
+
+  struct NewtonParameters
+  {
+    unsigned int     max_iterations;
+    double           tolerance;
+    unsigned int     max_step_cuts;
+    bool             extrapolate;
+    bool             verbose;
+    LinearSolverType linear_solver;
+    /// GMRES's relative residual (Linear solver = iterative).
+    double linear_tolerance;
+
+    void
+    add_parameters(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string  directory; ///< resolved; empty entry: results/<prm name>
+    unsigned int vtu_interval;
+    unsigned int vtu_subdivisions;
+    bool         write_history;
+    bool         print_timing;
+    bool         print_steps;
+
+    void
+    add_parameters(ParameterHandler &prm);
+    /// An empty directory becomes results/<prm_name>.
+    void
+    finish(const std::string &prm_name);
+  };
+
+  /// The checks against a scenario's reference pressure (subsection
+  /// Checks, the original's TEST_RESU): for the scenarios that know the
+  /// pressure everywhere on the slave surface.
+  struct CheckParameters
+  {
+    CheckedQuantity           quantity;
+    bool                      every_step;
+    std::vector<unsigned int> steps; ///< when not every step
+    double                    tolerance;
+
+    void
+    add_parameters(ParameterHandler &prm);
+  };
+
+  struct Parameters;
+
+  /// The entries of one scenario: declared with every other (a file names
+  /// its scenario anywhere in it), read only when the file chooses that
+  /// scenario (an entry of another one is refused).
+  class ScenarioParameters
+  {
+  public:
+    virtual ~ScenarioParameters() = default;
+
+    /// Declare the scenario's entries, each recorded in `declared` (pass
+    /// it to ParameterChecks::Subsection).
+    virtual void
+    add_parameters(ParameterHandler &prm) = 0;
+
+    /// Once the file is read with this scenario chosen: check the entries
+    /// against each other and against the common ones (throw a
+    /// ParameterError that names the entry).
+    virtual void
+    finish(Parameters &parameters) = 0;
+
+    /// Entries the scenario had elsewhere before: "Subsection/Entry" ->
+    /// where it is now, for the message that meets an old file (none by
+    /// default).
+    virtual std::map<std::string, std::string>
+    moved_entries() const
+    {
+      return {};
+    }
+
+    /// The contact pairs after the one of subsection Contact (none by
+    /// default): slave and master boundary tags.
+    virtual std::vector<std::pair<unsigned int, unsigned int>>
+    more_contact_pairs() const
+    {
+      return {};
+    }
+
+    /// "Subsection/Entry" of every entry the scenario declared.
+    std::vector<std::string> declared;
+
+    /// The entries of the common subsections that only some scenarios read
+    /// (Parameters::restricted_entries()) and this one does.
+    std::set<std::string> reads;
+  };
+
+  /// All parameters of one run.
+  struct Parameters
+  {
+    /// Every scenario's entries, declared (see ScenarioParameters).
+    Parameters();
+
+    std::string             prm_file;
+    /// Problem/Scenario: the name of a registered scenario (scenario.h).
+    std::string             scenario;
+    MeshParameters          mesh;
+    MaterialParameters      materials;
+    FiniteElementParameters finite_elements;
+    ContactParameters       contact;
+    LoadParameters          load;
+    NewtonParameters        newton;
+    OutputParameters        output;
+    CheckParameters         checks;
+
+    /// Each registered scenario's entries, by its name.
+    std::map<std::string, std::shared_ptr<ScenarioParameters>>
+      scenario_parameters;
+
+    /// The entries of the chosen scenario, as their type.
+    template <typename ScenarioEntries>
+    const ScenarioEntries &
+    scenario_entries() const
+    {
+      return dynamic_cast<const ScenarioEntries &>(
+        *scenario_parameters.at(scenario));
+    }
+
+    /// The contact pairs (slave and master boundary tags): subsection
+    /// Contact's, then the scenario's others.
+    std::vector<std::pair<unsigned int, unsigned int>>
+    contact_pairs() const;
+
+    /// Declare every entry of the parameter file, bound to these members.
+    /// The members must stay where they are while `prm` is used (its
+    /// actions refer to them).
+    void
+    add_parameters(ParameterHandler &prm);
+
+    /// Read and validate a parameter file; throws with a one-line
+    /// explanation that names the file, the line and the entry on any
+    /// problem.
+    void
+    read(const std::string &filename);
+
+    /// The message of a ParameterError with the file and line that set
+    /// the entry (or the note that it is its default).
+    std::string
+    located(const ParameterError &e) const;
+
+    /// Where each entry the file sets was set ("Subsection/Entry").
+    std::map<std::string, EntryOrigin> origins;
+
+    /// The scenarios that read an entry ("Subsection/Entry"), for the
+    /// entries only some of them read; an entry not listed is read by all.
+    std::map<std::string, std::set<std::string>> readers;
+
+    /// The entries of the common subsections that only some scenarios
+    /// read: the load programs' own and the checks against a reference
+    /// pressure (ScenarioParameters::reads says who reads them).
+    static std::vector<std::string>
+    restricted_entries();
+
+    /// Print every entry with default and documentation.
+    static void
+    print_reference(std::ostream &out, bool as_prm);
+  };
+} // namespace RingContact
+
+#endif

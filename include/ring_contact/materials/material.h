@@ -1,0 +1,165 @@
+// The material law of each body, behind one interface: a law maps the
+// displacement gradient H = Grad u to the stress conjugate to it in the
+// virtual work (the first Piola-Kirchhoff stress P, or sigma in small
+// strain) and its consistent tangent A = dP/dH, and gives the Cauchy stress
+// for output. Four laws, each in its own file:
+// - Saint Venant-Kirchhoff in total Lagrangian form (Green-Lagrange strain
+//   E, second Piola-Kirchhoff stress S, the linear isotropic law;
+//   saint_venant_kirchhoff.cc), the original's GROT_GDEP;
+// - small-strain linear elasticity (linear_elasticity.cc);
+// - Hencky: the linear law on the logarithmic strain ln(C) / 2, the
+//   current Code_Aster's GDEF_LOG (logarithmic_strain.cc);
+// - compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
+//   (ln J)^2, the law of the published large-sliding benchmarks
+//   (neo_hookean.cc).
+// Each in plane stress (the out-of-plane stress zero) or plane strain (E33 =
+// 0). Adding a law is
+// one new file with its class and one line in make_material_law()
+// (material.cc).
+#ifndef ring_contact_materials_material_h
+#define ring_contact_materials_material_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <ring_contact/input/parameters.h>
+
+#include <memory>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// The elastic constants of an isotropic body and its 2d assumption.
+  struct ElasticConstants
+  {
+    ElasticConstants(const double          youngs_modulus,
+                     const double          poissons_ratio,
+                     const PlaneAssumption plane);
+
+    double          youngs_modulus; ///< E [Pa]
+    double          poissons_ratio; ///< nu [-]
+    PlaneAssumption plane;
+    /// Lamé constants of the in-plane law: in plane stress lambda* = 2
+    /// lambda mu / (lambda + 2 mu), which follows from S33 = 0.
+    double lambda, mu;
+    /// The 3d lambda (the out-of-plane strain or stress).
+    double lambda_3d;
+  };
+
+  /// What the assembly and the output need of a material law.
+  class MaterialLaw
+  {
+  public:
+    virtual ~MaterialLaw() = default;
+
+    /// The stress conjugate to Grad u in the virtual work.
+    virtual Tensor<2, 2>
+    stress(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL),
+    /// which has the major symmetry A_iJkL = A_kLiJ of a hyperelastic law
+    /// (the assembly computes the upper triangle of the cell matrices).
+    virtual void
+    stress_and_tangent(const Tensor<2, 2> &grad_u,
+                       Tensor<2, 2>       &P,
+                       Tensor<4, 2>       &A) const = 0;
+
+    /// In-plane Cauchy stress. By default that of a finite-strain law,
+    /// sigma = P F^T / det F, det F including the thickness stretch F33 of
+    /// plane stress; small strain overrides it (sigma is its stress).
+    virtual Tensor<2, 2>
+    cauchy_stress(const Tensor<2, 2> &grad_u) const;
+
+    /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress).
+    virtual double
+    out_of_plane_stress(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Out-of-plane stretch F33 (1 in plane strain and small strain).
+    virtual double
+    thickness_stretch(const Tensor<2, 2> &grad_u) const = 0;
+  };
+
+  /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
+  /// linear elasticity for small strain, Hencky for logarithmic strain,
+  /// and the neo-Hookean law.
+  std::shared_ptr<const MaterialLaw>
+  make_material_law(const ElasticConstants &constants,
+                    const Kinematics        kinematics);
+
+  /// Saint Venant-Kirchhoff (saint_venant_kirchhoff.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_saint_venant_kirchhoff(const ElasticConstants &constants);
+
+  /// Small-strain linear elasticity (linear_elasticity.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_linear_elasticity(const ElasticConstants &constants);
+
+  /// Hencky, the linear law on the logarithmic strain
+  /// (logarithmic_strain.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_logarithmic_strain(const ElasticConstants &constants);
+
+  /// The compressible neo-Hookean law (neo_hookean.cc).
+  std::shared_ptr<const MaterialLaw>
+  make_neo_hookean(const ElasticConstants &constants);
+
+  /// A body's material: its constants and its law, a value that can be
+  /// copied and stored (the law is shared, it has no state).
+  class Material
+  {
+  public:
+    /// E [Pa], nu [-], the 2d assumption and the kinematics, which chooses
+    /// the law.
+    Material(const double          youngs_modulus,
+             const double          poissons_ratio,
+             const PlaneAssumption plane,
+             const Kinematics      kinematics);
+
+    Tensor<2, 2>
+    stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->stress(grad_u);
+    }
+
+    void
+    stress_and_tangent(const Tensor<2, 2> &grad_u,
+                       Tensor<2, 2>       &P,
+                       Tensor<4, 2>       &A) const
+    {
+      law->stress_and_tangent(grad_u, P, A);
+    }
+
+    Tensor<2, 2>
+    cauchy_stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->cauchy_stress(grad_u);
+    }
+
+    double
+    out_of_plane_stress(const Tensor<2, 2> &grad_u) const
+    {
+      return law->out_of_plane_stress(grad_u);
+    }
+
+    double
+    thickness_stretch(const Tensor<2, 2> &grad_u) const
+    {
+      return law->thickness_stretch(grad_u);
+    }
+
+    /// The von Mises stress of the Cauchy stress, sigma_33 included.
+    double
+    von_mises_stress(const Tensor<2, 2> &grad_u) const;
+
+    double          youngs_modulus;
+    double          poissons_ratio;
+    PlaneAssumption plane;
+    Kinematics      kinematics;
+
+  private:
+    std::shared_ptr<const MaterialLaw> law;
+  };
+} // namespace RingContact
+
+#endif

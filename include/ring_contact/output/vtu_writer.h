@@ -1,0 +1,88 @@
+// The results for ParaView: VTU files of the bodies (displacement, Cauchy
+// and von Mises stress, the body of each cell, the contact pressure) and of
+// the slave surfaces (contact pressure and gap), and the PVD records that
+// list them step by step.
+#ifndef ring_contact_output_vtu_writer_h
+#define ring_contact_output_vtu_writer_h
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/materials/material.h>
+
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// VTU of the rings (displacement, Cauchy stress, ring id, contact
+  /// pressure) and of the slave surface (contact pressure and gap), and the
+  /// PVD records that list them. Every file is written under a temporary
+  /// name and renamed, the VTU files first, then the PVD file that lists
+  /// them: a PVD on disk lists only whole VTU files.
+  class VtuWriter
+  {
+  public:
+    /// With several processes in `communicator`, write() is collective:
+    /// each process writes the cells of its subdomain as a piece
+    /// (solution-<tag>-<step>.<process>.vtu), process 0 the .pvtu that
+    /// lists them, the slave surface and the .pvd files; a file that one
+    /// process cannot write is an error of all.
+    VtuWriter(const std::string &directory,
+              const std::string &tag,
+              const unsigned int subdivisions,
+              const MPI_Comm     communicator = MPI_COMM_SELF);
+
+    void
+    write(const DoFHandler<2>                    &dof_handler,
+          const hp::MappingCollection<2>         &mapping,
+          const Vector<double>                   &solution,
+          const Vector<double>                   &nodal_gap,
+          const std::map<unsigned int, Material> &materials,
+          const std::set<types::boundary_id>     &slave_boundary_ids,
+          const unsigned int                      step,
+          const double                            time);
+
+  private:
+    /// The bodies' .vtu file, or this process's piece of it; the name the
+    /// .pvd lists.
+    std::string
+    write_bulk(const DataOut<2> &data_out, const std::string &bulk_stem);
+    void
+    write_slave_surface(const DoFHandler<2>                &dof_handler,
+                        const hp::MappingCollection<2>     &mapping,
+                        const Vector<double>               &solution,
+                        const Vector<double>               &nodal_gap,
+                        const std::set<types::boundary_id> &slave_boundary_ids,
+                        const unsigned int                  step,
+                        const DataOutBase::VtkFlags        &flags);
+    template <int patch_dim>
+    void
+    write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
+                   const std::string                    &filename) const;
+    static void
+    record(std::vector<std::pair<double, std::string>> &records,
+           const double                                 time,
+           const std::string                           &name);
+    static std::string
+    pvd_contents(const std::vector<std::pair<double, std::string>> &records);
+
+    const std::string                           directory;
+    const std::string                           tag;
+    const unsigned int                          subdivisions;
+    const MPI_Comm                              communicator;
+    std::vector<std::pair<double, std::string>> bulk_records;
+    std::vector<std::pair<double, std::string>> surface_records;
+  };
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,538 @@
+// @sect3{The ContactProblem class}
+//
+// The main class: elastic bodies in contact, for one contact integration
+// scheme. Its public face is a constructor and run(), as a deal.II
+// tutorial's; the rest are its chapters, one source file each, in the order
+// the story runs:
+// - problem/setup.cc: the mesh (the scenario's), the finite elements
+//   (displacement on every body, contact pressure on the slave surfaces)
+//   and their degrees of freedom, the contact interfaces;
+// - problem/constraints.cc: the imposed displacements as constraints of the
+//   Newton updates;
+// - problem/assembly.cc: the bulk's virtual work and its tangent, the
+//   boundary loads, and the contact terms (contact/);
+// - problem/newton.cc: the semi-smooth Newton method, its convergence
+//   measures, the line search, the load step cut while Newton fails;
+// - problem/postprocessing.cc: what a converged step reports (history row,
+//   invariants, VTU files);
+// - problem/contact_problem.cc: the constructor and run().
+// The problem posed (mesh, bodies, loads, what to report and check) is the
+// scenario's (scenarios/scenario.h); the class implements SolutionState,
+// what a scenario may read of a converged state.
+#ifndef ring_contact_problem_contact_problem_h
+#define ring_contact_problem_contact_problem_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/contact/contact_interface.h>
+#include <ring_contact/contact/cyclic_symmetry.h>
+#include <ring_contact/diagnostics/equilibrium.h>
+#include <ring_contact/input/parameters.h>
+#include <ring_contact/linear_algebra/linear_system.h>
+#include <ring_contact/materials/material.h>
+#include <ring_contact/output/history.h>
+#include <ring_contact/output/verdicts.h>
+#include <ring_contact/output/vtu_writer.h>
+#include <ring_contact/problem/load_program.h>
+#include <ring_contact/problem/solution_state.h>
+#include <ring_contact/scenarios/scenario.h>
+
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// The measures of one Newton iterate that decide convergence, each
+  /// relative to the problem's own scales (see residual_measure()).
+  struct ResidualMeasure
+  {
+    /// |R| of the free displacement rows over the reaction forces.
+    double force = 0;
+    /// The round-off floor of that ratio: what evaluating the residual in
+    /// double precision can resolve at the current state.
+    double force_floor = 0;
+    /// Largest |gap residual| of an active contact row, in metres, over the
+    /// largest displacement; the largest |lambda| of an open row over the
+    /// largest |lambda|.
+    double gap = 0;
+    /// The round-off floor of that ratio (largest over the rows).
+    double gap_floor = 0;
+    /// True while nothing has moved (the first iteration from rest): gap
+    /// is then a length over no displacement, not a ratio worth showing.
+    bool at_rest = false;
+    /// Euclidean norm of the free rows: the merit of the line search.
+    double merit = 0;
+    /// False when the system was assembled without its tangent: the bulk's
+    /// part of force_floor (from the cell matrices) is then unknown and
+    /// force_floor is 0, so that converged() errs only towards "not yet".
+    bool force_floor_known = true;
+
+    /// Both groups below max(tolerance, their floor).
+    bool
+    converged(const double tolerance) const;
+    /// Not converged(), but might be once the force floor is known.
+    bool
+    undecided(const double tolerance) const;
+  };
+
+  class ContactProblem : public SolutionState
+  {
+  public:
+    /// Under MPI (`communicator` with several processes) every process
+    /// constructs the problem and runs it: each assembles its own cells and
+    /// contact points, the linear solver works on all of them together, and
+    /// every process holds the whole state (see LinearSystem). Only process
+    /// 0's `log` should be shown.
+    ContactProblem(const Parameters        &parameters,
+                   const IntegrationScheme &scheme,
+                   std::ostream            &log,
+                   const MPI_Comm           communicator = MPI_COMM_WORLD);
+
+    /// Run the whole load program. Returns false if a step could not be
+    /// solved (the history then ends at the last converged step).
+    bool
+    run();
+
+    /// One row per converged step.
+    const std::vector<HistoryRow> &
+    history() const
+    {
+      return history_rows;
+    }
+
+    /// The columns of history.csv (the solver's and the scenario's).
+    std::vector<std::string>
+    history_columns() const;
+
+    /// The verdicts of the scenario's checks over the history.
+    std::vector<Verdict>
+    verdicts() const;
+
+    /// Number of steps of the load program.
+    unsigned int
+    n_steps() const;
+
+    /// Number of degrees of freedom (after the set-up).
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    /// Called once, when the problem is set up and its checks can be
+    /// evaluated, before anything is written: the run's input has then
+    /// been found good (an earlier run's results may go).
+    void
+    set_start_observer(std::function<void()> observer)
+    {
+      start_observer = std::move(observer);
+    }
+
+    /// Called after each converged step, once its results are complete
+    /// (history row, VTU files); the run stops after that step when it
+    /// returns false (a run asked to stop ends with whole files).
+    void
+    set_step_observer(std::function<bool(const HistoryRow &)> observer)
+    {
+      step_observer = std::move(observer);
+    }
+
+    /// @name What a scenario may read (SolutionState)
+    /// @{
+    const DoFHandler<2> &
+    get_dof_handler() const override
+    {
+      return dof_handler;
+    }
+    const hp::MappingCollection<2> &
+    get_mapping() const override
+    {
+      return mapping_collection;
+    }
+    const Vector<double> &
+    get_solution() const override
+    {
+      return solution;
+    }
+    const LoadState &
+    load_state() const override
+    {
+      return current_load;
+    }
+    std::vector<const ContactInterface *>
+    contact_interfaces() const override;
+    types::global_dof_index
+    contact_node_nearest_to(const Point<2> &point) const override;
+    const ContactInterface &
+    contact_of(const types::global_dof_index node) const override
+    {
+      return *contacts[pair_of_node.at(node)];
+    }
+    std::vector<types::global_dof_index>
+    contact_nodes() const override;
+    double
+    reported_pressure(const types::global_dof_index node) const override;
+    NodalForces
+    nodal_forces() const override;
+    const std::map<types::boundary_id, Tensor<1, 2>> &
+    applied_resultants() const override
+    {
+      return applied_resultant;
+    }
+    /// @}
+
+    /// What an assembly computes: the right-hand side -R and the tangent
+    /// (for a Newton update), or -R alone, which is what a convergence test
+    /// or a line search's trial needs. The contact rows and columns are
+    /// whole in both.
+    enum class Assembly
+    {
+      residual_and_tangent,
+      residual
+    };
+
+    /// The tests' view of the inside (problem/inspector.h).
+    friend class ContactProblemInspector;
+
+  private:
+    /// @name Set-up (setup.cc)
+    /// @{
+    void
+    setup();
+    void
+    make_grid();
+    void
+    partition_cells();
+    void
+    setup_system();
+    void
+    make_finite_elements();
+    void
+    distribute_dofs();
+    void
+    make_linear_system();
+    void
+    make_contact_interfaces();
+    void
+    make_sparsity_pattern();
+    /// @}
+
+    /// @name Constraints (constraints.cc)
+    /// @{
+    void
+    make_constraints();
+    void
+    add_constraints(
+      AffineConstraints<double>                       &target,
+      const std::map<types::global_dof_index, double> &boundary_increment,
+      const std::vector<double>                       &normal_increment,
+      std::vector<bool>                               *fixed_dofs = nullptr);
+    bool
+    make_lifting_constraints();
+    double
+    normal_constrained_value(const unsigned int    k,
+                             const Vector<double> &u) const;
+    void
+    set_boundary_target();
+    /// Set the boundary displacements of a load state as the target of the
+    /// next Newton solve: its first update imposes them (see
+    /// make_lifting_constraints()), the solution is not changed here.
+    void
+    apply_boundary_motion(const LoadState &load);
+    const AffineConstraints<double> &
+    update_constraints() const
+    {
+      return lifting ? lifting_constraints : constraints;
+    }
+    /// @}
+
+    /// @name Assembly (assembly.cc)
+    /// @{
+    void
+    store_reference_geometry();
+    /// Pair, choose the active set and assemble the tangent and the
+    /// right-hand side -R at the current solution; returns the number of
+    /// contact nodes whose status changed.
+    unsigned int
+    assemble_newton_system(const ContactInterface::Pairing pairing =
+                             ContactInterface::Pairing::search,
+                           const Assembly what = Assembly::residual_and_tangent);
+    void
+    assemble_system(const Assembly what = Assembly::residual_and_tangent);
+    void
+    assemble_contact_terms();
+    void
+    assemble_bulk(const bool tangent);
+    void
+    add_local_system(const FullMatrix<double>                   &matrix,
+                     const Vector<double>                       &rhs,
+                     const std::vector<types::global_dof_index> &dofs,
+                     Vector<double>                             &force,
+                     const unsigned int cell = numbers::invalid_unsigned_int);
+    void
+    assemble_boundary_loads();
+    /// @}
+
+    /// @name Newton's method and the load steps (newton.cc)
+    /// @{
+    ResidualMeasure
+    residual_measure() const;
+    bool
+    solve_linear_system(Vector<double> &newton_update);
+    /// Why the factorization of the tangent may need much memory (the
+    /// contact surfaces' relative mesh sizes), for the error that says so.
+    std::string
+    describe_fill_in() const;
+    /// The pairing at an accepted Newton iterate: the search, or, once the
+    /// pairing is held, the held partners stopped at their segments' ends.
+    ContactInterface::Pairing
+    accepted_pairing() const;
+    /// A signal asked the run to stop (on any process).
+    bool
+    stop_requested() const;
+    bool
+    solve_newton_step(unsigned int &iterations, double &final_residual);
+    /// A signal, or inverted elements: the iteration must not go on.
+    bool
+    must_stop(const unsigned int it);
+    /// The update applied (whole, or through the line search); false when
+    /// the step fails.
+    bool
+    take_update(const Vector<double>  &newton_update,
+                const ResidualMeasure &measure,
+                const Assembly         next,
+                unsigned int          &n_changed);
+    void
+    print_newton_iteration(const unsigned int     it,
+                           const ResidualMeasure &measure,
+                           const unsigned int     n_changed) const;
+    bool
+    line_search(const Vector<double>  &newton_update,
+                const ResidualMeasure &before,
+                const Assembly         assembly,
+                unsigned int          &n_changed,
+                double                &step_length);
+    /// The predictor of a load step: the factor of the last increment to
+    /// extrapolate (0: none).
+    double
+    extrapolation_factor(const double t_next) const;
+    bool
+    solve_load_step(const unsigned int step);
+    /// @}
+
+    /// @name Postprocessing (postprocessing.cc)
+    /// @{
+    unsigned int
+    n_contact_nodes() const;
+    unsigned int
+    n_active_nodes() const;
+    void
+    postprocess_step(const unsigned int step,
+                     const unsigned int iterations,
+                     const unsigned int cuts,
+                     const double       wall_time);
+    /// The invariants of a converged state into `row` (equilibrium.h);
+    /// false if the state cannot be trusted (see unbalanced_forces).
+    bool
+    measure_balance_of_forces(HistoryRow &row);
+    void
+    output_results(const unsigned int step);
+    /// The diagnostics before the first step (diagnostics/): the rigid
+    /// motions that only the contact holds, surfaces that interpenetrate.
+    void
+    diagnose_start();
+    /// @}
+
+    // @sect4{The data}
+
+    const Parameters        parameters;
+    const IntegrationScheme scheme;
+    std::ostream           &log;
+    const MPI_Comm          communicator;
+    /// The processes, and this one (its cells are the subdomain of this
+    /// number; on one process, all of them).
+    const unsigned int n_processes, this_process;
+
+    /// The problem posed: bodies, boundary data, what to report.
+    const std::unique_ptr<const Scenario> scenario;
+    const std::vector<Body>               bodies;
+    const std::vector<BoundaryLoad>       boundary_loads;
+    const LoadProgram                    &load_program;
+    std::map<unsigned int, Material>      materials; ///< by material id
+
+    Triangulation<2>                 triangulation;
+    DoFHandler<2>                    dof_handler;
+    hp::FECollection<2>              fe_collection;
+    hp::MappingCollection<2>         mapping_collection;
+    hp::QCollection<2>               q_collection;
+    const FEValuesExtractors::Vector displacement;
+    /// The body (its index in `bodies`) of a material id, and of an
+    /// element of fe_collection (the bodies', then the slave layer's).
+    std::map<types::material_id, unsigned int> fe_index_of;
+    std::vector<unsigned int>                  body_of_fe_index;
+    /// The element of the slave layer of each slave body (setup_system()).
+    std::map<types::material_id, unsigned int> layer_of;
+
+    /// One interface per contact pair (subsection Contact first).
+    std::vector<std::unique_ptr<ContactInterface>> contacts;
+    /// The bodies that some rigid motion leaves held by the contact only.
+    std::set<types::material_id> held_by_contact;
+    /// The pair of each contact node (multiplier dof).
+    std::map<types::global_dof_index, unsigned int> pair_of_node;
+    /// The body (material id) of each boundary tag.
+    std::map<types::boundary_id, types::material_id> body_of_boundary;
+    /// Cyclic symmetry: the sector, the nodes of its end side and their
+    /// images.
+    CyclicSymmetry::Sector                sector;
+    std::vector<CyclicSymmetry::NodePair> cyclic_pairs;
+
+    /// Homogeneous constraints of a Newton update: the imposed
+    /// displacements, zero multiplier off the slave surfaces.
+    AffineConstraints<double> constraints;
+    std::vector<bool>         is_dirichlet;
+    std::vector<bool>         is_multiplier;
+    /// The unknowns whose rows this process stores (all on one process).
+    IndexSet locally_owned_dofs;
+    /// The tangent, the right-hand side -R and their solver.
+    std::unique_ptr<LinearSystem> system;
+    /// The nodal forces of the bulk (whole on every process).
+    Vector<double> internal_force;
+    /// The boundary loads' nodal forces, for the scale of the residual.
+    Vector<double> external_force;
+    /// The displacement unknowns the scenario imposes.
+    std::vector<types::global_dof_index> imposed_dofs;
+    /// The unknowns whose reaction a support takes (NodalForces).
+    std::vector<bool> supported;
+    /// The integral of the applied loads on each loaded boundary, from the
+    /// last assembly.
+    std::map<types::boundary_id, Tensor<1, 2>> applied_resultant;
+    /// Why the last converged state cannot be trusted.
+    std::string unbalanced_forces;
+
+    /// The constraints of the first update of a load step: the same lines,
+    /// with the remaining boundary increment as inhomogeneity (step-44).
+    AffineConstraints<double> lifting_constraints;
+    /// Assemble and solve with lifting_constraints.
+    bool lifting = false;
+    /// The imposed displacements at the current load state.
+    std::map<types::global_dof_index, double> boundary_target;
+    /// The normal displacements N . u = g of the scenario, each as the
+    /// constraint u_a = g / N_a - (N_b / N_a) u_b on the component a with
+    /// the larger |N_a| (its values g at the current load state).
+    std::vector<NormalDisplacement> normal_target;
+    std::vector<unsigned int>       normal_component;
+
+    /// Per row, the sum of the magnitudes of the terms that make up the
+    /// residual, sum_j |K_ij| |z_j| + |R_i| with z the displacement (bulk)
+    /// or the position X + u and the multiplier (contact): machine epsilon
+    /// times this is the noise of evaluating R_i.
+    Vector<double> residual_magnitude;
+    /// residual_magnitude at the last assembly with the tangent.
+    Vector<double> tangent_magnitude;
+    unsigned int   n_inverted = 0;
+    double         min_det_F  = 1;
+    /// Whether the system last assembled has its tangent (see Assembly).
+    bool tangent_assembled = false;
+    /// The reference geometry of this process's cells for the assembly
+    /// (see store_reference_geometry()).
+    struct ReferenceGeometry
+    {
+      /// Per finite element of the collection: the component of each of
+      /// its unknowns; its displacement unknowns, the index of each one's
+      /// scalar shape function in its base element, and their number; the
+      /// number of quadrature points.
+      struct Layout
+      {
+        std::vector<unsigned int> component, u_dofs, base;
+        unsigned int              n_bases    = 0;
+        unsigned int              n_q_points = 0;
+      };
+      std::vector<Layout> layout;
+      /// Per active cell (of this process), where its values start in JxW
+      /// and in gradients (n_bases gradients per quadrature point).
+      std::vector<std::pair<std::size_t, std::size_t>> start;
+      std::vector<double>                              JxW;
+      std::vector<Tensor<1, 2>>                        gradients;
+    } reference_geometry;
+    /// Whether the iterate after a Newton update is expected to converge,
+    /// from this run's record. Such an iterate is assembled without its
+    /// tangent first: the test of convergence does not need it, and after
+    /// the last update of a load step it would not be used. One that does
+    /// not converge needs it for its own update, and is assembled again.
+    struct ConvergenceRecord
+    {
+      /// Whether the last update that imposed a boundary increment led to
+      /// a converged iterate.
+      bool lifting_converged = false;
+      /// r_k+1 / r_k^2 of the last other update, r the relative residual
+      /// (the larger of the force and gap measures): Newton's quadratic
+      /// rate, from which the next residual is forecast. None (infinite)
+      /// before the first.
+      double rate = std::numeric_limits<double>::infinity();
+
+      bool
+      expects(const bool   lifting,
+              const double residual,
+              const double tolerance) const
+      {
+        return lifting ? lifting_converged :
+                         rate * residual * residual <= tolerance;
+      }
+      void
+      record(const bool   lifting,
+             const double from,
+             const double to,
+             const bool   converged)
+      {
+        if (lifting)
+          lifting_converged = converged;
+        else if (from > 0 && std::isfinite(from) && std::isfinite(to))
+          rate = to / (from * from);
+      }
+    } convergence_record;
+    /// Linear solver = iterative: GMRES's iterations and solves in the run.
+    unsigned int linear_iterations = 0;
+    unsigned int linear_solves     = 0;
+    /// Why the last Newton solve stopped without converging.
+    std::string failure_reason;
+    /// The largest factorization's memory estimate said in the log.
+    double largest_estimate_said = 0;
+    /// The contact points keep their partners (pairing cycles).
+    bool           keep_partners = false;
+    Vector<double> solution;
+    Vector<double> previous_solution;
+    double         previous_time, current_time;
+    LoadState      current_load;
+
+    std::vector<HistoryRow>    history_rows;
+    std::unique_ptr<VtuWriter> vtu_writer;
+    TimerOutput                timer;
+
+    /// See set_start_observer() and set_step_observer().
+    std::function<void()>                   start_observer;
+    std::function<bool(const HistoryRow &)> step_observer;
+  };
+} // namespace RingContact
+
+#endif

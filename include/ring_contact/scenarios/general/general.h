@@ -1,0 +1,71 @@
+// @sect3{A general problem}
+//
+// Bodies of a gmsh model and everything else written in the parameter file
+// (problem_description.h): the pieces of the scenario that its files share.
+#ifndef ring_contact_scenarios_general_general_h
+#define ring_contact_scenarios_general_general_h
+
+#include <deal.II/grid/tria.h>
+
+#include <ring_contact/input/parameters.h>
+#include <ring_contact/problem/solution_state.h>
+#include <ring_contact/scenarios/general/boundary_resultants.h>
+#include <ring_contact/scenarios/general/problem_description.h>
+
+#include <memory>
+
+namespace RingContact
+{
+  namespace General
+  {
+    using namespace dealii;
+
+    /// Throw a one-line error if the mesh lacks what the problem needs:
+    /// every cell in one of the bodies, each body present, every boundary
+    /// tag that a condition, a check or a contact pair names present, the
+    /// slave and master surfaces each on one body and not the same one, the
+    /// multiplier degree at most the slave body's, and the slave surfaces
+    /// of two pairs apart.
+    void
+    check_bodies(const Triangulation<2> &triangulation,
+                 const Parameters       &parameters);
+
+    /// The quantities of the checks at a converged state.
+    class CheckedQuantities
+    {
+    public:
+      explicit CheckedQuantities(const ProblemParameters &problem);
+
+      /// The value of a check's quantity; throws a one-line error if it
+      /// cannot be evaluated (a point outside the mesh, a pressure point
+      /// off every slave surface).
+      double
+      value(const ProblemCheckParameters &check,
+            const SolutionState          &state) const;
+
+    private:
+      /// A traction's point on a slave surface, else a one-line error.
+      void
+      require_on_slave_surface(const ProblemCheckParameters &check,
+                               const SolutionState          &state,
+                               const types::global_dof_index nearest,
+                               const ContactSurface         &slave) const;
+      double
+      contact_half_width(const ProblemCheckParameters &check,
+                         const SolutionState          &state,
+                         const ContactSurface         &slave) const;
+      Tensor<1, 2>
+      resultant_force(const ProblemCheckParameters &check,
+                      const SolutionState          &state) const;
+      double
+      displacement(const ProblemCheckParameters &check,
+                   const SolutionState          &state) const;
+
+      const ProblemParameters &problem;
+      /// Built at the first resultant asked for (the mesh does not change).
+      mutable std::unique_ptr<BoundaryResultants> resultants;
+    };
+  } // namespace General
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,219 @@
+// A contact problem of two or more bodies written in the parameter file:
+// the bodies (the physical groups of a gmsh mesh, each with its material
+// and elements), the boundary conditions per boundary tag (imposed
+// displacement, traction, or pressure on the current configuration), and
+// checks of computed quantities against references, all as expressions of
+// x, y, the pseudo-time t and named constants (deal.II's FunctionParser,
+// muparser syntax). The contact pairs are subsection Contact and Contact
+// pair 2, 3, ..., the load program subsection 'Load program' with Program
+// = steps.
+//
+//   subsection Problem
+//     set Scenario  = general
+//     set Constants = R = 1, q = 1e6
+//   end
+//   subsection Body 1
+//     set Material id = 1
+//     set Young's modulus = 2e11
+//   end
+//   subsection Boundary condition 1
+//     set Boundary id = 3
+//     set Type        = traction
+//     set Value       = 0; -q * t
+//   end
+//   subsection Check 1
+//     set Quantity  = contact pressure
+//     set Point     = 0, 0
+//     set Reference = sqrt(...)
+//   end
+#ifndef ring_contact_scenarios_general_problem_description_h
+#define ring_contact_scenarios_general_problem_description_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <ring_contact/input/parameter_checks.h>
+#include <ring_contact/input/parameters.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  /// One body of a general problem: a physical group of the mesh.
+  struct BodyParameters
+  {
+    unsigned int material_id; ///< the physical group's tag
+    double       youngs_modulus;
+    double       poissons_ratio;
+    unsigned int degree; ///< displacement degree
+    /// The body's own kinematics; when the entry is empty, that of
+    /// Materials/Kinematics (`inherits_kinematics`).
+    Kinematics kinematics          = Kinematics::finite_strain;
+    bool       inherits_kinematics = true;
+
+    /// Declare the entries of a subsection Body k (entered), bound to
+    /// these members.
+    void
+    add_parameters(ParameterChecks::Subsection &s);
+  };
+
+  enum class BoundaryConditionType
+  {
+    none,         ///< the slot is not used
+    displacement, ///< imposed displacement components
+    traction,     ///< a dead load per reference length [N/m per unit thickness]
+    pressure      ///< p on the current configuration (follower) [Pa]
+  };
+
+  /// One boundary condition of a general problem, on one boundary tag.
+  struct BoundaryConditionParameters
+  {
+    BoundaryConditionType type = BoundaryConditionType::none;
+    unsigned int          boundary_id;
+    /// Displacement: components in polar form (u_r, u_theta about the
+    /// origin) instead of (u_x, u_y).
+    bool polar = false;
+    /// Displacement: which components are imposed (x/r, y/theta).
+    std::array<bool, 2> components = {{true, true}};
+    /// Displacement: only the normal component u . N is imposed (N the
+    /// outward unit normal of the reference boundary), the tangential one
+    /// is free: a roller on an inclined or curved boundary.
+    bool normal = false;
+    /// The expressions of x, y and t: displacement and traction two
+    /// (the components not imposed are not used), a normal displacement
+    /// and a pressure one.
+    std::vector<std::string> expressions;
+    std::string              name; ///< "Boundary condition 3"
+
+    /// Declare the entries of a subsection Boundary condition k.
+    void
+    add_parameters(ParameterChecks::Subsection &s);
+    /// Once the file is read: the number of expressions and whether they
+    /// parse with the problem's constants.
+    void
+    finish(const std::map<std::string, double> &constants) const;
+  };
+
+  enum class ProblemQuantity
+  {
+    none,
+    contact_pressure,    ///< at the slave node nearest to the point
+    tangential_traction, ///< friction: at the slave node nearest to the point
+    contact_half_width,  ///< farthest extent of the contact from the point
+    resultant_force_x,   ///< sum of the nodal forces of a boundary
+    resultant_force_y,
+    displacement_x, ///< at the point (reference coordinates)
+    displacement_y
+  };
+
+  /// One check of a general problem: a computed quantity against a
+  /// reference expression, at chosen steps.
+  struct ProblemCheckParameters
+  {
+    ProblemQuantity quantity = ProblemQuantity::none;
+    Point<2>        point;
+    unsigned int    boundary_id;
+    /// The reference, an expression of x, y (the point) and t.
+    std::string               reference;
+    double                    tolerance;
+    bool                      relative;
+    /// Where the reference comes from (for the verdict table).
+    std::string source;
+    bool                      every_step;
+    std::vector<unsigned int> steps; ///< invalid_unsigned_int: the last
+    std::string               name;  ///< "Check 2"
+
+    /// "contact pressure at (0, 0)", "force y on 3", ...
+    std::string
+    description() const;
+    /// A column name for history.csv: "contact_pressure", "force_y_3", ...
+    std::string
+    column() const;
+
+    /// Declare the entries of a subsection Check k.
+    void
+    add_parameters(ParameterChecks::Subsection &s);
+    /// Once the file is read: whether the reference parses with the
+    /// problem's constants.
+    void
+    finish(const std::map<std::string, double> &constants) const;
+  };
+
+  /// The value of Problem/Constants, 'name = value, ...': each value a
+  /// number or an expression of the constants before it; a one-line
+  /// ParameterError names the faulty item.
+  std::map<std::string, double>
+  parse_constants(const std::string &text);
+
+  /// The entries of a general problem: subsection Problem's constants and
+  /// numbers of bodies and pairs, and the subsections Body 1..n, Contact
+  /// pair 2..m, Boundary condition 1..12, Check 1..12.
+  struct ProblemParameters : public ScenarioParameters
+  {
+    static constexpr unsigned int max_bodies              = 4;
+    static constexpr unsigned int max_contact_pairs       = 4;
+    static constexpr unsigned int max_boundary_conditions = 12;
+    static constexpr unsigned int max_checks              = 12;
+
+    /// The common entries a general problem reads: its steps.
+    ProblemParameters();
+
+    std::map<std::string, double> constants;
+    /// Problem/Number of bodies of them (2 by default).
+    std::vector<BodyParameters> bodies;
+    /// The contact pairs after the first (which is subsection Contact):
+    /// slave and master tags of the subsections Contact pair 2, 3, ...
+    std::vector<std::pair<unsigned int, unsigned int>> contact_pairs;
+    std::vector<BoundaryConditionParameters>           boundary_conditions;
+    std::vector<ProblemCheckParameters>                checks;
+
+    /// Declare subsection Problem's entries and every slot of the
+    /// subsections Body, Contact pair, Boundary condition and Check, bound
+    /// to these members (the vectors hold every slot until finish()).
+    void
+    add_parameters(ParameterHandler &prm) override;
+    /// Keep the bodies and pairs of the numbers given, the conditions and
+    /// checks whose slots are used; check their expressions, and everything
+    /// against the common entries.
+    void
+    finish(Parameters &parameters) override;
+
+  private:
+    /// The entries set in a Body or Contact pair slot beyond the numbers.
+    void
+    refuse_unread_slots(const Parameters &parameters) const;
+    /// The boundary conditions against the contact surfaces and each other.
+    void
+    check_boundary_conditions(
+      const std::vector<std::pair<unsigned int, unsigned int>> &pairs) const;
+
+  public:
+
+    std::vector<std::pair<unsigned int, unsigned int>>
+    more_contact_pairs() const override
+    {
+      return contact_pairs;
+    }
+
+  private:
+    unsigned int number_of_bodies;
+    unsigned int number_of_contact_pairs;
+  };
+
+  /// An expression of x, y and t with the problem's constants, n components
+  /// separated by ';' (deal.II's FunctionParser). Throws a one-line message
+  /// naming `what` if it does not parse or does not evaluate at the origin.
+  std::unique_ptr<FunctionParser<2>>
+  make_expression(const std::vector<std::string>      &expressions,
+                  const std::map<std::string, double> &constants,
+                  const std::string                   &what);
+} // namespace RingContact
+
+#endif

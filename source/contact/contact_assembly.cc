@@ -1,0 +1,231 @@
+// @sect3{The contact rows of the Newton system}
+//
+// The walk over the slave points of a contact interface, which builds the
+// contact element of each (contact_element.cc) and adds its residual and
+// exact derivative to the Newton system (assemble()), its forces alone
+// (add_forces()), or the weighted slips of friction
+// (compute_weighted_slips()).
+#include <deal.II/differentiation/ad/sacado_number_types.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <ring_contact/contact/contact_element.h>
+#include <ring_contact/contact/contact_interface.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace ContactElements;
+
+
+  // eps of the sticking rows (see assemble()).
+  constexpr double stick_regularisation = 1e-12;
+
+  // @sect4{The walk over the slave points}
+  //
+  // Every use of the contact element goes through visit_points(): assemble()
+  // with derivatives, add_forces() with values only; the two had their own
+  // copies of the element's set-up before. Under MPI each process walks the
+  // points of its own slave faces (the cells are partitioned so that every
+  // process has a share of them, see setup.cc), unless `process` is invalid:
+  // add_forces() wants the whole sum on every process.
+  template <typename Visitor>
+  void
+  ContactInterface::visit_points(const Vector<double> &solution,
+                                 const bool            derivatives,
+                                 const unsigned int    process,
+                                 const Visitor        &visit) const
+  {
+    // The active set and the friction states are those of the last update(),
+    // fixed while the element is assembled: in the semi-smooth Newton method
+    // the linearisation of the max in C_k (and of the Coulomb projection) is
+    // the choice of a row per node.
+    const auto is_active = [this](const types::global_dof_index dof) {
+      return static_cast<bool>(active[multiplier_index.at(dof)]);
+    };
+    // 0 sticking, +1 or -1 sliding, 2 open.
+    const auto friction_state = [this](const types::global_dof_index dof) {
+      const unsigned int k = multiplier_index.at(dof);
+      return active[k] ? slip_sign[k] : 2;
+    };
+    // (Before the first assembly there is no converged state yet: only
+    // add_forces() can come that early, and the tangential rows, which
+    // need it, are not forces.)
+    const std::optional<ConvergedState> converged =
+      friction_coefficient > 0 && converged_slave ?
+        std::optional<ConvergedState>(ConvergedState{converged_solution,
+                                                     *converged_slave,
+                                                     *converged_master}) :
+        std::nullopt;
+    for (const auto &point : points)
+      {
+        if (process != numbers::invalid_unsigned_int &&
+            slave.segments()[point.slave_segment].cell->subdomain_id() !=
+              process)
+          continue;
+        const ElementLayout layout(slave,
+                                   master,
+                                   point,
+                                   !geometrically_linear,
+                                   segment_based,
+                                   converged ? &*converged : nullptr);
+        // The element in AD numbers that hold its unknowns.
+        const auto evaluate = [&](auto &&element) {
+          element.gather_unknowns(solution, derivatives);
+          element.evaluate_slave_point();
+          element.evaluate_partner_and_normal();
+          auto residual = element.residual(complementarity_constant,
+                                           is_active,
+                                           friction_state,
+                                           friction_coefficient);
+          visit(element, residual);
+        };
+        // A safety net: with displacement degrees of at most 4
+        // (LagrangeBasis1D::max_size) an element has at most 60 unknowns.
+        AssertThrow(layout.n_unknowns() <= large_capacity,
+                    ExcMessage("a contact element with " +
+                               std::to_string(layout.n_unknowns()) +
+                               " unknowns, more than the " +
+                               std::to_string(large_capacity) +
+                               " its AD numbers hold (displacement degree "
+                               "above 4?)"));
+        // The smaller numbers wherever they fit (see the capacities above).
+        if (layout.n_unknowns() <= small_capacity)
+          evaluate(ContactElement<SmallAD>(layout));
+        else
+          evaluate(ContactElement<LargeAD>(layout));
+      }
+  }
+
+  // @sect4{The contact rows of the Newton system}
+  //
+  // The slave points' contributions, then the rows that are one equation per
+  // node rather than a sum over points: the open nodes' w_k lambda_k = 0 and,
+  // with friction, the per-node parts of the tangential rows. Those are added
+  // once, by the process that stores the row, whereas the points' contributions
+  // from every process are summed.
+  void
+  ContactInterface::assemble(const Vector<double>            &solution,
+                             const AffineConstraints<double> &constraints,
+                             LinearSystem                    &system) const
+  {
+    const bool friction = friction_coefficient > 0;
+    visit_points(solution,
+                 true,
+                 this_process(system.get_communicator()),
+                 [&](auto &element, auto &residual) {
+                   element.scatter(residual, constraints, system);
+                 });
+
+    // Open nodes: w_k lambda_k = 0 (and w_k lambda_t,k = 0).
+    // w_k lambda_k rather than lambda_k: every row is a force per unit
+    // thickness, so that the residual norm weighs them with the others; w_k is
+    // the reference weight, a constant, so the row stays linear.
+    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+      if (!active[k] && system.owned_rows().is_element(multiplier_dof_list[k]))
+        {
+          const auto dof = multiplier_dof_list[k];
+          system.add_diagonal(dof,
+                              reference_weight[k],
+                              -reference_weight[k] * solution(dof));
+        }
+    if (!friction)
+      return;
+    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+      {
+        const auto   t = tangential_dof_list[k], n = multiplier_dof_list[k];
+        const double w = reference_weight[k];
+        if (!system.owned_rows().is_element(t))
+          continue;
+        if (!active[k])
+          system.add_diagonal(t, w, -w * solution(t));
+        else if (slip_sign[k] == 0)
+          // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. A
+          // node whose tangential motion is held on both sides (on a
+          // symmetry plane) has s~_k = 0 whatever the unknowns, and its
+          // lambda_t no equation; eps = 1e-12 gives it lambda_t = 0 and
+          // elsewhere allows a slip of 1e-12 w lambda_t / c (measured:
+          // Hertz with mu = 0.2 was singular at its first step).
+          system.add_diagonal(t,
+                              stick_regularisation * w,
+                              -stick_regularisation * w * solution(t));
+        else
+          {
+            // Sliding: w lambda_t - sign mu (w lambda - c g~) = 0, the
+            // points' sum of sign mu c Phi_k g ds already in the row.
+            // b = sign mu w: the row w lambda_t - b lambda couples the node's
+            // two multipliers, hence a 2 x 2 element with the normal
+            // multiplier's column rather than a diagonal entry.
+            const double       b = slip_sign[k] * friction_coefficient * w;
+            FullMatrix<double> matrix(2, 2);
+            Vector<double>     rhs(2);
+            matrix(0, 0) = w;
+            matrix(0, 1) = -b;
+            rhs(0)       = -(w * solution(t) - b * solution(n));
+            system.add(constraints, matrix, rhs, {t, n});
+          }
+      }
+  }
+
+  // The contact force on every node at `solution`, with the sign of an internal
+  // force, whatever process owns the slave point: the boundary resultants leave
+  // it out of the reactions (postprocessing.cc).
+  void
+  ContactInterface::add_forces(const Vector<double> &solution,
+                               Vector<double>       &forces) const
+  {
+    visit_points(solution,
+                 false,
+                 numbers::invalid_unsigned_int,
+                 [&](auto &element, auto &residual) {
+                   element.add_values(residual, forces);
+                 });
+  }
+
+  // s~_k = sum Phi_k s ds over the slave points, from the same contact
+  // element as the residual (its values only).
+  // Values only (AD constants: no derivative arrays at every slave point and
+  // Newton iteration), and every slave point on every process: each process
+  // decides the stick and slip states from s~, and all must decide the same.
+  // The element needs the current partner and normal too: the slip is measured
+  // along the current tangent.
+  void
+  ContactInterface::compute_weighted_slips(const Vector<double> &solution)
+  {
+    std::fill(weighted_slip.begin(), weighted_slip.end(), 0.0);
+    const ConvergedState converged{converged_solution,
+                                   *converged_slave,
+                                   *converged_master};
+    for (const auto &point : points)
+      {
+        const ElementLayout layout(slave,
+                                   master,
+                                   point,
+                                   !geometrically_linear,
+                                   segment_based,
+                                   &converged);
+        const auto          add_slip = [&](auto &&element) {
+          element.gather_unknowns(solution, false); // values only
+          element.evaluate_slave_point();
+          element.evaluate_partner_and_normal();
+          const double s   = element.slip().val();
+          const double ds  = element.length_element().val();
+          const auto  &seg = slave.segments()[point.slave_segment];
+          for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
+            weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
+              element.multiplier_basis(k).val() * s * ds;
+        };
+        if (layout.n_unknowns() <= small_capacity)
+          add_slip(ContactElement<SmallAD>(layout));
+        else
+          add_slip(ContactElement<LargeAD>(layout));
+      }
+  }
+} // namespace RingContact

@@ -1,0 +1,275 @@
+// @sect3{Run-time parameters}
+//
+// The entries of the parameter file that every problem reads, one struct per
+// subsection as in step-44; the scenarios' own entries are declared in their
+// folders (scenarios/*/). Where step-44 declares its entries in one function
+// and reads them back in another, each entry here is one statement,
+// ParameterChecks::Subsection::add() (parameter_checks.cc), that holds its
+// name, default, pattern, documentation, the member it sets and the checks of
+// its value, so that these cannot drift apart. deal.II runs the entry's action
+// when the file sets it: a value refused there is reported at its own line, in
+// an included file too. What an action cannot check, because it involves
+// another entry that may come later in the file, waits for the finish()
+// functions, which Parameters::read() calls once the whole file is read.
+//
+// The documentation strings are the program's reference manual (printed by
+// `ring_contact --print-parameters`, kept in doc/parameters.prm); the comments
+// say why the defaults and limits are what they are. Where an entry is the
+// rings', its default is the rings' modelisation A: plane stress, finite strain,
+// Q1 rings, nodal integration, the 21-step ramp checked at every step to 2 %.
+#include <ring_contact/input/gmsh_file.h>
+#include <ring_contact/input/parameter_checks.h>
+#include <ring_contact/input/parameter_file.h>
+#include <ring_contact/input/parameters.h>
+#include <ring_contact/scenarios/scenario.h>
+#include <ring_contact/base/utilities.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <tuple>
+
+namespace RingContact
+{
+  using namespace ParameterChecks;
+
+  // @sect4{The whole file}
+  //
+  // The common subsections (subsections.cc), Problem/Scenario, and every
+  // registered
+  // scenario's own entries, declared together; then the file read, the entries
+  // checked against each other, and every error located at its line.
+
+  // Every scenario's entries are made and declared, not only those of the
+  // scenario the file chooses: deal.II needs every entry declared before the
+  // file is read, and the file may name its scenario anywhere, after the
+  // entries or in an included file.
+  Parameters::Parameters()
+  {
+    for (const auto &scenario : registered_scenarios())
+      scenario_parameters[scenario.name] = scenario.make_parameters();
+  }
+
+  // The entries of the common subsections that not every scenario reads, listed
+  // here once; a scenario claims those it reads in its `reads`. A claim on an
+  // entry missing here is a programming error, which readers.at() in
+  // add_parameters() throws on at the declaration. Any other common entry is
+  // read by all scenarios.
+  std::vector<std::string>
+  Parameters::restricted_entries()
+  {
+    return {"Load program/Number of steps",
+            "Load program/Time points",
+            "Load program/Reference pressure",
+            "Load program/Ramp steps",
+            "Load program/Time step",
+            "Load program/Rotation pressure",
+            "Load program/Rotation steps",
+            "Load program/Rotation in elements",
+            "Checks/Quantity",
+            "Checks/Steps",
+            "Checks/Tolerance"};
+  }
+
+  namespace
+  {
+    // How the message of an entry that the chosen scenario does not read
+    // names who reads it, by the names the scenarios give themselves in
+    // messages: "A", "A and B", "A, B and C".
+    std::string
+    describe_readers(const std::set<std::string> &names)
+    {
+      std::vector<std::string> descriptions;
+      for (const auto &scenario : registered_scenarios())
+        if (names.count(scenario.name))
+          descriptions.push_back(scenario.description);
+      std::string text;
+      for (unsigned int k = 0; k < descriptions.size(); ++k)
+        text += (k == 0                       ? "" :
+                 k + 1 == descriptions.size() ? " and " :
+                                                ", ") +
+                descriptions[k];
+      return text;
+    }
+  } // namespace
+
+  void
+  Parameters::add_parameters(ParameterHandler &prm)
+  {
+    {
+      // The choices, default and documentation of Problem/Scenario come from
+      // the registry (scenario.cc): a new scenario adds no line here.
+      ParameterChecks::Subsection s(prm, "Problem");
+      std::string names, default_name, documentation = "The problem posed.";
+      for (const auto &registered : registered_scenarios())
+        {
+          names += (names.empty() ? "" : "|") + registered.name;
+          if (registered.is_default)
+            default_name = registered.name;
+          documentation +=
+            " " + registered.name + ": " + registered.documentation;
+        }
+      s.add("Scenario",
+            scenario,
+            default_name,
+            documentation,
+            Patterns::Selection(names));
+    }
+    mesh.add_parameters(prm);
+    materials.add_parameters(prm);
+    finite_elements.add_parameters(prm);
+    contact.add_parameters(prm);
+    load.add_parameters(prm);
+    newton.add_parameters(prm);
+    output.add_parameters(prm);
+    checks.add_parameters(prm);
+    // Who reads the entries that only some scenarios read: the common
+    // ones some scenarios say they read, and every scenario's own.
+    readers.clear();
+    for (const auto &key : restricted_entries())
+      readers[key];
+    for (const auto &[name, entries] : scenario_parameters)
+      {
+        entries->declared.clear();
+        entries->add_parameters(prm);
+        for (const auto &key : entries->declared)
+          readers[key].insert(name);
+        for (const auto &key : entries->reads)
+          readers.at(key).insert(name);
+      }
+  }
+
+  // Subsection Contact holds the first pair for every scenario; a general
+  // problem adds its 'Contact pair 2' to '4'. The schemes and constants of
+  // subsection Contact serve every pair.
+  std::vector<std::pair<unsigned int, unsigned int>>
+  Parameters::contact_pairs() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs = {
+      {contact.slave_boundary_id, contact.master_boundary_id}};
+    const auto more = scenario_parameters.at(scenario)->more_contact_pairs();
+    pairs.insert(pairs.end(), more.begin(), more.end());
+    return pairs;
+  }
+
+  void
+  Parameters::read(const std::string &filename)
+  {
+    prm_file = filename;
+    // Every entry is bound to its member here and takes its value (checked)
+    // as the file is read; what remains is what involves several entries.
+    ParameterHandler prm;
+    add_parameters(prm);
+    // Entries that moved (the patch test's, once in subsection Mesh) go to the
+    // reader, which answers an old file with where the entry is now, instead of
+    // refusing it as unknown.
+    std::map<std::string, std::string> moved;
+    for (const auto &[name, entries] : scenario_parameters)
+      {
+        const auto these = entries->moved_entries();
+        moved.insert(these.begin(), these.end());
+      }
+    origins = read_parameter_file(prm, filename, moved);
+
+    // The top file's folder and name: the folder of a relative mesh path that
+    // it sets itself, and the default results folder, results/<name>.
+    const std::filesystem::path path(filename);
+    const std::string           folder =
+      path.has_parent_path() ? path.parent_path().string() : ".";
+    const std::string name = path.stem().string();
+    // The actions' ParameterErrors were located by the reader, line by
+    // line; those of the checks below are located here, from the origins
+    // the reader recorded.
+    try
+      {
+        // A relative mesh path is taken from the folder of the file that
+        // sets it (an included file's own folder), not the top file's.
+        std::string mesh_folder = folder;
+        {
+          const auto origin = origins.find(entry_key("Mesh", "Mesh file"));
+          if (origin != origins.end())
+            {
+              const std::filesystem::path set_in(origin->second.file);
+              mesh_folder =
+                set_in.has_parent_path() ? set_in.parent_path().string() : ".";
+            }
+        }
+        // An entry that only other scenarios read would be silently
+        // ignored: refused, naming who reads it.
+        for (const auto &[key, origin] : origins)
+          {
+            const auto reader = readers.find(key);
+            if (reader == readers.end() || reader->second.count(scenario))
+              continue;
+            // One scenario that a file chooses by name reads it: "is read
+            // only when Problem/Scenario = general"; else name the readers.
+            const auto                  slash = key.rfind('/');
+            const ScenarioRegistration *only = nullptr, *current = nullptr;
+            for (const auto &registered : registered_scenarios())
+              {
+                if (reader->second.size() == 1 &&
+                    registered.name == *reader->second.begin() &&
+                    !registered.is_default)
+                  only = &registered;
+                if (registered.name == scenario)
+                  current = &registered;
+              }
+            require(false,
+                    key.substr(0, slash),
+                    key.substr(slash + 1),
+                    only != nullptr ?
+                      "is read only when Problem/Scenario = " + only->name :
+                      "is read for " + describe_readers(reader->second) +
+                        " only, but Problem/Scenario is " + scenario +
+                        current->foreign_entry_hint);
+          }
+        // The common subsections' checks first, the scenario's last: they
+        // compare its entries with the common ones, and may set common ones
+        // that the file left alone (the rings put the probe at their node A).
+        mesh.finish(mesh_folder);
+        contact.finish();
+        load.finish();
+        output.finish(name);
+        scenario_parameters.at(scenario)->finish(*this);
+      }
+    catch (const ParameterError &e)
+      {
+        throw std::runtime_error(located(e));
+      }
+  }
+
+  // Name the file and line that set the value, or say that it is the default:
+  // for the checks once the file is read (the finish() functions), and for
+  // those that need the mesh (a traction on a supported direction, a rule too
+  // low for the surfaces' degree), which come later (driver/run.cc). The
+  // actions' own refusals are located by the reader as it reads.
+  std::string
+  Parameters::located(const ParameterError &e) const
+  {
+    const auto origin = origins.find(entry_key(e.subsection, e.entry));
+    if (origin != origins.end())
+      return origin->second.file + ":" + std::to_string(origin->second.line) +
+             ": " + e.what();
+    return prm_file + ": " + e.what() + " ('" + e.entry +
+           "' is not set in the file: its default)";
+  }
+
+  // A Parameters of its own: the actions bind the entries to its members, which
+  // must outlive the handler, and its values are the defaults.
+  void
+  Parameters::print_reference(std::ostream &out, const bool as_prm)
+  {
+    ParameterHandler prm;
+    Parameters       defaults;
+    defaults.add_parameters(prm);
+    prm.print_parameters(out,
+                         as_prm ? ParameterHandler::PRM :
+                                  ParameterHandler::Text);
+  }
+} // namespace RingContact

@@ -1,0 +1,852 @@
+// @sect3{Run-time parameters: the common subsections}
+//
+// One struct per subsection of the parameter file that every problem reads
+// (Mesh, Materials, Finite elements, Contact, Load program, Newton, Output,
+// Checks), each with its add_parameters() and, where entries depend on each
+// other, its finish(). How an entry is declared, checked and documented is
+// told at the top of parameters.cc, which assembles these subsections and
+// the scenarios' own into the whole file.
+#include <ring_contact/input/gmsh_file.h>
+#include <ring_contact/input/parameter_checks.h>
+#include <ring_contact/input/parameter_file.h>
+#include <ring_contact/input/parameters.h>
+#include <ring_contact/scenarios/scenario.h>
+#include <ring_contact/base/utilities.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <tuple>
+
+namespace RingContact
+{
+
+  namespace
+  {
+    using namespace ParameterChecks;
+
+    // A gmsh script is text written by hand: a few kilobytes. It is read whole
+    // to look for the names of 'Geo parameters' in it, and the bound keeps that
+    // from reading a file of any size into memory.
+    constexpr std::size_t max_geo_file_bytes = std::size_t(64) << 20;
+
+    // 'name = value, name = value' of the entry 'Geo parameters'. The names are
+    // gmsh's (letters, digits and _, not starting with a digit). Each value
+    // goes to gmsh as it is, so it is held to what every number of the file
+    // must be: the whole text one number (strtod's end at the terminator,
+    // '1e3x' refused), 0 or between 1e-300 and 1e300 in magnitude.
+    std::vector<std::pair<std::string, double>>
+    parse_geo_numbers(const std::string &text)
+    {
+      std::vector<std::pair<std::string, double>> numbers;
+      for (const auto &[name, value] :
+           get_assignments(text,
+                           "Mesh",
+                           "Geo parameters",
+                           "Ne = 80, Nr1 = 6",
+                           "a gmsh variable name (letters, digits and _, not "
+                           "starting with a digit)",
+                           false))
+        {
+          char        *end    = nullptr;
+          const double number = std::strtod(value.c_str(), &end);
+          require(!value.empty() && *end == '\0' && std::isfinite(number) &&
+                    (number == 0 ||
+                     (std::abs(number) >= 1e-300 && std::abs(number) <= 1e300)),
+                  "Mesh",
+                  "Geo parameters",
+                  "gives '" + name + "' the value '" + printable(value) +
+                    "', which is not a usable number");
+          numbers.emplace_back(name, number);
+        }
+      return numbers;
+    }
+
+    // Whether `name` occurs in `text` as a whole word: a name 'R' must not
+    // count as found inside the script's 'R1' or 'Rmax', or a misspelt name
+    // would pass.
+    bool
+    occurs_as_word(const std::string &text, const std::string &name)
+    {
+      const auto word_character = [](const char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      };
+      for (std::size_t at = text.find(name); at != std::string::npos;
+           at             = text.find(name, at + 1))
+        if ((at == 0 || !word_character(text[at - 1])) &&
+            (at + name.size() == text.size() ||
+             !word_character(text[at + name.size()])))
+          return true;
+      return false;
+    }
+
+  } // namespace
+
+  using namespace ParameterChecks;
+
+  // @sect4{Subsection Mesh}
+  //
+  // Where the mesh comes from. The rings build theirs in code for any number of
+  // elements, or read it from a gmsh file (the original's own meshes included);
+  // the patch test builds its blocks in code; a general problem always reads a
+  // gmsh file or script. The entries that shape a generated mesh (elements
+  // around, radii, sector) are the rings' own, declared by the rings' scenario.
+
+  void
+  MeshParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Mesh");
+    s.add("Mesh source",
+          "generated",
+          Patterns::Selection("generated|gmsh file|patch test"),
+          "generated: the scenario builds its mesh in code (the rings of "
+          "any size and number of elements); gmsh file: read from 'Mesh "
+          "file'.",
+          [this](const std::string &text) {
+            // The patch test was a mesh source before it became a scenario.
+            // 'patch test' stays in the pattern for that reason: an old file
+            // that sets it is told where the patch test went, instead of
+            // getting deal.II's list of the allowed values.
+            require(text != "patch test",
+                    "Mesh",
+                    "Mesh source",
+                    "= patch test: the patch test is a scenario now, set "
+                    "'Scenario = patch test' in subsection Problem (its "
+                    "entries are in subsection Patch test)");
+            source = text == "generated" ? MeshSource::generated :
+                                           MeshSource::gmsh_file;
+          });
+    // Stored as written. A relative path is resolved in finish(): it is
+    // relative to the folder of the file that set it, which is known only once
+    // the reader has recorded where each entry came from.
+    s.add("Mesh file",
+          mesh_file,
+          "",
+          "gmsh mesh with the scenario's physical tags, read by gmsh's own "
+          "library: a .msh file (formats 1, 2.2 and 4.1, ASCII or binary; "
+          "quadrilaterals of 4, 8 or 9 nodes and lines of 2 or 3 nodes), or "
+          "a gmsh script (.geo) that gmsh meshes in 2d when the program "
+          "reads it, with elements of order 1 if every body has "
+          "displacement degree 1 and 2 otherwise (see 'Geo parameters'; a "
+          "script is a program: give only trusted ones). The cells are the "
+          "vertices only: curved boundaries come from the scenario's "
+          "geometry. A relative path is taken from the folder of the .prm "
+          "file that sets it (an included file's own folder).");
+    // Parsed when its line is read; whether each name occurs in the script is
+    // checked in finish(), since 'Mesh file' may be set after this entry.
+    s.add("Geo parameters",
+          "",
+          Patterns::Anything(),
+          "Numbers handed to a .geo 'Mesh file', as gmsh's "
+          "'-setnumber name value' does: comma-separated "
+          "'name = value' pairs, e.g. 'Ne = 80, Nr1 = 6'. "
+          "Each name must be set in the script with "
+          "DefineConstant[] (a plain assignment in the script "
+          "overrides the number) and must occur in it. Empty: "
+          "the script's own values. Only with a .geo file.",
+          [this](const std::string &text) {
+            geo_numbers = parse_geo_numbers(text);
+          });
+    // At most 8: each refinement multiplies the cells by 4, and 8 of them make
+    // the seed rings' 240 cells 15.7 million. Whether the refined mesh fits the
+    // machine is checked before it is made (Geometry::check_size()).
+    s.add("Global refinements",
+          global_refinements,
+          "0",
+          0,
+          8,
+          "Uniform refinements of the mesh; new vertices are placed on the "
+          "scenario's curved boundaries.");
+  }
+
+  void
+  MeshParameters::finish(const std::string &prm_folder)
+  {
+    if (source == MeshSource::gmsh_file)
+      {
+        require(!mesh_file.empty(),
+                "Mesh",
+                "Mesh file",
+                "is empty but 'Mesh source' is 'gmsh file'");
+        // A relative path is taken from the folder of the .prm file that set
+        // the entry (an included file's own folder, as Parameters::read() found
+        // it), so that a file and its mesh can move together and be included
+        // from anywhere.
+        std::filesystem::path path(mesh_file);
+        if (path.is_relative())
+          path = std::filesystem::path(prm_folder) / path;
+        mesh_file = path.lexically_normal().string();
+        // Checked here, so that the error names the entry and its line; gmsh
+        // reads the file much later, in a child process. The error_code
+        // overloads do not throw: a path that cannot be examined reads as
+        // absent, with this message, instead of escaping as a filesystem_error
+        // that names no entry.
+        std::error_code error;
+        require(std::filesystem::exists(mesh_file, error),
+                "Mesh",
+                "Mesh file",
+                "names a file that does not exist: " + printable(mesh_file));
+        require(std::filesystem::is_regular_file(mesh_file, error),
+                "Mesh",
+                "Mesh file",
+                "names something that is not a regular file: " +
+                  printable(mesh_file));
+      }
+    require(geo_numbers.empty() || (source == MeshSource::gmsh_file &&
+                                    Geometry::is_geo_file(mesh_file)),
+            "Mesh",
+            "Geo parameters",
+            "needs a gmsh script as mesh ('Mesh source' = gmsh file and "
+            "a 'Mesh file' ending in .geo)");
+    if (!geo_numbers.empty())
+      {
+        // gmsh 4.8's API cannot list a script's variables, and gmsh
+        // ignores a number the script does not use: at least catch a
+        // misspelt name.
+        const std::string script =
+          read_text_file(mesh_file, "mesh file", max_geo_file_bytes);
+        for (const auto &[name, value] : geo_numbers)
+          require(occurs_as_word(script, name),
+                  "Mesh",
+                  "Geo parameters",
+                  "names '" + name + "', which does not occur in " +
+                    printable(mesh_file, 200));
+      }
+  }
+
+  // @sect4{Subsection Materials}
+  //
+  // The kinematics and the plane assumption, shared by all bodies. The elastic
+  // constants are each scenario's (the rings', the blocks', the bodies' of a
+  // general problem), and a general problem's body may choose its own
+  // kinematics.
+
+  void
+  MaterialParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Materials");
+    // Finite strain by default, as the original computes (GROT_GDEP): the inner
+    // ring turns through a finite angle, and a linearised rotation through one
+    // element strains it by cos 9 deg - 1 = -1.2 %, as much as the elastic
+    // strains that carry the pressure (doc/intro.md). Small strain is the check
+    // of the discretisation alone against the small-strain closed form.
+    s.add("Kinematics",
+          kinematics,
+          "finite strain",
+          kinematics_choices(),
+          "finite strain: total Lagrangian Saint Venant-"
+          "Kirchhoff (Green-Lagrange strain, second Piola-"
+          "Kirchhoff stress; the original's GROT_GDEP); small "
+          "strain: linear elasticity; logarithmic strain: "
+          "Hencky, the linear law on the logarithmic strain "
+          "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
+          "stress the out-of-plane stress conjugate to it is "
+          "zero); neo-Hookean: the compressible neo-Hookean "
+          "law W = mu/2 (tr C - 3 - 2 ln J) + lambda/2 (ln "
+          "J)^2 (finite strain; linear elasticity at small "
+          "strain; in plane stress F33 from sigma33 = 0).");
+    // Plane stress, the original's C_PLAN, is that of every modelisation but B.
+    s.add("Plane assumption",
+          plane,
+          "plane stress",
+          {{"plane stress", PlaneAssumption::plane_stress},
+           {"plane strain", PlaneAssumption::plane_strain}},
+          "plane stress (S33 = 0, C_PLAN) or plane strain "
+          "(E33 = 0, D_PLAN).");
+  }
+
+  // @sect4{Subsection Finite elements}
+  //
+  // The displacement degree is each body's, a scenario entry. What is common is
+  // the degree of the multiplier, the mapping of the geometry and the bulk
+  // quadrature.
+
+  void
+  FiniteElementParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Finite elements");
+    // Linear by default, on a quadratic slave too (G, H): a linear multiplier
+    // against quadratic displacements satisfies the inf-sup condition, where
+    // one as rich as the slave's displacement would not (doc/intro.md). The
+    // bound by the slave's degree needs the scenario's bodies and is checked by
+    // each scenario.
+    s.add("Multiplier degree",
+          multiplier_degree,
+          "1",
+          1,
+          2,
+          "Degree of the contact pressure (Lagrange multiplier) "
+          "on the slave surface; at most the slave's "
+          "displacement degree.");
+    // 1 by default: the original's linear meshes are faceted circles. 0 is the
+    // original's isoparametric choice, curved quadratic rings; with rings of
+    // different degrees it puts a curved surface against a faceted one, and the
+    // two overlap before any load (diagnostics/initial_interpenetration.cc
+    // warns of it).
+    s.add("Mapping degree",
+          mapping_degree,
+          "1",
+          0,
+          4,
+          "1: straight element edges (faceted circles, as the "
+          "original's linear mesh); 2 or more: edges follow the "
+          "circles (polar manifold); 0: isoparametric, each "
+          "ring's mapping degree is its displacement degree "
+          "(as the original's meshes: linear rings faceted, "
+          "quadratic rings curved).");
+    // Modelisation H (the original's C_PLAN_SI): 2 x 2 Gauss points on the
+    // 9-node quadrilateral, a rule that leaves the element zero-energy modes.
+    s.add("Reduced integration",
+          reduced_integration,
+          "false",
+          "Integrate the bulk with p x p Gauss points instead of "
+          "(p+1) x (p+1).");
+  }
+
+  namespace
+  {
+      // 'nodal' by default, the original's default scheme. The schemes of a list
+      // are run one after the other on the same mesh and load program, each with
+      // its own output files, so that one file compares them.
+    // Each name is parsed by IntegrationScheme::parse(); the list is the
+    // member `schemes` of ContactParameters.
+    void
+    add_integration_schemes(Subsection                     &s,
+                            std::vector<IntegrationScheme> &schemes)
+    {
+      s.add("Integration schemes",
+            "nodal",
+            Patterns::List(Patterns::Anything(), 1),
+            "Comma-separated list; one analysis is run per scheme. "
+            "nodal: at the slave nodes; Gauss n: n Gauss points "
+            "per slave segment (1-20); Simpson n: composite "
+            "Simpson with n sub-intervals; Newton-Cotes n: closed "
+            "Newton-Cotes of order 1, 2, 4 or 6; segment-based "
+            "n: each slave segment cut where the lines through "
+            "the master vertices along their normals cross it, "
+            "n Gauss points on each piece (mortar "
+            "integration).",
+            [&schemes](const std::string &text) {
+              // The action runs on the default first, then on the file's value:
+              // without the clear, 'nodal' would head every list.
+              schemes.clear();
+              for (const auto &entry : Utilities::split_string_list(text))
+                {
+                  // parse() knows the schemes but not the file: its message
+                  // becomes a ParameterError of this entry, reported at its line.
+                  try
+                    {
+                      schemes.push_back(IntegrationScheme::parse(entry));
+                    }
+                  catch (const std::exception &e)
+                    {
+                      require(false, "Contact", "Integration schemes", e.what());
+                    }
+                  // One run per scheme: a scheme listed twice would run twice
+                  // and write its files over its own.
+                  for (unsigned int k = 0; k + 1 < schemes.size(); ++k)
+                    require(schemes[k].name() != schemes.back().name(),
+                            "Contact",
+                            "Integration schemes",
+                            "lists '" + schemes.back().name() + "' twice");
+                }
+            });
+    }
+  } // namespace
+
+  // @sect4{Subsection Contact}
+  //
+  // The first contact pair, and what every pair shares: the integration
+  // schemes, the normals, the complementarity constant, friction and the
+  // reported pressure. A general problem's further pairs ('Contact pair 2' to
+  // '4') give only their two surfaces.
+
+  void
+  ContactParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Contact");
+    // The defaults are the original's tags: the inner ring's S2R2 (400) is the
+    // slave and the outer ring's S1R2 (300) the master, in all modelisations
+    // but E. Tags go up to 1e9 because gmsh's are ints.
+    s.add("Slave boundary",
+          slave_boundary_id,
+          "400",
+          0,
+          max_tag,
+          "Boundary id (gmsh physical tag) of the slave surface, "
+          "which carries the contact pressure (the rings: 400, S2R2, the "
+          "inner ring's, or 300, S1R2, the outer ring's).");
+    s.add("Master boundary",
+          master_boundary_id,
+          "300",
+          0,
+          max_tag,
+          "Boundary id of the master surface (the normal is the "
+          "master's outward normal).");
+    add_integration_schemes(s, schemes);
+    // Off by default: the master's facet normals, and the length-weighted
+    // vertex normal at a vertex. The files of modelisations C to H switch the
+    // smoothing on (the original's LISSAGE).
+    s.add("Smooth master normals",
+          smooth_master_normals,
+          "false",
+          "Use averaged nodal normals on the master surface "
+          "(the original's LISSAGE).");
+    // c only decides the active set: at a converged state each node has
+    // lambda_k = 0 or g~_k = 0 whatever c is. During the iteration it weighs
+    // the weighted gap against the multiplier, c g~_k against w_k lambda_k,
+    // both forces per unit thickness. With c = E/h, c times a gap is the stress
+    // that would squeeze an element of size h by that gap, of the order of the
+    // pressure it is compared with. The automatic value takes the stiffest body
+    // and the shortest slave segment.
+    s.add("Complementarity constant",
+          complementarity_constant,
+          "0",
+          "c [Pa/m] in the complementarity function "
+          "lambda - max(0, lambda - c g); it decides the active "
+          "set, not the converged solution. 0: automatic, the "
+          "largest Young's modulus over the smallest slave "
+          "segment length.",
+          not_negative());
+    // 0 by default: the rings' case is frictionless. With 0 the tangential multiplier
+    // is FE_Nothing, so a frictionless run has the same unknowns, numbering and
+    // digits as before friction existed (doc/design.md).
+    s.add("Friction coefficient",
+          friction_coefficient,
+          "0",
+          "Coulomb's mu: the tangential traction |t| <= mu p, sticking below "
+          "the bound and opposed to the slip at it (a second multiplier on "
+          "the slave surface). 0: frictionless, without that multiplier.",
+          not_negative());
+    // The unknown is the Cauchy pressure, force per current length. The
+    // original reports the nominal one (its LAGS_C, per reference length),
+    // which 'nominal' reproduces to Code_Aster's digits. At p = 1e7 Pa the
+    // interface circle shrinks by about 1 %, and the nominal pressure is lower
+    // by as much: as large as the effects the checks measure, so a comparison
+    // must say which of the two it uses.
+    s.add("Reported pressure",
+          reported_pressure,
+          "Cauchy",
+          {{"Cauchy", PressureMeasure::cauchy},
+           {"nominal", PressureMeasure::nominal}},
+          "Cauchy: force per current length of the slave "
+          "surface (the multiplier itself); nominal: force per "
+          "reference length.");
+    // (0.6, 0) is node A of the seed rings, and also lies on the patch test's
+    // interface. A scenario replaces it when the file does not set the entry
+    // (the rings: (R2, 0) for any interface radius; a general problem: the
+    // point of its first pressure check), and checks that the point is near its
+    // slave surface, since the nearest slave node is used whatever the
+    // distance.
+    s.add("Probe point",
+          "0.6, 0",
+          Patterns::List(Patterns::Double(), 2, 2),
+          "Reference position [m] of the probe, the slave node "
+          "whose pressure is reported (the nearest slave node is "
+          "used). Not set: the scenario's (the rings: node A at (R2, 0) "
+          "for any interface radius; a general problem: the point of its "
+          "first pressure check).",
+          [this](const std::string &text) {
+            const auto xy = point_from_text(text, "Contact", "Probe point");
+            probe_point   = Point<2>(xy[0], xy[1]);
+          });
+  }
+
+  // Checked once the file is read, since either entry may be set first. A
+  // surface is not in contact with itself: the program has no self-contact.
+  void
+  ContactParameters::finish() const
+  {
+    require(slave_boundary_id != master_boundary_id,
+            "Contact",
+            "Slave boundary",
+            "must differ from 'Master boundary' (both are " +
+              std::to_string(slave_boundary_id) + ")");
+  }
+
+  // @sect4{Subsection Load program}
+  //
+  // The three programs of problem/load_program.h: the ramp and the rotation of
+  // the rings (the patch test takes the ramp), and the given pseudo-times of a
+  // general problem, whose boundary data are expressions of t. Each program's
+  // entries are read only by the scenarios that claim them
+  // (restricted_entries() below): a general problem's file that sets the ramp's
+  // steps is refused, not run with its own steps as if the line were not there.
+
+  namespace
+  {
+    // The entry Time points: numbers and ranges from:step:to. Each point lies
+    // above the one before, the first above 0: t = 0 is the unloaded state,
+    // step 0 of every program.
+    std::vector<double>
+    parse_time_points(const std::string &text)
+    {
+      std::vector<double> time_points;
+      const std::string   points_text = Utilities::trim(text);
+      // A number, or NaN for anything else.
+      const auto number = [](const std::string &word) {
+        double t = std::nan("");
+        try
+          {
+            t = Utilities::string_to_double(Utilities::trim(word));
+          }
+        catch (...)
+          {}
+        return t;
+      };
+      for (const auto &item : Utilities::split_string_list(points_text))
+        {
+          const double previous =
+            time_points.empty() ? 0.0 : time_points.back();
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() == 3)
+            {
+              // from:step:to, the points after `from` up to `to`.
+              const double from = number(parts[0]), step = number(parts[1]),
+                           to = number(parts[2]);
+              // The number of steps of the range, kept finite for a zero or
+              // negative step, which the check below then refuses by name.
+              const double n = std::round((to - from) / std::max(step, 1e-300));
+              // `step` must divide to - from to round-off: 0:0.3:1 would
+              // otherwise be run with steps of 1/3, which the file did not say.
+              require(std::isfinite(from) && std::isfinite(step) &&
+                        std::isfinite(to) && from >= previous && step > 0 &&
+                        to > from &&
+                        std::abs(n * step - (to - from)) <= 1e-9 * (to - from),
+                      "Load program",
+                      "Time points",
+                      "has the range '" + printable(item) +
+                        "': a range is from:step:to with from at or after "
+                        "the previous point, step > 0 dividing to - from "
+                        "(e.g. 0:0.02:1, 1:0.005:2)");
+              // Counted before any point is stored: 0:1e-9:1 would otherwise
+              // fill the memory before the total was checked.
+              require(time_points.size() + n <= LoadParameters::max_steps,
+                      "Load program",
+                      "Time points",
+                      "gives more than " +
+                        std::to_string(LoadParameters::max_steps) +
+                        " steps (the range '" + printable(item) + "' has " +
+                        to_text(n) + ")");
+              // Each point from the range's ends, not by adding `step` n times:
+              // no round-off accumulates along a long range, and the last point
+              // is `to` exactly, where the next range may start.
+              for (unsigned int k = 1; k <= n; ++k)
+                time_points.push_back(k == n ? to : from + (to - from) * k / n);
+              continue;
+            }
+          // A single number; an item with one colon or more than two is neither
+          // a number nor a range, and is refused as not a number.
+          const double t = parts.size() == 1 ? number(item) : std::nan("");
+          require(std::isfinite(t) && std::abs(t) < 1e300 && t > previous,
+                  "Load program",
+                  "Time points",
+                  "must be increasing finite numbers above 0, got '" +
+                    printable(item) + "' in '" + printable(points_text) + "'");
+          time_points.push_back(t);
+        }
+      require(time_points.size() <= LoadParameters::max_steps,
+              "Load program",
+              "Time points",
+              "gives more than " + std::to_string(LoadParameters::max_steps) +
+                " steps");
+      return time_points;
+    }
+  } // namespace
+
+  void
+  LoadParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Load program");
+    // The defaults are the rings' ramp (A, B, H): p = p0 10^(t - 1.1) at the
+    // times t = k dt, dt = 0.1, k = 1..21, that is 1e5 Pa at step 1,
+    // p0 = 1e6 Pa at step 11 and 1e7 Pa at step 21. The rings are elastic, so
+    // each step is an independent problem at its own load: the ramp maps the
+    // error over two decades of load.
+    s.add("Program",
+          program,
+          "ramp",
+          {{"ramp", LoadProgramType::ramp},
+           {"rotation", LoadProgramType::rotation},
+           {"steps", LoadProgramType::steps}},
+          "ramp: the pressure p(t) = p0 10^(t - 1.1) at t = k dt "
+          "(the rings' A, B, H, the patch test); rotation: the pressure "
+          "fixed, a boundary turned through s elements (the rings' C-G); "
+          "steps: the pseudo-times of 'Time points', or t = k / n for "
+          "k = 1..n with n = 'Number of steps' (a general problem, whose "
+          "expressions take t).");
+    s.add("Number of steps",
+          number_of_steps,
+          "1",
+          1,
+          max_steps,
+          "Program = steps: n equal steps from t = 0 to 1.");
+    s.add("Time points",
+          "",
+          Patterns::Anything(),
+          "Program = steps: the pseudo-times at the ends of "
+          "the steps, increasing from above 0, e.g. '0.1, "
+          "0.5, 1', and ranges from:step:to of equal steps "
+          "after 'from' up to 'to', e.g. '0:0.02:1, "
+          "1:0.005:2' (empty: 'Number of steps' equal "
+          "steps).",
+          [this](const std::string &text) {
+            time_points = parse_time_points(text);
+          });
+    s.add("Reference pressure",
+          reference_pressure,
+          "1e6",
+          "p0 [Pa] of the ramp (p = p0 at t = 1.1).",
+          positive());
+    s.add("Ramp steps",
+          ramp_steps,
+          "21",
+          1,
+          max_steps,
+          "Number of steps of the ramp.");
+    s.add("Time step",
+          time_step,
+          "0.1",
+          "dt of the ramp [pseudo-time].",
+          positive());
+    // The rotation (C-G): p = 1e7 Pa held while s goes from 0 to 1 in 100 equal
+    // steps, the document's N_t (the newest published inputs take 10). At s = 1
+    // the inner ring has turned through one element and the meshes face each
+    // other again.
+    s.add("Rotation pressure",
+          rotation_pressure,
+          "1e7",
+          "Equivalent pressure p [Pa] held during the rotation.",
+          positive());
+    s.add("Rotation steps",
+          rotation_steps,
+          "100",
+          1,
+          max_steps,
+          "Nt, number of equal rotation steps.");
+    s.add("Rotation in elements",
+          rotation_elements,
+          "1",
+          "Final rotation parameter s: the angle is "
+          "2 pi s / (elements around).");
+  }
+
+  void
+  LoadParameters::finish()
+  {
+    // No Time points: 'Number of steps' equal steps from 0 to 1. Done here, not
+    // in an action, because the two entries may come in either order.
+    if (time_points.empty())
+      for (unsigned int k = 1; k <= number_of_steps; ++k)
+        time_points.push_back(static_cast<double>(k) / number_of_steps);
+    // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
+    // Named: the pressure itself when it is beyond reason on its own
+    // (over 1e99 Pa), else the time step that ramps it too far. The test is
+    // written in logarithms, so that it cannot overflow itself.
+    require(program != LoadProgramType::ramp ||
+              std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
+                100,
+            "Load program",
+            reference_pressure >= 1e99 ? "Reference pressure" : "Time step",
+            "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
+            "exceed 1e100 Pa (p0 = " +
+              to_text(reference_pressure) +
+              " Pa, n = " + std::to_string(ramp_steps) +
+              ", dt = " + to_text(time_step) + ")");
+  }
+
+  // @sect4{Subsection Newton}
+  //
+  // The semi-smooth Newton iteration of problem/newton.cc and its linear
+  // solver. The defaults are those doc/intro.md states: 12 iterations, after
+  // which the step is halved and retried, up to 5 times, and convergence at
+  // 1e-10 in scale-free measures.
+
+  void
+  NewtonParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Newton");
+    s.add("Maximum iterations",
+          max_iterations,
+          "12",
+          1,
+          1000,
+          "Newton iterations before the step is cut.");
+    // Relative measures with estimated round-off floors, so that one value fits
+    // any units and loads: modelisation A at p0 = 1e-200 Pa converges to the
+    // same p_A / analytic as at 1e6 Pa (test tiny_scales).
+    s.add("Tolerance",
+          tolerance,
+          "1e-10",
+          "Converged when the active set no longer changes and "
+          "(a) the residual of the free displacement rows "
+          "relative to the reaction forces and (b) the largest "
+          "gap of an active contact row relative to the largest "
+          "displacement are each below this or at their "
+          "round-off floor (10 eps times the magnitude of the "
+          "terms of the rows, estimated at every iteration): "
+          "scale-free, the same value fits any E, p and radii.",
+          {[](const double x) { return x > 0; }, "must be positive", 0});
+    s.add("Maximum step cuts",
+          max_step_cuts,
+          "5",
+          0,
+          30,
+          "How many times a step that fails is halved and "
+          "retried before the run stops.");
+    // The predictor. For the rings it extrapolates in the pressure and the
+    // rotation, for a general problem in the pseudo-time in which its boundary
+    // data are written; a step that fails from the extrapolated state is tried
+    // again from the last converged one before it is cut.
+    s.add("Extrapolate",
+          extrapolate,
+          "true",
+          "Start each step from the linear extrapolation of the "
+          "last two converged states.");
+    s.add("Verbose",
+          verbose,
+          "true",
+          "Print the residual of every Newton iteration.");
+    // 'auto' keeps a serial run free of MPI (starting it costs about a second):
+    // UMFPACK on one process, MUMPS under mpirun. MUMPS asked for on one
+    // process starts MPI for itself. The iterative solver is for meshes whose
+    // factors do not fit in memory; where both run it was slower than the
+    // direct ones at every size measured (doc/validation.md).
+    s.add("Linear solver",
+          linear_solver,
+          "auto",
+          {{"auto", LinearSolverType::automatic},
+           {"UMFPACK", LinearSolverType::umfpack},
+           {"MUMPS", LinearSolverType::mumps},
+           {"iterative", LinearSolverType::iterative}},
+          "The solver of the Newton systems. auto: UMFPACK on one process, "
+          "MUMPS on several (mpirun -np N ring_contact file.prm). UMFPACK is "
+          "serial; MUMPS factorizes on every process together, and also runs "
+          "on one (MPI is then started for it). Both keep their analysis of "
+          "the matrix while the sparsity pattern does not change. iterative: "
+          "GMRES with a block preconditioner (algebraic multigrid on the "
+          "displacements, an approximate Schur complement for the "
+          "multipliers), for meshes too large to factorize; one or several "
+          "processes; its iterations are printed with the Newton iterations.");
+    s.add("Linear tolerance",
+          linear_tolerance,
+          "1e-8",
+          "Linear solver = iterative: GMRES stops when the "
+          "relative residual |K x - b| / |b| is below this "
+          "(1e-14 to 1e-7; the Newton iteration converges as "
+          "with a direct solver when it is well below the "
+          "Newton tolerance).",
+          {[](const double x) { return x >= 1e-14 && x <= 1e-7; },
+           "must be between 1e-14 and 1e-7"});
+  }
+
+  // @sect4{Subsection Output}
+  //
+  // Results go to results/<name of the .prm> in the folder the program runs in,
+  // unlike 'Mesh file', which is relative to the .prm. The folder is held by
+  // one run at a time and cleared of an earlier run's files only once the new
+  // run's input and mesh are found good (output/output_folder.cc).
+
+  void
+  OutputParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Output");
+    s.add("Directory",
+          directory,
+          "",
+          "Where results go; empty: results/<prm file name> in "
+          "the current folder.");
+    s.add("VTU interval",
+          vtu_interval,
+          "1",
+          0,
+          1000000000,
+          "Write VTU files every this many steps (0: never; the "
+          "last step is always written when > 0).");
+    // 0: the highest of the mapping and displacement degrees
+    // (problem/postprocessing.cc), the cells written as VTK Lagrange cells of
+    // that degree, so that curved edges are shown curved and a Q2 field is not
+    // drawn bilinear.
+    s.add("VTU subdivisions",
+          vtu_subdivisions,
+          "0",
+          0,
+          8,
+          "Subdivisions of each cell in the VTU files; 0: the "
+          "mapping degree (curved cells are shown curved).");
+    s.add("Write history",
+          write_history,
+          "true",
+          "Write history.csv (one row per step and scheme) and "
+          "verdicts.csv (one row per check).");
+    s.add("Print steps",
+          print_steps,
+          "true",
+          "Print one line per step (load, Newton iterations, "
+          "pressure at A, error).");
+    // Switched off in the tests: the times change from run to run, and a test's
+    // output is compared line by line with the expected one.
+    s.add("Print timing",
+          print_timing,
+          "true",
+          "Print the timing summary at the end, and the direct "
+          "solver's factorizations and their flops (switch off in "
+          "tests).");
+  }
+
+  void
+  OutputParameters::finish(const std::string &prm_name)
+  {
+    if (directory.empty())
+      directory = "results/" + prm_name;
+  }
+
+  // @sect4{Subsection Checks}
+  //
+  // The original's TEST_RESU, for the scenarios that know the pressure
+  // everywhere on the slave surface (the rings' closed form, the patch test's
+  // uniform p): one quantity, the steps it is checked at and the tolerance. A
+  // general problem has its own checks ('Check 1' to '12'), so these entries
+  // are restricted to the scenarios that read them.
+
+  void
+  CheckParameters::add_parameters(ParameterHandler &prm)
+  {
+    Subsection s(prm, "Checks");
+    // The pressure at A is the original's check. The spread is the patch
+    // test's: its exact pressure is uniform, so the spread is zero in any
+    // kinematics, where the value p itself is exact in small strain only.
+    s.add("Quantity",
+          quantity,
+          "pressure at A",
+          {{"pressure at A", CheckedQuantity::pressure_at_A},
+           {"L2 error of pressure", CheckedQuantity::l2_pressure_error},
+           {"pressure spread", CheckedQuantity::pressure_spread}},
+          "The checked value (the original's TEST_RESU): the "
+          "contact pressure at node A against the analytic "
+          "pressure, the relative L2 error of the pressure "
+          "over the slave surface (reference 0), or the spread "
+          "(largest - smallest nodal pressure) / analytic "
+          "pressure (reference 0).");
+    s.add("Steps",
+          "all",
+          Patterns::Anything(),
+          "'all', 'last', 'none', or a comma-separated list of "
+          "step numbers (1-based).",
+          [this](const std::string &text) {
+            steps_from_text(text, "Checks", "Steps", every_step, steps);
+          });
+    // 2 %, the document's tolerance for the ramps; the rotation files set 4 %.
+    s.add("Tolerance",
+          tolerance,
+          "0.02",
+          "Largest admitted relative error (0.02 = 2 %).",
+          not_negative());
+  }
+} // namespace RingContact

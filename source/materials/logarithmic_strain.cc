@@ -1,0 +1,185 @@
+// @sect3{Hencky: the linear law on the logarithmic strain}
+//
+// Logarithmic strain (Hencky): the strain E = ln(C) / 2 and the linear
+// isotropic law on it, T = lambda tr(E) I + 2 mu E, T the stress conjugate
+// to E. For an elastic law this is the logarithmic-strain framework of
+// Miehe, Apel and Lambrecht (2002) that Code_Aster runs as GDEF_LOG: there
+// the small-strain law is written on E and its stress T projected to the
+// second Piola-Kirchhoff stress S = T : dE/dC... with the exact projection
+// tensor, which is what differentiating the energy below does.
+//
+// In two dimensions the energy psi = mu E : E + lambda/2 (tr E)^2 has a
+// closed form in F that needs no eigenvectors. With J = det F (in plane),
+// kappa = F : F = tr C and the eigenvalues c1, c2 of C,
+//   tr E  = (ln c1 + ln c2) / 2 = ln J,
+//   E : E = ((ln c1)^2 + (ln c2)^2) / 4 = (ln J)^2 / 2 + t^2 / 2,
+//   t     = (ln c1 - ln c2) / 2 = atanh(u),  u^2 = 1 - 4 J^2 / kappa^2,
+// so that
+//   psi(F) = (lambda + mu) / 2 (ln J)^2 + mu / 2 t^2.
+// Plane strain: E33 = 0. Plane stress: T33 = 0, i.e. E33 = -lambda /
+// (lambda + 2 mu) ln J, and minimizing over E33 leaves the same energy with
+// lambda* = 2 lambda mu / (lambda + 2 mu) (ElasticConstants::lambda): the
+// reduced energy's derivatives are the plane-stress stress and tangent.
+//
+// Its derivatives, with G = F^-T, N = G - 2 F / kappa, r = 4 J^2 / kappa^2
+// and w(r) = -atanh(u) / u (so that d(t^2)/dr r = w):
+//   P = (lambda + mu) ln J G + mu w N,
+//   A_iJkL = (lambda + mu) (G_kL G_iJ - ln J G_iL G_kJ)
+//          + mu (2 r w'(r) N_kL N_iJ
+//                + w (-G_iL G_kJ - 2 d_ik d_JL / kappa
+//                     + 4 F_iJ F_kL / kappa^2)).
+// w and w' are smooth at u = 0 (a pure dilatation, where c1 = c2 and the
+// spectral formulas divide by zero); near it they are summed as series in
+// u^2. And u^2 is computed without cancellation: kappa - 2 J = (F11 -
+// F22)^2 + (F12 + F21)^2 = (H11 - H22)^2 + (H12 + H21)^2 exactly, so
+// u^2 = (kappa - 2 J)(kappa + 2 J) / kappa^2; ln J = log1p(tr H + det H);
+// N = (2 J (cof F - F) + (kappa - 2 J) cof F) / (J kappa), cof F - F
+// written in H.
+// At small strain P -> lambda tr(H) I + mu (H + H^T), linear elasticity.
+#include <ring_contact/materials/material.h>
+
+#include <cmath>
+
+namespace RingContact
+{
+  namespace
+  {
+    // @sect4{The invariants of F}
+    //
+    // The kinematic quantities of F = I + H that the energy depends on,
+    // computed once per quadrature point and shared by the stress, the
+    // tangent and the out-of-plane quantities.
+    struct Invariants
+    {
+      explicit Invariants(const Tensor<2, 2> &H)
+      {
+        const Tensor<2, 2> I = unit_symmetric_tensor<2>();
+        F                    = I + H;
+        const double dilatation =
+          H[0][0] + H[1][1] + H[0][0] * H[1][1] - H[0][1] * H[1][0];
+        J               = 1 + dilatation;
+        log_J           = std::log1p(dilatation);
+        const double d1 = H[0][0] - H[1][1], d2 = H[0][1] + H[1][0];
+        const double shear = d1 * d1 + d2 * d2; // kappa - 2 J
+        kappa              = 2 * J + shear;
+        u2                 = shear * (kappa + 2 * J) / (kappa * kappa);
+        r                  = 1 - u2;
+        // G = cof(F) / J; N = G - 2 F / kappa = (2 J (cof(F) - F) +
+        // (kappa - 2 J) cof(F)) / (J kappa), with cof(F) - F written in H:
+        // at small strain N is O(H), and G - 2 F / kappa would leave it to
+        // the round-off of O(1) terms (steel at p = 1e2: a stress noise of
+        // 1e-7 of the stress, and Newton stalled there).
+        Tensor<2, 2> cofactor, cofactor_minus_F;
+        cofactor[0][0]         = 1 + H[1][1];
+        cofactor[0][1]         = -H[1][0];
+        cofactor[1][0]         = -H[0][1];
+        cofactor[1][1]         = 1 + H[0][0];
+        cofactor_minus_F[0][0] = H[1][1] - H[0][0];
+        cofactor_minus_F[0][1] = -d2;
+        cofactor_minus_F[1][0] = -d2;
+        cofactor_minus_F[1][1] = H[0][0] - H[1][1];
+        G                      = cofactor / J;
+        N = (2 * J * cofactor_minus_F + shear * cofactor) / (J * kappa);
+        // w = -atanh(u) / u and w' = dw/dr.
+        if (u2 < 1e-2)
+          {
+            // -sum u^2k / (2k + 1) and sum k u^(2k-2) / (2k + 1), to u^14.
+            w               = 0;
+            w_prime         = 0;
+            double power    = 1; // u^(2k)
+            double previous = 1; // u^(2k-2)
+            for (unsigned int k = 0; k <= 7; ++k)
+              {
+                w -= power / (2 * k + 1);
+                if (k > 0)
+                  w_prime += k * previous / (2 * k + 1);
+                previous = power;
+                power *= u2;
+              }
+          }
+        else
+          {
+            const double u = std::sqrt(u2);
+            w              = -std::atanh(u) / u;
+            // w' = (1 / (r u^2) - atanh(u) / u^3) / 2.
+            w_prime = 0.5 * (1 / (r * u2) + w / u2);
+          }
+      }
+
+      Tensor<2, 2> F, G, N;
+      double       J, log_J, kappa, u2, r, w, w_prime;
+    };
+
+    // @sect4{The law}
+    //
+    // P and A are the closed forms at the top of this file, lambda the
+    // in-plane constant of the assumption (lambda* in plane stress); the
+    // out-of-plane quantities use the 3d lambda.
+    class LogarithmicStrain : public MaterialLaw
+    {
+    public:
+      explicit LogarithmicStrain(const ElasticConstants &constants)
+          : c(constants)
+      {}
+
+      Tensor<2, 2>
+      stress(const Tensor<2, 2> &H) const override
+      {
+        const Invariants k(H);
+        return (c.lambda + c.mu) * k.log_J * k.G + c.mu * k.w * k.N;
+      }
+
+      void
+      stress_and_tangent(const Tensor<2, 2> &H,
+                         Tensor<2, 2>       &P,
+                         Tensor<4, 2>       &A) const override
+      {
+        const Invariants    k(H);
+        const Tensor<2, 2> &F = k.F, &G = k.G, &N = k.N;
+        P = (c.lambda + c.mu) * k.log_J * G + c.mu * k.w * N;
+        const double volumetric = c.lambda + c.mu;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int J = 0; J < 2; ++J)
+            for (unsigned int m = 0; m < 2; ++m)
+              for (unsigned int L = 0; L < 2; ++L)
+                A[i][J][m][L] =
+                  volumetric *
+                    (G[m][L] * G[i][J] - k.log_J * G[i][L] * G[m][J]) +
+                  c.mu * (2 * k.r * k.w_prime * N[m][L] * N[i][J] +
+                          k.w * (-G[i][L] * G[m][J] -
+                                 (i == m && J == L ? 2 / k.kappa : 0.) +
+                                 4 * F[i][J] * F[m][L] / (k.kappa * k.kappa)));
+      }
+
+      // Plane strain: T33 = lambda tr(E) = lambda ln J is the Kirchhoff
+      // stress tau33 (3 is a principal direction), sigma33 = tau33 / J.
+      double
+      out_of_plane_stress(const Tensor<2, 2> &H) const override
+      {
+        if (c.plane == PlaneAssumption::plane_stress)
+          return 0;
+        const Invariants k(H);
+        return c.lambda_3d * k.log_J / k.J;
+      }
+
+      // Plane stress: F33 = exp(E33), E33 = -lambda / (lambda + 2 mu) ln J.
+      double
+      thickness_stretch(const Tensor<2, 2> &H) const override
+      {
+        if (c.plane == PlaneAssumption::plane_strain)
+          return 1.0;
+        const Invariants k(H);
+        return std::exp(-c.lambda_3d / (c.lambda_3d + 2 * c.mu) * k.log_J);
+      }
+
+    private:
+      const ElasticConstants c;
+    };
+  } // namespace
+
+  std::shared_ptr<const MaterialLaw>
+  make_logarithmic_strain(const ElasticConstants &constants)
+  {
+    return std::make_shared<LogarithmicStrain>(constants);
+  }
+} // namespace RingContact

@@ -1,0 +1,133 @@
+// @sect3{Materials: the elastic constants and the choice of a law}
+//
+// Every body of a problem carries a Material: its Young's modulus, Poisson's
+// ratio, the two-dimensional assumption (plane stress or plane strain) and
+// the kinematics that chooses its law. The laws themselves live one per
+// file (saint_venant_kirchhoff.cc, linear_elasticity.cc,
+// logarithmic_strain.cc, neo_hookean.cc) behind the MaterialLaw interface;
+// this file holds what they share: the Lame constants of the 2d
+// assumption, the factory that maps a kinematics to its law, and the two
+// outputs that are the same formula for every finite-strain law, the
+// Cauchy stress and the von Mises stress written to the VTU files.
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <ring_contact/materials/material.h>
+
+#include <cmath>
+
+namespace RingContact
+{
+  namespace
+  {
+    // The three-dimensional Lame constants of an isotropic material, E in
+    // Pa and nu dimensionless; lambda diverges as nu -> 1/2, which the
+    // parameters refuse.
+    double
+    lame_lambda(const double E, const double nu)
+    {
+      return E * nu / ((1 + nu) * (1 - 2 * nu));
+    }
+
+    double
+    lame_mu(const double E, const double nu)
+    {
+      return E / (2 * (1 + nu));
+    }
+  } // namespace
+
+  // @sect4{The constants of the 2d assumption}
+  //
+  // Plane strain keeps the 3d lambda: eps33 = 0 removes the out-of-plane
+  // strain from the law. Plane stress eliminates it instead: sigma33 = 0
+  // gives eps33 = -lambda / (lambda + 2 mu) (eps11 + eps22), and the
+  // in-plane law keeps its form with lambda* = 2 lambda mu / (lambda + 2 mu)
+  // = E nu / (1 - nu^2), mu unchanged. This holds for every law that is
+  // linear in its strain measure (small strain, Saint Venant-Kirchhoff on
+  // E, Hencky on ln(C) / 2). The 3d lambda is kept as well: the thickness
+  // stretch, sigma33 in plane strain, and the neo-Hookean law, whose
+  // plane-stress F33 is found by Newton's method, need it.
+  ElasticConstants::ElasticConstants(const double          E,
+                                     const double          nu,
+                                     const PlaneAssumption plane)
+      : youngs_modulus(E)
+      , poissons_ratio(nu)
+      , plane(plane)
+      , lambda(plane == PlaneAssumption::plane_strain ?
+                 lame_lambda(E, nu) :
+                 2 * lame_lambda(E, nu) * lame_mu(E, nu) /
+                   (lame_lambda(E, nu) + 2 * lame_mu(E, nu)))
+      , mu(lame_mu(E, nu))
+      , lambda_3d(lame_lambda(E, nu))
+  {}
+
+  // @sect4{The law of a kinematics}
+  //
+  // The one place that knows every law: adding a law is a file and a case
+  // here. The switch has no default, so that -Wswitch (part of -Wall)
+  // names a Kinematics without its case; the nullptr after it is never
+  // reached.
+  std::shared_ptr<const MaterialLaw>
+  make_material_law(const ElasticConstants &constants,
+                    const Kinematics        kinematics)
+  {
+    switch (kinematics)
+      {
+        case Kinematics::finite_strain:
+          return make_saint_venant_kirchhoff(constants);
+        case Kinematics::small_strain:
+          return make_linear_elasticity(constants);
+        case Kinematics::logarithmic_strain:
+          return make_logarithmic_strain(constants);
+        case Kinematics::neo_hookean:
+          return make_neo_hookean(constants);
+      }
+    return nullptr;
+  }
+
+  // A law holds only its constants (no state at the quadrature points:
+  // the laws are hyperelastic, without history), so one instance is shared
+  // by every copy of the Material: the problem and the VTU writer keep
+  // them by value in maps from the material id.
+  Material::Material(const double          E,
+                     const double          nu,
+                     const PlaneAssumption plane,
+                     const Kinematics      kinematics)
+      : youngs_modulus(E)
+      , poissons_ratio(nu)
+      , plane(plane)
+      , kinematics(kinematics)
+      , law(make_material_law(ElasticConstants(E, nu, plane), kinematics))
+  {}
+
+  // @sect4{The Cauchy stress of the finite-strain laws}
+  //
+  // sigma = P F^T / J with the 3d deformation gradient F = [F2 0; 0 F33]:
+  // its in-plane block is P2 F2^T, and J = det F2 F33. In plane stress the
+  // body thins (F33 < 1 under tension), so the thickness stretch enters J;
+  // in plane strain F33 = 1. Written once here for Saint Venant-Kirchhoff,
+  // Hencky and neo-Hookean alike (each had its own copy before); small
+  // strain overrides it, its stress being sigma already.
+  Tensor<2, 2>
+  MaterialLaw::cauchy_stress(const Tensor<2, 2> &H) const
+  {
+    const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+    return stress(H) * transpose(F) / (determinant(F) * thickness_stretch(H));
+  }
+
+  // @sect4{The von Mises stress}
+  //
+  // The 3d formula, sqrt(((s11 - s22)^2 + (s22 - s33)^2 + (s33 - s11)^2) / 2
+  // + 3 s12^2), with the law's sigma33: zero in plane stress, but not in
+  // plane strain, where the plane-stress formula that every run once used
+  // misstated it.
+  double
+  Material::von_mises_stress(const Tensor<2, 2> &grad_u) const
+  {
+    const Tensor<2, 2> s   = cauchy_stress(grad_u);
+    const double       s33 = out_of_plane_stress(grad_u);
+    return std::sqrt(0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
+                            (s[1][1] - s33) * (s[1][1] - s33) +
+                            (s33 - s[0][0]) * (s33 - s[0][0])) +
+                     3 * s[0][1] * s[0][1]);
+  }
+} // namespace RingContact

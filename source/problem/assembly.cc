@@ -1,0 +1,546 @@
+// @sect3{Assembly: the bulk, the boundary loads and the contact terms}
+//
+// The residual R of the virtual work and its tangent at the current
+// solution, into the linear system (rhs = -R): the bulk's total Lagrangian
+// virtual work with each body's material law (materials/), the loads of the
+// scenario's boundaries, and the contact terms of each pair (contact/,
+// exactly linearised by automatic differentiation). Each row also gets the
+// magnitude of the terms it is summed from, machine epsilon times which is
+// the round-off of the residual (the floors of newton.cc).
+//
+// Signs: the system receives -R, as deal.II's tutorials assemble it; the
+// vectors internal_force and external_force receive their parts of R, the
+// bulk's f_int and the loads' -f_applied (nodal_forces() turns the latter
+// back for equilibrium.h).
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/hp/fe_values.h>
+
+#include <ring_contact/base/components.h>
+#include <ring_contact/base/utilities.h>
+#include <ring_contact/problem/contact_problem.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace RingContact
+{
+  // @sect4{The reference geometry, once}
+  //
+  // What the total Lagrangian assembly needs of the reference
+  // configuration, which does not move: per cell of this process and
+  // quadrature point, JxW and the gradients of the displacement's scalar
+  // shape functions (both components share them). Evaluated once, by
+  // FEValues through the mapping, instead of at every assembly (a fifth
+  // of an assembly at 640 x 48). 288 bytes per Q1 cell, 1.4 kB per Q2
+  // cell: about a tenth of the memory of the factorization at 640 x 48.
+  //
+  // The layout per finite element of the collection says where each
+  // unknown's gradient is found: both displacement components of FE_Q(p)^2
+  // share one scalar shape function, so the gradients are stored per
+  // scalar function (n_bases per point), not per unknown, which halves
+  // them.
+  void
+  ContactProblem::store_reference_geometry()
+  {
+    auto &geometry = reference_geometry;
+    geometry.layout.resize(fe_collection.size());
+    for (unsigned int k = 0; k < fe_collection.size(); ++k)
+      {
+        const FiniteElement<2> &fe     = fe_collection[k];
+        auto                   &layout = geometry.layout[k];
+        layout.n_q_points              = q_collection[k].size();
+        layout.component.resize(fe.n_dofs_per_cell());
+        layout.u_dofs.clear();
+        layout.base.clear();
+        layout.n_bases = 0;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            layout.component[i] = fe.system_to_component_index(i).first;
+            if (!Components::is_displacement(layout.component[i]))
+              continue;
+            // The index of the scalar shape function in its base element.
+            layout.u_dofs.push_back(i);
+            layout.base.push_back(fe.system_to_base_index(i).second);
+            layout.n_bases = std::max(layout.n_bases, layout.base.back() + 1);
+          }
+      }
+    // Through each body's mapping: on curved rings (mapping degree 2 and
+    // more) the reference geometry is the polar manifold's, not the
+    // straight cells'.
+    hp::FEValues<2> hp_fe_values(mapping_collection,
+                                 fe_collection,
+                                 q_collection,
+                                 update_gradients | update_JxW_values);
+    geometry.start.assign(triangulation.n_active_cells(), {0, 0});
+    geometry.JxW.clear();
+    geometry.gradients.clear();
+    // Only this process's cells: under MPI each stores what it assembles,
+    // and the others keep an empty start.
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->subdomain_id() != this_process)
+          continue;
+        hp_fe_values.reinit(cell);
+        const FEValues<2> &fe_values = hp_fe_values.get_present_fe_values();
+        const auto        &layout    = geometry.layout[cell->active_fe_index()];
+        geometry.start[cell->active_cell_index()] = {geometry.JxW.size(),
+                                                     geometry.gradients.size()};
+        for (unsigned int q = 0; q < layout.n_q_points; ++q)
+          {
+            geometry.JxW.push_back(fe_values.JxW(q));
+            const std::size_t first = geometry.gradients.size();
+            geometry.gradients.resize(first + layout.n_bases);
+            for (unsigned int a = 0; a < layout.u_dofs.size(); ++a)
+              geometry.gradients[first + layout.base[a]] =
+                fe_values.shape_grad(layout.u_dofs[a], q);
+          }
+      }
+    geometry.JxW.shrink_to_fit();
+    geometry.gradients.shrink_to_fit();
+  }
+
+  // @sect4{Pairing, then assembly}
+  //
+  // Pair, choose the active set, and assemble the Newton system at the
+  // current solution; a new sparsity pattern when the pairs left the old.
+  //
+  // The pairing is redone at every assembly (large sliding: the partners at
+  // the end of a step are not those of its start), unless the Newton loop
+  // holds it because it cycles (`pairing`). The count of nodes whose
+  // status changed goes back to the Newton loop, which accepts no iterate
+  // whose active set is still changing.
+  unsigned int
+  ContactProblem::assemble_newton_system(
+    const ContactInterface::Pairing pairing,
+    const Assembly                  what)
+  {
+    // Only finite numbers in the state: an update that overflowed (a body
+    // as soft as E = 1e-200, a diverging iterate) fails the iteration here,
+    // with its reason, before the contact search computes with it.
+    for (const double value : solution)
+      if (!std::isfinite(value))
+        throw NonFiniteState("the displacement or contact pressure is not a "
+                             "finite number after the Newton update");
+    unsigned int n_changed;
+    {
+      TimerOutput::Scope t(timer, "contact search");
+      n_changed = 0;
+      for (const auto &contact : contacts)
+        n_changed += contact->update(solution, pairing);
+    }
+    // A point that slid onto a master segment beyond its old partner's
+    // neighbours couples unknowns the pattern has no room for: the pattern
+    // is made again before anything is added to it.
+    if (!std::all_of(contacts.begin(),
+                     contacts.end(),
+                     [](const std::unique_ptr<ContactInterface> &contact) {
+                       return contact->sparsity_covers_pairing();
+                     }))
+      make_sparsity_pattern();
+    assemble_system(what);
+    return n_changed;
+  }
+
+  // @sect4{The Newton system}
+  //
+  // Bulk: total Lagrangian virtual work int P : Grad(delta u) dV and its
+  // tangent int Grad(delta u) : A : Grad(du) dV; then the contact terms and
+  // the boundary loads. Without the tangent (Assembly::residual) the bulk's
+  // cells give their residual alone, from the stress alone: a third of the
+  // work (the contact terms are whole either way). The constraints of the
+  // lifting update are not homogeneous and act on the right-hand side
+  // through the matrix: that assembly always has its tangent.
+  //
+  // The order is that of the magnitudes: the contact terms first, alone in
+  // the system, so that their rows' magnitudes can be read off it; then the
+  // bulk and the loads, which add theirs cell by cell.
+  void
+  ContactProblem::assemble_system(Assembly what)
+  {
+    if (update_constraints().has_inhomogeneities())
+      what = Assembly::residual_and_tangent;
+    TimerOutput::Scope t(timer, "assembly");
+    const bool         tangent = what == Assembly::residual_and_tangent;
+    tangent_assembled          = tangent;
+    system->set_zero();
+    internal_force     = 0;
+    external_force     = 0;
+    residual_magnitude = 0;
+    // Counted afresh: the Newton loop and the line search judge the state
+    // just assembled, and reject it if any point is inverted.
+    n_inverted = 0;
+    min_det_F  = std::numeric_limits<double>::max();
+
+    assemble_contact_terms();
+    // At the first assembly: the partition and the mappings are known, and
+    // the reference configuration does not change after it.
+    if (reference_geometry.start.empty())
+      store_reference_geometry();
+    assemble_bulk(tangent);
+
+    // A load that is not a finite number at a face of one process fails the
+    // load step on every process. The error is held until after compress()
+    // and the sums below, which every process must reach: thrown on one
+    // process alone, it would leave the others waiting in them.
+    std::string boundary_data_error;
+    try
+      {
+        assemble_boundary_loads();
+      }
+    catch (const BoundaryDataError &e)
+      {
+        boundary_data_error = e.what();
+      }
+    system->compress();
+    if (n_processes > 1)
+      {
+        // The sums over the processes' cells: every process then holds the
+        // whole force vectors, so that the convergence measures and the
+        // invariants are the same on all of them.
+        for (Vector<double> *v :
+             {&internal_force, &external_force, &residual_magnitude})
+          sum_over_processes(*v, communicator);
+        n_inverted = Utilities::MPI::sum(n_inverted, communicator);
+        min_det_F  = Utilities::MPI::min(min_det_F, communicator);
+        for (const BoundaryLoad &load : boundary_loads)
+          for (unsigned int d = 0; d < 2; ++d)
+            applied_resultant[load.boundary_id][d] =
+              Utilities::MPI::sum(applied_resultant[load.boundary_id][d],
+                                  communicator);
+        for (const auto &message :
+             Utilities::MPI::all_gather(communicator, boundary_data_error))
+          if (!message.empty())
+            {
+              boundary_data_error = message;
+              break;
+            }
+      }
+    if (!boundary_data_error.empty())
+      throw BoundaryDataError(boundary_data_error);
+    // The magnitude of the terms of each row at the last assembly with the
+    // tangent (the others have the contact's only): the round-off scale of
+    // the forces for the invariants of the converged state, whose own
+    // assembly may have skipped the tangent.
+    if (tangent)
+      tangent_magnitude = residual_magnitude;
+  }
+
+  // @sect4{The contact terms and their round-off}
+  //
+  // The contact terms first, on their own, to measure their magnitudes: a
+  // contact row is computed from positions X + u (the gap, the normal), so
+  // its round-off is eps |K_ij| (|X| + |u_j|), not eps |K_ij| |u_j|. At
+  // p = 1e4 on steel this is a thousand times the bulk's.
+  void
+  ContactProblem::assemble_contact_terms()
+  {
+    for (const auto &contact : contacts)
+      contact->assemble(solution, update_constraints(), *system);
+    // The contact points of other processes add to this process's rows too:
+    // the rows are whole only after compress(), and only the owner of a row
+    // has its entries.
+    system->compress();
+    {
+      // The largest |X| of the mesh bounds the position of every node: the
+      // scale of the round-off of a position, whatever its displacement.
+      double largest_position = 0;
+      for (const auto &vertex : triangulation.get_vertices())
+        largest_position = std::max(largest_position, vertex.norm());
+      for (const auto i : locally_owned_dofs)
+        {
+          double magnitude = std::abs(system->rhs()(i));
+          // A multiplier column enters with its value alone: lambda is no
+          // position, and its terms' round-off is relative to it.
+          system->for_each_entry(i, [&](const auto j, const double value) {
+            magnitude +=
+              std::abs(value) * (std::abs(solution(j)) +
+                                 (is_multiplier[j] ? 0 : largest_position));
+          });
+          residual_magnitude(i) = magnitude;
+        }
+    }
+  }
+
+  // @sect4{The bulk}
+  //
+  // The bulk, cell by cell with the reference geometry stored once: the
+  // displacement shape functions each have one nonzero component c, Grad
+  // phi = e_c (x) grad(phi_c), so that Grad u = sum_i u_i e_c (x)
+  // grad(phi_i), P : Grad(phi_i) = P_cJ d_J phi_i and the tangent is d_J
+  // phi_i A_cJdL d_L phi_j.
+  void
+  ContactProblem::assemble_bulk(const bool tangent)
+  {
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<Tensor<2, 2>>            grad_u;
+    std::vector<Tensor<1, 2>>            grad_phi;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->subdomain_id() != this_process)
+          continue;
+        const FiniteElement<2> &fe       = cell->get_fe();
+        const unsigned int      n        = fe.n_dofs_per_cell();
+        const Material         &material = materials.at(cell->material_id());
+        const auto &layout = reference_geometry.layout[cell->active_fe_index()];
+        const auto &u_dofs = layout.u_dofs;
+        const auto &component         = layout.component;
+        const unsigned int n_q_points = layout.n_q_points;
+        // This cell's stored values: JxW per point, and the gradient of
+        // scalar function k at point q at gradients[q * n_bases + k].
+        const auto start = reference_geometry.start[cell->active_cell_index()];
+        const double       *JxW_values = &reference_geometry.JxW[start.first];
+        const Tensor<1, 2> *gradients =
+          &reference_geometry.gradients[start.second];
+        cell_matrix.reinit(n, n);
+        cell_rhs.reinit(n);
+        dofs.resize(n);
+        cell->get_dof_indices(dofs);
+
+        // Grad u at every quadrature point, row c of it summed from the
+        // unknowns of component c times their stored scalar gradients:
+        // what FEValues' get_function_gradients() gave after a reinit(),
+        // without either.
+        grad_phi.resize(u_dofs.size());
+        grad_u.assign(n_q_points, Tensor<2, 2>());
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          for (unsigned int a = 0; a < u_dofs.size(); ++a)
+            grad_u[q][component[u_dofs[a]]] +=
+              solution(dofs[u_dofs[a]]) *
+              gradients[q * layout.n_bases + layout.base[a]];
+
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          {
+            // An inverted state (det F <= 0) has no physical meaning, in
+            // either kinematics: it is counted, the material law is not
+            // evaluated there (the neo-Hookean and logarithmic laws take
+            // ln J), and the Newton loop rejects the state; a line search
+            // trial halves its step instead. The negated test also counts a
+            // NaN det F.
+            const double det_F =
+              determinant(unit_symmetric_tensor<2>() + grad_u[q]);
+            min_det_F = std::min(min_det_F, det_F);
+            if (!(det_F > 0))
+              {
+                ++n_inverted;
+                continue;
+              }
+            // Without the tangent the law gives the stress alone, and no
+            // cell matrix is formed.
+            Tensor<2, 2> P;
+            Tensor<4, 2> A;
+            if (tangent)
+              material.stress_and_tangent(grad_u[q], P, A);
+            else
+              P = material.stress(grad_u[q]);
+            const double JxW = JxW_values[q];
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
+              grad_phi[a] = gradients[q * layout.n_bases + layout.base[a]];
+            for (unsigned int a = 0; a < u_dofs.size(); ++a)
+              {
+                // -R: the internal virtual work enters with a minus.
+                const unsigned int i = u_dofs[a], c = component[i];
+                cell_rhs(i) -= (P[c] * grad_phi[a]) * JxW;
+                if (!tangent)
+                  continue;
+                // A_cJdL grad_phi_a[J], for each d and L: contracted once
+                // per a, it leaves a 2 x 2 product per entry (a, b).
+                Tensor<2, 2> Ag;
+                for (unsigned int J = 0; J < 2; ++J)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    for (unsigned int L = 0; L < 2; ++L)
+                      Ag[d][L] += grad_phi[a][J] * A[c][J][d][L];
+                // The upper triangle: the laws are hyperelastic, A_cJdL =
+                // A_dLcJ, and the bulk's tangent is symmetric.
+                for (unsigned int b = a; b < u_dofs.size(); ++b)
+                  {
+                    const unsigned int j = u_dofs[b];
+                    cell_matrix(i, j) += (Ag[component[j]] * grad_phi[b]) * JxW;
+                  }
+              }
+          }
+        // The lower triangle mirrored; the multiplier rows and columns of
+        // a layer cell stay zero (the bulk has no multiplier terms).
+        if (tangent)
+          for (unsigned int a = 0; a < u_dofs.size(); ++a)
+            for (unsigned int b = 0; b < a; ++b)
+              cell_matrix(u_dofs[a], u_dofs[b]) =
+                cell_matrix(u_dofs[b], u_dofs[a]);
+        // With the cell's index: a cell without constrained unknowns, all
+        // its rows this process's, goes straight to the places of its
+        // entries in the matrix's storage, found once per sparsity pattern
+        // (LinearSystem::add_cell()). Inserting by global index was about
+        // 45 % of an assembly on the Trilinos path.
+        add_local_system(cell_matrix,
+                         cell_rhs,
+                         dofs,
+                         internal_force,
+                         cell->active_cell_index());
+      }
+  }
+
+  // Add a cell's (or face's) matrix and right-hand side -R to the system,
+  // its force R to `force` (internal or external), and to each row the
+  // magnitude of its terms: computed from the displacement alone, their
+  // round-off is eps sum_j |K_ij| |u_j| (see residual_measure()). Without
+  // the tangent, the right-hand side and the force alone.
+  void
+  ContactProblem::add_local_system(
+    const FullMatrix<double>                   &matrix,
+    const Vector<double>                       &rhs,
+    const std::vector<types::global_dof_index> &dofs,
+    Vector<double>                             &force,
+    const unsigned int                          cell)
+  {
+    // Without the tangent the constraints are homogeneous (assemble_system()
+    // makes sure of it), and condensing the right-hand side needs no matrix.
+    if (!tangent_assembled)
+      {
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          force(dofs[i]) -= rhs(i);
+        system->add_rhs(update_constraints(), rhs, dofs);
+        return;
+      }
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        force(dofs[i]) -= rhs(i);
+        double magnitude = std::abs(rhs(i));
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          magnitude += std::abs(matrix(i, j)) * std::abs(solution(dofs[j]));
+        residual_magnitude(dofs[i]) += magnitude;
+      }
+    // The faces of the boundary loads (no cell index) take the general
+    // path through AffineConstraints.
+    if (cell == numbers::invalid_unsigned_int)
+      system->add(update_constraints(), matrix, rhs, dofs);
+    else
+      system->add_cell(cell, update_constraints(), matrix, rhs, dofs);
+  }
+
+  // @sect4{The boundary loads}
+  //
+  // The scenario's boundary loads.
+  // A pressure p on the current configuration: the load -p n da, with
+  // n da = cof(F) N dA (Nanson; in two dimensions the cofactor det(F) F^-T
+  // is linear in F), adds int p phi_i . cof(F) N dA to the residual and,
+  // F = I + Grad u, the tangent int p phi_i . cof(Grad phi_j) N dA (not
+  // symmetric). A body in small strain: the dead load, cof(F) = I. p is
+  // evaluated at the reference position of the quadrature point.
+  // A traction t per reference length: the dead load, - int phi_i . t dA
+  // in the residual, no tangent.
+  void
+  ContactProblem::assemble_boundary_loads()
+  {
+    // The resultants of this assembly's state only (a follower pressure's
+    // changes with the surface).
+    applied_resultant.clear();
+    if (boundary_loads.empty())
+      return;
+    // cof(G) = det(G) G^-T, in two dimensions [[G11, -G10], [-G01, G00]]:
+    // linear in G, so that cof(I + Grad u) = I + cof(Grad u) and its
+    // derivative along phi_j is cof(Grad phi_j), exactly.
+    const auto cofactor = [](const Tensor<2, 2> &G) {
+      Tensor<2, 2> C;
+      C[0][0] = G[1][1];
+      C[0][1] = -G[1][0];
+      C[1][0] = -G[0][1];
+      C[1][1] = G[0][0];
+      return C;
+    };
+    // p + 1 Gauss points on the faces of an element of degree p (the
+    // FESystem's degree is its displacement's, which the multiplier's does
+    // not exceed).
+    hp::QCollection<1> face_q;
+    for (unsigned int i = 0; i < q_collection.size(); ++i)
+      face_q.push_back(QGauss<1>(fe_collection[i].degree + 1));
+    hp::FEFaceValues<2>                  hp_face_values(mapping_collection,
+                                       fe_collection,
+                                       face_q,
+                                       update_values | update_gradients |
+                                         update_normal_vectors |
+                                         update_quadrature_points |
+                                         update_JxW_values);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<Tensor<2, 2>>            grad_u;
+    FullMatrix<double>                   face_matrix;
+    Vector<double>                       face_rhs;
+    for (const BoundaryLoad &load : boundary_loads)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->subdomain_id() == this_process &&
+              cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == load.boundary_id)
+            {
+              hp_face_values.reinit(cell, f);
+              const FEFaceValues<2> &fv =
+                hp_face_values.get_present_fe_values();
+              const FiniteElement<2> &fe = cell->get_fe();
+              const unsigned int      n  = fe.n_dofs_per_cell();
+              const bool pressure = load.type == BoundaryLoad::Type::pressure;
+              // Each body's kinematics: a body in finite (or logarithmic)
+              // strain carries the pressure on its current surface.
+              const bool follower =
+                bodies[body_of_fe_index[cell->active_fe_index()]]
+                  .material.kinematics != Kinematics::small_strain;
+              dofs.resize(n);
+              cell->get_dof_indices(dofs);
+              face_matrix.reinit(n, n);
+              face_rhs.reinit(n);
+              // Grad u on the face, for cof(F); the face values are those of
+              // the reference configuration, and N is its outward normal.
+              grad_u.resize(fv.n_quadrature_points);
+              fv[displacement].get_function_gradients(solution, grad_u);
+              for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                {
+                  const Tensor<1, 2> value =
+                    load.value(fv.quadrature_point(q), current_load);
+                  // A pressure load's value is p in its first component; a
+                  // traction's is the vector t itself.
+                  const double       p  = value[0];
+                  const Tensor<1, 2> N  = fv.normal_vector(q);
+                  const double       dA = fv.JxW(q);
+                  // The force per unit of the face's measure, times dA.
+                  const Tensor<1, 2> force =
+                    pressure ?
+                      Tensor<1, 2>(
+                        -p *
+                        ((follower ?
+                            cofactor(unit_symmetric_tensor<2>() + grad_u[q]) :
+                            Tensor<2, 2>(unit_symmetric_tensor<2>())) *
+                         N) *
+                        dA) :
+                      Tensor<1, 2>(value * dA);
+                  // The integral of the load over its boundary, for the
+                  // scenario's resultant checks.
+                  applied_resultant[load.boundary_id] += force;
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int c =
+                        fe.system_to_component_index(i).first;
+                      if (!Components::is_displacement(c))
+                        continue;
+                      face_rhs(i) += fv.shape_value(i, q) * force[c];
+                      // A dead load does not depend on u: no tangent.
+                      if (!pressure || !follower)
+                        continue;
+                      for (unsigned int j = 0; j < n; ++j)
+                        {
+                          const unsigned int d =
+                            fe.system_to_component_index(j).first;
+                          if (!Components::is_displacement(d))
+                            continue;
+                          // Grad phi_j = e_d (x) grad(phi_j): its row d.
+                          Tensor<2, 2> G;
+                          G[d] = fv.shape_grad(j, q);
+                          face_matrix(i, j) += p * fv.shape_value(i, q) *
+                                               (cofactor(G) * N)[c] * dA;
+                        }
+                    }
+                }
+              add_local_system(face_matrix, face_rhs, dofs, external_force);
+            }
+  }
+} // namespace RingContact

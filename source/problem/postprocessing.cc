@@ -1,0 +1,374 @@
+// @sect3{Postprocessing: what a converged step reports}
+//
+// After each converged step: the history row (the solver's columns, the
+// scenario's quantities, the invariants of equilibrium.h), the step's line
+// in the log, and every so many steps the VTU files. Also the diagnostics
+// before the first step, and what the scenarios read of the state
+// (SolutionState): the contact nodes, the reported pressure, the nodal
+// forces.
+#include <ring_contact/base/utilities.h>
+#include <ring_contact/diagnostics/initial_interpenetration.h>
+#include <ring_contact/diagnostics/rigid_body_modes.h>
+#include <ring_contact/problem/contact_problem.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace RingContact
+{
+  // @sect4{Before the first step}
+  //
+  // The boundary data against the mesh, the rigid motions only the contact
+  // holds, what the problem is in one line, surfaces that interpenetrate
+  // before any load, and every quantity the scenario reports evaluated once
+  // at rest. Each check answers a wrong result once given without a word:
+  // a load along a direction its own boundary holds (the support took it
+  // silently), a body free to slide (the solver returned an arbitrary
+  // position and the run ended with exit code 0), surfaces that overlap at
+  // rest (H with a Q1 outer ring and Mapping degree = 0, a curved slave
+  // against a faceted master, passed 0 of its 63 checks with no word of
+  // why), a checked point far from every contact node (the nearest node's
+  // value was reported as the pressure there). Now each is an error or a
+  // warning before the first step, not after it.
+  void
+  ContactProblem::diagnose_start()
+  {
+    // At the pseudo-times of every step, since a general problem's boundary
+    // data are expressions of t.
+    {
+      std::vector<double> times;
+      for (unsigned int step = 1; step <= load_program.n_steps(); ++step)
+        times.push_back(load_program.time(step));
+      scenario->check_boundary_data(dof_handler, mapping_collection, times);
+    }
+    // Notes the bodies that only the contact holds, and throws if a motion
+    // is held by nothing: the tangent would be singular along it.
+    held_by_contact =
+      Diagnostics::rigid_body_modes(dof_handler,
+                                    mapping_collection,
+                                    bodies,
+                                    imposed_dofs,
+                                    normal_target,
+                                    normal_component,
+                                    contact_interfaces(),
+                                    parameters.contact.friction_coefficient > 0,
+                                    log);
+    log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
+        << " cells, " << dof_handler.n_dofs() << " unknowns, "
+        << n_contact_nodes() << " contact pressure nodes, "
+        << load_program.n_steps() << " steps\n";
+    const auto pairs = parameters.contact_pairs();
+    for (unsigned int i = 0; i < contacts.size(); ++i)
+      {
+        const auto &[slave, master] = pairs[i];
+        // A body of the pair held by the contact only absorbs an overlap
+        // by its motion: a way to start in contact (the Hertz problem's
+        // cylinder), not said.
+        if (held_by_contact.count(body_of_boundary.at(slave)) ||
+            held_by_contact.count(body_of_boundary.at(master)))
+          continue;
+        Diagnostics::report_initial_interpenetration(*contacts[i],
+                                                     solution,
+                                                     log);
+      }
+    // Every quantity the scenario reports, evaluated once at rest and
+    // thrown away: a quantity that cannot be evaluated throws now.
+    HistoryRow at_rest;
+    scenario->report(*this, at_rest);
+  }
+
+  // @sect4{The contact nodes}
+  //
+  // What the scenarios read of the contact, gathered over the pairs: a
+  // contact node is a multiplier unknown on a slave surface, and belongs to
+  // one pair. The lists leave out the end side's twins of a cyclic sector
+  // (one node, two unknowns tied by a constraint), so that counts and
+  // extremes see each node once.
+  std::vector<const ContactInterface *>
+  ContactProblem::contact_interfaces() const
+  {
+    std::vector<const ContactInterface *> interfaces;
+    for (const auto &contact : contacts)
+      interfaces.push_back(contact.get());
+    return interfaces;
+  }
+
+  std::vector<types::global_dof_index>
+  ContactProblem::contact_nodes() const
+  {
+    std::vector<types::global_dof_index> nodes;
+    for (const auto &contact : contacts)
+      nodes.insert(nodes.end(),
+                   contact->multiplier_dofs().begin(),
+                   contact->multiplier_dofs().end());
+    return nodes;
+  }
+
+  unsigned int
+  ContactProblem::n_contact_nodes() const
+  {
+    unsigned int n = 0;
+    for (const auto &contact : contacts)
+      n += contact->multiplier_dofs().size();
+    return n;
+  }
+
+  unsigned int
+  ContactProblem::n_active_nodes() const
+  {
+    unsigned int n = 0;
+    for (const auto &contact : contacts)
+      n += contact->n_active();
+    return n;
+  }
+
+  // The node nearest to a reference point over every pair: how node A of
+  // the rings, (R2, 0) on the slave surface, or a general problem's checked
+  // point is found. A point farther from every node than a slave segment
+  // is refused by the scenario before the first step.
+  types::global_dof_index
+  ContactProblem::contact_node_nearest_to(const Point<2> &point) const
+  {
+    double                  best = std::numeric_limits<double>::infinity();
+    types::global_dof_index node = numbers::invalid_dof_index;
+    for (const auto &contact : contacts)
+      {
+        double     distance = 0;
+        const auto nearest =
+          contact->multiplier_dof_nearest_to(point, &distance);
+        if (distance < best)
+          {
+            best = distance;
+            node = nearest;
+          }
+      }
+    return node;
+  }
+
+  // The unknown lambda is the Cauchy pressure, force per current length of
+  // the slave surface. The nominal pressure is force per reference length,
+  // lambda ds / dS: what Code_Aster reports as LAGS_C. At p = 1e7 the
+  // interface circle shrinks by about 1 %, and the two differ by as much,
+  // as large as the effects being measured: the file says which one to
+  // report (Contact/Reported pressure).
+  double
+  ContactProblem::reported_pressure(const types::global_dof_index dof) const
+  {
+    const double lambda = solution(dof);
+    return parameters.contact.reported_pressure == PressureMeasure::cauchy ?
+             lambda :
+             lambda * contact_of(dof).stretch_at(dof);
+  }
+
+
+  // @sect4{A converged step}
+  //
+  // The row of the step: the solver's columns, the scenario's quantities,
+  // and the invariants; the step's line in the log; a state that fails an
+  // invariant is reported, not recorded; then the VTU files.
+  void
+  ContactProblem::postprocess_step(const unsigned int step,
+                                   const unsigned int iterations,
+                                   const unsigned int cuts,
+                                   const double       wall_time)
+  {
+    TimerOutput::Scope t(timer, "postprocessing");
+    // The solver's columns; the scenario adds its quantities (pressure at
+    // a point, errors against its reference, resultants), then the
+    // invariants are measured on the same state.
+    HistoryRow row;
+    row.scheme            = scheme.name();
+    row.step              = step;
+    row.time              = current_time;
+    row.newton_iterations = iterations;
+    row.step_cuts         = cuts;
+    row.active_nodes      = n_active_nodes();
+    row.wall_time         = wall_time;
+    scenario->report(*this, row);
+    // A state that fails an invariant is not recorded: the history and the
+    // verdicts keep converged states that can be trusted only. Its line
+    // is still printed below, so that the log shows the state that failed.
+    const bool balanced = measure_balance_of_forces(row);
+    if (balanced)
+      history_rows.push_back(row);
+
+    if (parameters.output.print_steps)
+      {
+        log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
+            << std::setprecision(4) << row.time;
+        scenario->print_step(log, row);
+        // The invariants: the larger of the equilibrium and the
+        // action-reaction errors (equilibrium.h).
+        log << "  balance " << std::setprecision(2)
+            << (std::isnan(row.action_reaction_error) ?
+                  row.equilibrium_error :
+                  std::max(row.equilibrium_error, row.action_reaction_error))
+            << std::setprecision(6) << '\n';
+      }
+    // The run stops here with the reason (UntrustedState reaches the
+    // driver), before the step observer writes the step as converged.
+    if (!balanced)
+      throw UntrustedState(unbalanced_forces);
+    // The scenario's own warning about the step. The rings warn of a step
+    // converged with the contact open at every node: another solution of
+    // the discrete problem (F at finite strain once gave p_A = 0 so), which
+    // the checks fail without saying why.
+    scenario->warn(log, row);
+
+    // Every `interval` steps, and the last step whatever the interval.
+    const unsigned int interval = parameters.output.vtu_interval;
+    if (interval > 0 &&
+        (step % interval == 0 || step == load_program.n_steps()))
+      output_results(step);
+  }
+
+  // The nodal forces of the state (equilibrium.h), from the last assembly.
+  // That assembly is the converged iterate's own: the Newton loop stops at
+  // the iterate it has just assembled.
+  NodalForces
+  ContactProblem::nodal_forces() const
+  {
+    NodalForces forces;
+    forces.internal = internal_force;
+    forces.applied  = external_force;
+    forces.applied *= -1; // external_force is the loads' part of R
+    forces.supported = supported;
+    // As the Newton loop's floor of the forces (residual_measure()), with
+    // the same factor of ten. From the last assembly with the tangent: the
+    // converged iterate's own assembly may have skipped the cell matrices
+    // that the bulk's magnitudes come from.
+    forces.round_off = tangent_magnitude;
+    forces.round_off *= 10 * std::numeric_limits<double>::epsilon();
+    // Per pair, the contact terms' values before any constraint condenses
+    // them: a support whose node lies on a contact surface must not count
+    // the contact force there as its reaction. add_forces() walks every
+    // slave point, so every process gets the same vector.
+    for (const auto &contact : contacts)
+      {
+        forces.contact.emplace_back(dof_handler.n_dofs());
+        contact->add_forces(solution, forces.contact.back());
+      }
+    return forces;
+  }
+
+  // The invariants of the converged state (equilibrium.h): each body in
+  // equilibrium, and each contact pair's action equal to its reaction, both
+  // relative to the forces involved. Recorded in the history; a warning
+  // beyond what the Newton tolerance leaves, and false (the state cannot be
+  // trusted: its reason in unbalanced_forces) beyond 1e-3.
+  bool
+  ContactProblem::measure_balance_of_forces(HistoryRow &row)
+  {
+    const NodalForces forces = nodal_forces();
+    // Each pair's two bodies, by the material ids of the cells under its
+    // surfaces.
+    std::vector<std::pair<types::material_id, types::material_id>> pairs;
+    for (const auto &contact : contacts)
+      pairs.emplace_back(
+        contact->slave_surface().segments().front().cell->material_id(),
+        contact->master_surface().segments().front().cell->material_id());
+    std::vector<std::pair<types::material_id, std::string>> names;
+    for (const Body &body : bodies)
+      names.emplace_back(body.material_id, body.name);
+    // A cyclic sector's master copies carry the master's forces turned:
+    // their sum is not the slave's.
+    const Balance balance =
+      measure_balance(dof_handler, forces, names, pairs, cyclic_pairs.empty());
+    row.equilibrium_error     = balance.worst_body();
+    row.action_reaction_error = balance.worst_pair();
+
+    // A body's balance is the sum of the residual over its free rows, which
+    // the Newton tolerance (1e-10 by default, relative to the reactions)
+    // keeps well below 1e-6 at a converged state. A pair's balance holds
+    // at any state, converged or not: at each slave point
+    // the slave's and the master's terms share lambda, n and ds, and each
+    // side's shape functions sum to one, so the two forces cancel up to
+    // round-off; 1e-8 leaves room for that alone.
+    constexpr double   warn_body = 1e-6, warn_pair = 1e-8, fail = 1e-3;
+    std::ostringstream what;
+    what << std::setprecision(3);
+    bool failed = false;
+    // A body whose sum is within the round-off of its forces is balanced
+    // whatever the ratio says (a body moved rigidly carries round-off
+    // only).
+    for (unsigned int b = 0; b < balance.bodies.size(); ++b)
+      {
+        const auto &[name, error] = balance.bodies[b];
+        if (!balance.beyond_round_off[b] || error <= warn_body)
+          continue;
+        what << (what.tellp() > 0 ? "; " : "") << name
+             << " is out of equilibrium by " << error
+             << " of its forces (applied loads, reactions and contact)";
+        failed = failed || !(error <= fail);
+      }
+    for (unsigned int k = 0; k < balance.pairs.size(); ++k)
+      if (!std::isnan(balance.pairs[k]) && !(balance.pairs[k] <= warn_pair))
+        what << (what.tellp() > 0 ? "; " : "") << "contact pair " << k + 1
+             << "'s forces on its two bodies differ by " << balance.pairs[k]
+             << " of their magnitude";
+    if (what.tellp() == 0)
+      return true;
+    const bool trusted = !failed && !(row.action_reaction_error > fail);
+    if (trusted)
+      {
+        log << "Warning: step " << row.step << ": " << what.str() << '\n';
+        return true;
+      }
+    unbalanced_forces = "step " + std::to_string(row.step) + ": " + what.str() +
+                        ": the state cannot be trusted";
+    return false;
+  }
+
+  // @sect4{The VTU files}
+  //
+  // The bodies (displacement, Cauchy stress tensor, von Mises stress) and
+  // the slave surfaces (contact pressure and gap at their nodes), one file
+  // per step and a .pvd record of them (VtuWriter).
+  void
+  ContactProblem::output_results(const unsigned int step)
+  {
+    TimerOutput::Scope t(timer, "output");
+    // Made at the first output, with the scheme's tag in its file names,
+    // so that the schemes of one run write side by side. By default each
+    // cell is subdivided as often as the highest of the mapping and
+    // element degrees: curved edges are shown curved, and a Q2 field is
+    // not drawn as bilinear.
+    if (!vtu_writer)
+      {
+        const unsigned int subdivisions =
+          parameters.output.vtu_subdivisions > 0 ?
+            parameters.output.vtu_subdivisions :
+            std::max(parameters.finite_elements.mapping_degree,
+                     std::max_element(bodies.begin(),
+                                      bodies.end(),
+                                      [](const Body &a, const Body &b) {
+                                        return a.degree < b.degree;
+                                      })
+                       ->degree);
+        vtu_writer = std::make_unique<VtuWriter>(parameters.output.directory,
+                                                 scheme.tag(),
+                                                 subdivisions,
+                                                 communicator);
+      }
+    // The gap of each slave node, at the multiplier's place: the surface's
+    // file shows the gap beside the pressure, and lambda g = 0 can be seen.
+    Vector<double> nodal_gap(dof_handler.n_dofs());
+    for (const auto &contact : contacts)
+      for (const auto dof : contact->multiplier_dofs())
+        nodal_gap(dof) = contact->gap_at(dof, solution);
+    std::set<types::boundary_id> slave_ids;
+    for (const auto &[slave, master] : parameters.contact_pairs())
+      slave_ids.insert(slave);
+    vtu_writer->write(dof_handler,
+                      mapping_collection,
+                      solution,
+                      nodal_gap,
+                      materials,
+                      slave_ids,
+                      step,
+                      current_time);
+  }
+} // namespace RingContact

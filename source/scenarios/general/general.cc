@@ -1,0 +1,676 @@
+// @sect3{The general scenario}
+//
+// A general problem as a scenario (general.h): the bodies of a gmsh model,
+// the boundary conditions, loads and checks of the parameter file as
+// expressions of x, y and t. The description itself is read and checked
+// by problem_description.cc; this file answers the problem class's
+// questions with it (scenario.h): the mesh, the bodies, the imposed
+// displacements of a load state (normal conditions resolved node by
+// node), the boundary loads, what each step reports and how the checks
+// judge it. The mesh is checked against the description in
+// mesh_checks.cc, the checked quantities are computed in quantities.cc.
+// A general problem replaced the branches the problem class once had for
+// the patch test and the pressure load: the class asks a Scenario, and
+// this one is a file's problem.
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ring_contact/base/components.h>
+#include <ring_contact/input/gmsh_mesh.h>
+#include <ring_contact/input/parameter_file.h>
+#include <ring_contact/scenarios/general/general.h>
+#include <ring_contact/scenarios/reference_pressure.h>
+#include <ring_contact/scenarios/scenario.h>
+
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace RingContact
+{
+  namespace General
+  {
+    namespace
+    {
+      // A value of a boundary condition, checked: "Boundary condition 2
+      // (displacement on boundary 12): not a finite number (nan) at (0,
+      // 0.25), t = 0.5". Checked where it is evaluated, because only there
+      // are the point and the time known. A BoundaryDataError fails the load
+      // step, which is cut like a failed Newton iteration (the converged
+      // steps stay). Before, Value = sqrt(-1); 0 was reported as 'inverted
+      // elements: det F = 1 <= 0' (a NaN det F counted as inverted), and a
+      // traction sqrt(0.6 - t) only as 'the residual is not finite'.
+      double
+      finite_value(const double                       value,
+                   const BoundaryConditionParameters &condition,
+                   const Point<2>                    &X,
+                   const double                       time)
+      {
+        if (std::isfinite(value))
+          return value;
+        std::ostringstream message;
+        message << condition.name << " ("
+                << (condition.type == BoundaryConditionType::displacement ?
+                      "displacement" :
+                    condition.type == BoundaryConditionType::traction ?
+                      "traction" :
+                      "pressure")
+                << " on boundary " << condition.boundary_id
+                << "): its value is not a finite number ("
+                << (std::isnan(value) ? "nan" :
+                    value > 0         ? "inf" :
+                                        "-inf")
+                << ") at (" << X[0] << ", " << X[1] << "), t = " << time;
+        throw BoundaryDataError(message.str());
+      }
+
+      // An expression of the parameter file as a deal.II Function of the
+      // reference position at the load state's time, with the layout of the
+      // unknowns (u_x, u_y, multiplier): a polar displacement (u_r, u_theta)
+      // is turned into Cartesian components.
+      class ImposedDisplacement : public Function<2>
+      {
+      public:
+        // Made per condition and load state, its expression parsed anew:
+        // cheap beside the load step it serves.
+        ImposedDisplacement(const BoundaryConditionParameters   &condition,
+                            const std::map<std::string, double> &constants,
+                            const double                         time)
+            : Function<2>(Components::n_components, time)
+            , condition(condition)
+            , expression(make_expression(condition.expressions,
+                                         constants,
+                                         condition.name))
+        {
+          expression->set_time(time);
+        }
+
+        // Only the imposed components must be numbers: the others are not
+        // used, and a file may leave them as anything. The multiplier's
+        // component is masked out by the caller, but a Function of the
+        // system must give every component.
+        void
+        vector_value(const Point<2> &X, Vector<double> &values) const override
+        {
+          Vector<double> u(2);
+          expression->vector_value(X, u);
+          for (unsigned int c = 0; c < 2; ++c)
+            if (condition.components[c])
+              finite_value(u(c), condition, X, this->get_time());
+          // u = u_r e_r + u_theta e_theta, with the angle of the reference
+          // position about the origin.
+          if (condition.polar)
+            {
+              const double theta = std::atan2(X[1], X[0]);
+              const double c = std::cos(theta), s = std::sin(theta);
+              values(0) = c * u(0) - s * u(1);
+              values(1) = s * u(0) + c * u(1);
+            }
+          else
+            {
+              values(0) = u(0);
+              values(1) = u(1);
+            }
+          values(Components::multiplier) = 0;
+        }
+
+        // deal.II's interpolation may ask for one component at a time.
+        double
+        value(const Point<2> &X, const unsigned int component) const override
+        {
+          Vector<double> values(Components::n_components);
+          vector_value(X, values);
+          return values(component);
+        }
+
+      private:
+        // By reference: the condition lives in the problem's entries, which
+        // outlive every load state's function.
+        const BoundaryConditionParameters &condition;
+        std::unique_ptr<FunctionParser<2>> expression;
+      };
+
+      // A problem written in the parameter file.
+      class GeneralProblem : public Scenario
+      {
+      public:
+        // `problem` refers to the scenario's entries, which the copy of the
+        // parameters kept here shares (Parameters holds them by shared_ptr):
+        // they live as long as this object.
+        explicit GeneralProblem(const Parameters &parameters)
+            : parameters(parameters)
+            , problem(parameters.scenario_entries<ProblemParameters>())
+            , program(parameters.load)
+            , quantities(problem)
+        {}
+
+        // The bodies of a gmsh model, straight-sided (FlatManifold), meshed
+        // from a script with linear elements (the cells take the vertices
+        // only); the audit of its tags first (a line it drops leaves a
+        // boundary without faces, which check_bodies() would report).
+        void
+        create_mesh(Triangulation<2> &triangulation) const override
+        {
+          const Geometry::GmshMesh mesh =
+            Geometry::read_gmsh(triangulation,
+                                parameters.mesh.mesh_file,
+                                parameters.mesh.geo_numbers,
+                                1,
+                                false);
+          Geometry::check_boundary_tags(triangulation, mesh);
+          check_bodies(triangulation, parameters);
+          // The size estimate takes the highest degree of the bodies: the
+          // estimate errs on the large side, as a refusal should.
+          unsigned int degree = 1;
+          for (const auto &body : problem.bodies)
+            degree = std::max(degree, body.degree);
+          Geometry::check_size(triangulation.n_active_cells(),
+                               degree,
+                               parameters.mesh.global_refinements);
+          // No manifold is attached: deal.II's default, a FlatManifold,
+          // puts the refined vertices on the straight sides. A curved
+          // boundary is resolved by the mesh (as the Hertz model does), not
+          // by the geometry.
+          triangulation.refine_global(parameters.mesh.global_refinements);
+        }
+
+        const LoadProgram &
+        load_program() const override
+        {
+          return program;
+        }
+
+        // The bodies in the order of the file; each named "Body k" in the
+        // messages, with its own kinematics or the common one. Mapping
+        // degree = 0 gives each body its displacement degree.
+        std::vector<Body>
+        bodies() const override
+        {
+          const auto       &m = parameters.materials;
+          std::vector<Body> bodies;
+          for (unsigned int b = 0; b < problem.bodies.size(); ++b)
+            {
+              const auto &body = problem.bodies[b];
+              bodies.push_back(
+                Body{static_cast<types::material_id>(body.material_id),
+                     "Body " + std::to_string(b + 1),
+                     body.degree,
+                     parameters.finite_elements.mapping_degree > 0 ?
+                       parameters.finite_elements.mapping_degree :
+                       body.degree,
+                     Material(body.youngs_modulus,
+                              body.poissons_ratio,
+                              m.plane,
+                              body.inherits_kinematics ? m.kinematics :
+                                                         body.kinematics)});
+            }
+          return bodies;
+        }
+
+        std::vector<BoundaryLoad>
+        boundary_loads() const override
+        {
+          std::vector<BoundaryLoad> loads;
+          for (const auto &condition : problem.boundary_conditions)
+            if (condition.type == BoundaryConditionType::traction ||
+                condition.type == BoundaryConditionType::pressure)
+              {
+                // Parsed once here and shared by the load's function, which
+                // the problem class keeps and calls at every quadrature point
+                // of the loaded faces. Setting its time from a const lambda
+                // is safe because the program runs one thread.
+                std::shared_ptr<FunctionParser<2>> expression =
+                  make_expression(condition.expressions,
+                                  problem.constants,
+                                  condition.name);
+                // Two components for a traction, one for a pressure: the
+                // pressure is the load's first component (BoundaryLoad).
+                const unsigned int n = condition.expressions.size();
+                loads.push_back(BoundaryLoad{
+                  static_cast<types::boundary_id>(condition.boundary_id),
+                  condition.type == BoundaryConditionType::pressure ?
+                    BoundaryLoad::Type::pressure :
+                    BoundaryLoad::Type::traction,
+                  [expression, n, condition](const Point<2>  &X,
+                                             const LoadState &load) {
+                    expression->set_time(load.time);
+                    Tensor<1, 2> value;
+                    for (unsigned int c = 0; c < n; ++c)
+                      value[c] = finite_value(expression->value(X, c),
+                                              condition,
+                                              X,
+                                              load.time);
+                    return value;
+                  }});
+              }
+          return loads;
+        }
+
+        // A load on a boundary whose displacement is imposed along a
+        // direction the load acts in: the support takes that part of the
+        // load, which is silently ignored (a traction (0.1 p, -p) on a
+        // boundary held in y: its y part never reached the body). Refused,
+        // at the quadrature points of the loaded faces and the load
+        // program's pseudo-times, where the load's component along a held
+        // direction exceeds 1e-12 of its magnitude. Called by the problem
+        // class once the unknowns exist, before the first step, with the
+        // pseudo-time of every step of the load program.
+        void
+        check_boundary_data(const DoFHandler<2>            &dof_handler,
+                            const hp::MappingCollection<2> &mapping,
+                            const std::vector<double> &times) const override
+        {
+          const auto &conditions = problem.boundary_conditions;
+          for (const auto &load : boundary_loads())
+            for (const auto &condition : conditions)
+              {
+                if (condition.type != BoundaryConditionType::displacement ||
+                    condition.boundary_id != load.boundary_id)
+                  continue;
+                // The directions this displacement condition holds: x and y,
+                // e_r and e_theta, or the normal, as imposed.
+                const SupportCondition support{
+                  load.boundary_id,
+                  condition.normal ? SupportCondition::Kind::normal :
+                  condition.polar  ? SupportCondition::Kind::polar :
+                                     SupportCondition::Kind::cartesian,
+                  condition.components};
+                // The condition that is the load, for the message (one load
+                // per boundary: problem_description.cc refuses two).
+                const BoundaryConditionParameters *loaded = nullptr;
+                for (const auto &other : conditions)
+                  if (other.boundary_id == load.boundary_id &&
+                      other.type != BoundaryConditionType::displacement)
+                    loaded = &other;
+                for_each_boundary_face(
+                  dof_handler,
+                  mapping,
+                  [&](const auto                      &cell,
+                      const unsigned int               f,
+                      const std::vector<BoundaryNode> &nodes) {
+                    if (cell->face(f)->boundary_id() != load.boundary_id)
+                      return;
+                    // At every pseudo-time of the program: a load that turns
+                    // into a held direction only later (a traction written
+                    // with sin t) is found too. A general problem's load
+                    // states carry no pressure or rotation, only t.
+                    for (const BoundaryNode &node : nodes)
+                      for (const double t : times)
+                        {
+                          const LoadState    state{0, 0, t};
+                          const Tensor<1, 2> value = load.value(node.X, state);
+                          // A pressure pushes along the inward normal, -p N,
+                          // taken on the reference boundary.
+                          const Tensor<1, 2> force =
+                            load.type == BoundaryLoad::Type::pressure ?
+                              Tensor<1, 2>(-value[0] * node.N) :
+                              value;
+                          // Relative to the force: a component that is zero
+                          // up to round-off (cos(pi / 2) = 6e-17) passes.
+                          for (const auto &d :
+                               support.directions(node.X, node.N))
+                            if (std::abs(force * d) > 1e-12 * force.norm())
+                              {
+                                std::ostringstream what;
+                                what << "= " << load.boundary_id
+                                     << " is loaded by " << loaded->name
+                                     << " along a direction (" << d[0] << ", "
+                                     << d[1] << ") that " << condition.name
+                                     << " holds (at (" << node.X[0] << ", "
+                                     << node.X[1] << "), t = " << t
+                                     << "): the support would take that part "
+                                        "of the load, which would never reach "
+                                        "the body; impose the displacement "
+                                        "only along the other direction, or "
+                                        "load only across the held one";
+                                // A ParameterError of the load's Boundary id:
+                                // located at the line that set it.
+                                throw ParameterError(loaded->name,
+                                                     "Boundary id",
+                                                     "parameter 'Boundary id' "
+                                                     "in subsection '" +
+                                                       loaded->name + "' " +
+                                                       what.str());
+                              }
+                        }
+                  });
+              }
+        }
+
+        // What it reports: the pressure at the probe (no reference is
+        // known: the columns of the rings' reference, NaN), then the
+        // quantities of its checks and, with friction, the tangential
+        // traction. The same leading columns as the rings: history.csv
+        // starts alike for every scenario.
+        std::vector<std::string>
+        leading_columns() const override
+        {
+          return ReferencePressure::columns();
+        }
+
+        std::vector<std::string>
+        trailing_columns() const override
+        {
+          // One column per check, named after its slot and quantity
+          // (check_2_contact_pressure), in the order of the slots.
+          std::vector<std::string> columns;
+          for (const auto &check : problem.checks)
+            columns.push_back(check.column());
+          if (parameters.contact.friction_coefficient > 0)
+            for (const auto &column : Friction::columns())
+              columns.push_back(column);
+          return columns;
+        }
+
+        // Every check's quantity at every converged step, checked or not:
+        // the history holds its whole curve, and the verdicts pick the rows
+        // of the checked steps.
+        void
+        report(const SolutionState &state, HistoryRow &row) const override
+        {
+          ReferencePressure::report(state,
+                                    parameters.contact.probe_point,
+                                    std::nan(""),
+                                    parameters.contact.reported_pressure,
+                                    row.leading);
+          for (const auto &check : problem.checks)
+            row.trailing.emplace_back(check.column(),
+                                      quantities.value(check, state));
+          if (parameters.contact.friction_coefficient > 0)
+            Friction::report(state,
+                             parameters.contact.probe_point,
+                             row.trailing);
+        }
+
+        // One line per step on the terminal: Newton's work, the active
+        // nodes, and every checked quantity as it goes, so that a long run
+        // shows whether it is on track before its verdicts.
+        void
+        print_step(std::ostream &out, const HistoryRow &row) const override
+        {
+          const unsigned int cuts = row.step_cuts;
+          out << "  Newton " << row.newton_iterations
+              << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
+              << "  active " << row.active_nodes << "  p_probe "
+              << std::setprecision(7) << row.value("pressure_A");
+          for (const auto &check : problem.checks)
+            out << "  " << check.description() << " " << std::setprecision(7)
+                << row.value(check.column());
+          if (parameters.contact.friction_coefficient > 0)
+            Friction::print_step(out, row);
+        }
+
+        // Each check's quantity against its reference expression, evaluated
+        // at the row's pseudo-time.
+        std::vector<Verdict>
+        evaluate_checks(const std::string             &scheme,
+                        const std::vector<HistoryRow> &history) const override
+        {
+          std::vector<Verdict> verdicts;
+          for (const auto &check : problem.checks)
+            {
+              // Parsed once per check; evaluated at the check's point and at
+              // each checked row's pseudo-time.
+              const auto reference = make_expression({check.reference},
+                                                     problem.constants,
+                                                     check.name + "/Reference");
+              const auto check_row = [&](const HistoryRow &row) {
+                Verdict v;
+                v.scheme    = row.scheme;
+                v.quantity  = check.description();
+                v.step      = row.step;
+                v.tolerance = check.tolerance;
+                v.value     = row.value(check.column());
+                reference->set_time(row.time);
+                v.reference = reference->value(check.point);
+                v.error     = v.value - v.reference;
+                if (check.relative)
+                  v.error /= std::abs(v.reference);
+                v.relative = check.relative;
+                v.source   = check.source;
+                // A reference that is no number, or a relative error against
+                // a reference of 0, fails the check: it cannot pass by a
+                // comparison with NaN (a reference sqrt(t - 2) once printed a
+                // bare '-nan' in the verdicts). For a reference of 0 the
+                // check should be absolute (Relative = false).
+                v.pass =
+                  std::isfinite(v.error) && std::abs(v.error) <= v.tolerance;
+                verdicts.push_back(v);
+              };
+              // The rows of the checked steps; a step the run did not reach
+              // gets a failing 'step not reached' verdict.
+              for_checked_rows(check.every_step,
+                               check.steps,
+                               history,
+                               program.n_steps(),
+                               check_row,
+                               scheme,
+                               check.tolerance,
+                               verdicts);
+            }
+          return verdicts;
+        }
+
+      private:
+        // The displacement conditions at a load state, in the order of the
+        // file: at a node on two boundaries with Cartesian or polar
+        // conditions, the later one decides the components both impose.
+        // Then the normal conditions (Components = n), node by node: the
+        // outward normals of the faces at the node are averaged, unless they
+        // are more than 60 degrees apart (a corner, or two conditions that
+        // meet at an angle): then both directions are imposed, N1 . u = g1
+        // and N2 . u = g2 fix the node. A node with one component imposed
+        // already gets the other from its normal condition; only a node with
+        // nothing else imposed keeps the single linear condition N . u = g.
+        ImposedMotion
+        boundary_motion(const DoFHandler<2>            &dof_handler,
+                        const hp::MappingCollection<2> &mapping,
+                        const LoadState                &load) const override
+        {
+          std::map<types::global_dof_index, double> values =
+            cartesian_displacements(dof_handler, mapping, load);
+          const NormalFaces faces = normal_faces(dof_handler, mapping, load);
+
+          // Normals more than 60 degrees apart are two directions: at a
+          // corner of a rectangle (90 degrees) both are imposed, while the
+          // facets of a curve meshed with a few dozen segments around are
+          // averaged.
+          std::vector<NormalDisplacement> normal;
+          const double                    corner = 0.5; // cos 60 degrees
+          for (const auto &[node, list] : faces)
+            {
+              // Two groups: the normals near the first one, and the others.
+              // Within a group the faces' normals are averaged: on a faceted
+              // curve the bisector, on a straight boundary the exact normal.
+              std::array<Tensor<1, 2>, 2> sum;
+              std::array<double, 2>       value = {{0, 0}};
+              for (const auto &[n, g] : list)
+                {
+                  const unsigned int group =
+                    n * list[0].first >= corner ? 0 : 1;
+                  sum[group] += n;
+                  value[group] = g; // the later condition decides
+                }
+              std::array<Tensor<1, 2>, 2> N;
+              for (unsigned int k = 0; k < 2; ++k)
+                if (sum[k].norm() > 0)
+                  N[k] = sum[k] / sum[k].norm();
+              // A Cartesian or polar condition at the node comes first: with
+              // both components imposed, the normal condition adds nothing.
+              const bool has_x = values.count(node[0]) > 0,
+                         has_y = values.count(node[1]) > 0;
+              if (has_x && has_y)
+                continue;
+              if (has_x || has_y)
+                {
+                  // The other component from the group most across the
+                  // imposed one (none if the normal is along it: the
+                  // Cartesian condition then decides).
+                  // u_b = (g - N_a u_a) / N_b; below |N_b| = 0.1 the division
+                  // would magnify the imposed u_a and g tenfold or more.
+                  const unsigned int a = has_x ? 0 : 1, b = 1 - a;
+                  const unsigned int k =
+                    std::abs(N[1][b]) > std::abs(N[0][b]) ? 1 : 0;
+                  if (std::abs(N[k][b]) >= 0.1)
+                    values[node[b]] =
+                      (value[k] - N[k][a] * values.at(node[a])) / N[k][b];
+                  continue;
+                }
+              // One direction only: the single linear condition, which the
+              // problem class makes a constraint on the component with the
+              // larger |N_a|.
+              if (N[1].norm() == 0)
+                {
+                  normal.push_back(NormalDisplacement{node, N[0], value[0]});
+                  continue;
+                }
+              // A corner: N1 . u = g1, N2 . u = g2, solved for u by Cramer's
+              // rule.
+              const double det = N[0][0] * N[1][1] - N[0][1] * N[1][0];
+              values[node[0]] = (value[0] * N[1][1] - value[1] * N[0][1]) / det;
+              values[node[1]] = (N[0][0] * value[1] - N[1][0] * value[0]) / det;
+            }
+          return {values, normal};
+        }
+
+        // The Cartesian and polar conditions, in the order of the file,
+        // interpolated at the support points of the boundary's unknowns: a
+        // node on two boundaries (a corner) takes the later condition's value
+        // for a component both impose.
+        std::map<types::global_dof_index, double>
+        cartesian_displacements(const DoFHandler<2>            &dof_handler,
+                                const hp::MappingCollection<2> &mapping,
+                                const LoadState                &load) const
+        {
+          std::map<types::global_dof_index, double> values;
+          for (const auto &condition : problem.boundary_conditions)
+            if (condition.type == BoundaryConditionType::displacement &&
+                !condition.normal)
+              {
+                const ImposedDisplacement motion(condition,
+                                                 problem.constants,
+                                                 load.time);
+                // The mask selects Cartesian components: a roller in y leaves
+                // u_x free. A polar condition imposes both components, which
+                // is why problem_description.cc refuses u_r or u_theta alone:
+                // no mask of u_x and u_y expresses it.
+                std::map<types::global_dof_index, double> these;
+                VectorTools::interpolate_boundary_values(
+                  mapping,
+                  dof_handler,
+                  condition.boundary_id,
+                  motion,
+                  these,
+                  Components::displacement_mask(condition.components[0],
+                                                condition.components[1]));
+                for (const auto &[dof, value] : these)
+                  values[dof] = value;
+              }
+          return values;
+        }
+
+        // Per node (its u_x and u_y unknowns): the outward normal and the
+        // imposed value g of each face of a normal condition at the node.
+        using Node = std::array<types::global_dof_index, 2>;
+        using NormalFaces =
+          std::map<Node, std::vector<std::pair<Tensor<1, 2>, double>>>;
+
+        NormalFaces
+        normal_faces(const DoFHandler<2>            &dof_handler,
+                     const hp::MappingCollection<2> &mapping,
+                     const LoadState                &load) const
+        {
+          // The quadrature of a face is its support points, one per face
+          // unknown: quadrature point i is then where face unknown i sits, and
+          // the normal there is the face's outward normal at that node, in the
+          // reference configuration.
+          NormalFaces        faces;
+          const auto        &fe_collection = dof_handler.get_fe_collection();
+          hp::QCollection<1> support_points;
+          for (unsigned int i = 0; i < fe_collection.size(); ++i)
+            support_points.push_back(
+              Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
+          hp::FEFaceValues<2>                  face_values(mapping,
+                                          fe_collection,
+                                          support_points,
+                                          update_quadrature_points |
+                                            update_normal_vectors);
+          std::vector<types::global_dof_index> face_dofs;
+          for (const auto &condition : problem.boundary_conditions)
+            if (condition.type == BoundaryConditionType::displacement &&
+                condition.normal)
+              {
+                auto expression = make_expression(condition.expressions,
+                                                  problem.constants,
+                                                  condition.name);
+                expression->set_time(load.time);
+                for (const auto &cell : dof_handler.active_cell_iterators())
+                  for (const unsigned int f : cell->face_indices())
+                    if (cell->face(f)->at_boundary() &&
+                        cell->face(f)->boundary_id() == condition.boundary_id)
+                      {
+                        face_values.reinit(cell, f);
+                        const FEFaceValues<2> &fv =
+                          face_values.get_present_fe_values();
+                        const FiniteElement<2> &fe = cell->get_fe();
+                        face_dofs.resize(fe.n_dofs_per_face(f));
+                        cell->face(f)->get_dof_indices(face_dofs,
+                                                       cell->active_fe_index());
+                        // The support points of the face, each with its u_x
+                        // and u_y unknowns. The positions are compared
+                        // exactly: both come from one unit point through one
+                        // mapping, so a node's two unknowns give the same
+                        // bits. Each face adds its normal to the node's list,
+                        // which boundary_motion() then averages.
+                        for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                          if (fe.face_system_to_component_index(i, f).first ==
+                              Components::ux)
+                            for (unsigned int j = 0; j < face_dofs.size(); ++j)
+                              if (fe.face_system_to_component_index(j, f)
+                                      .first == Components::uy &&
+                                  fv.quadrature_point(j) ==
+                                    fv.quadrature_point(i))
+                                faces[Node{{face_dofs[i], face_dofs[j]}}]
+                                  .emplace_back(
+                                    fv.normal_vector(i),
+                                    finite_value(expression->value(
+                                                   fv.quadrature_point(i)),
+                                                 condition,
+                                                 fv.quadrature_point(i),
+                                                 load.time));
+                      }
+              }
+          return faces;
+        }
+
+        const Parameters         parameters;
+        const ProblemParameters &problem;
+        const LoadProgram        program;
+        const CheckedQuantities  quantities;
+      };
+
+      // The registration line: Problem/Scenario = general. Not the default
+      // (the rings are): a file says that it is a general problem.
+      const ScenarioRegistration::Add registration{ScenarioRegistration{
+        "general",
+        "general",
+        "any bodies of a gmsh model (Mesh source = gmsh file), with the "
+        "conditions and checks written in this file: the subsections Body "
+        "1, 2, ... (Number of bodies), Boundary condition 1 to 12 and Check "
+        "1 to 12, the contact pair of subsection Contact and those of Contact "
+        "pair 2 to 4, the steps of Load program/Program = steps.",
+        false,
+        " (a general problem takes its bodies, conditions and checks from "
+        "the subsections Body, Boundary condition and Check)",
+        []() { return std::make_shared<ProblemParameters>(); },
+        [](const Parameters &parameters) {
+          return std::make_unique<GeneralProblem>(parameters);
+        }}};
+    } // namespace
+  }   // namespace General
+} // namespace RingContact

@@ -1,0 +1,253 @@
+// @sect3{The quantities a general problem checks}
+//
+// The quantities a general problem checks (Check k/Quantity), at a
+// converged state. The scenario (general.cc) asks for each check's value
+// at every converged step, and writes it to history.csv; the verdicts
+// compare those columns with the references after the run. Every
+// quantity is evaluated once at rest too, before the first step, and
+// thrown away: a check that cannot be evaluated (a point outside the mesh,
+// or off every slave surface) stops the run then, not after the first
+// step's work.
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ring_contact/base/components.h>
+#include <ring_contact/scenarios/general/general.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace RingContact
+{
+  namespace General
+  {
+    // The boundary resultants need the mesh and the unknowns, which do not
+    // exist yet when the scenario is made: they are built at the first
+    // resultant asked for (resultant_force()).
+    CheckedQuantities::CheckedQuantities(const ProblemParameters &problem)
+        : problem(problem)
+    {}
+
+    // @sect4{The value of a check's quantity}
+    //
+    // Each quantity is read from the converged state through SolutionState,
+    // the narrow view the problem class gives of itself; the ones that
+    // need more than a line have a function of their own below.
+    double
+    CheckedQuantities::value(const ProblemCheckParameters &check,
+                             const SolutionState          &state) const
+    {
+      // The pair whose slave surface is nearest to the point: with several
+      // pairs, a check's point names its pair by where it lies. The slave
+      // surface is looked up for every quantity; only the pointwise
+      // tractions and the half-width use it.
+      const auto nearest          = state.contact_node_nearest_to(check.point);
+      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
+      if (check.quantity == ProblemQuantity::contact_pressure ||
+          check.quantity == ProblemQuantity::tangential_traction)
+        require_on_slave_surface(check, state, nearest, slave);
+      switch (check.quantity)
+        {
+          case ProblemQuantity::contact_pressure:
+            return state.reported_pressure(nearest);
+
+          // Without friction the tangential traction has no unknown
+          // (FE_Nothing): it is zero by definition, not missing.
+          case ProblemQuantity::tangential_traction:
+            {
+              const auto dof =
+                state.contact_of(nearest).tangential_dof(nearest);
+              return dof == numbers::invalid_dof_index ?
+                       0.0 :
+                       state.get_solution()(dof);
+            }
+
+          case ProblemQuantity::contact_half_width:
+            return contact_half_width(check, state, slave);
+
+          case ProblemQuantity::resultant_force_x:
+          case ProblemQuantity::resultant_force_y:
+            {
+              const Tensor<1, 2> force = resultant_force(check, state);
+              return check.quantity == ProblemQuantity::resultant_force_x ?
+                       force[0] :
+                       force[1];
+            }
+
+          case ProblemQuantity::displacement_x:
+          case ProblemQuantity::displacement_y:
+            return displacement(check, state);
+
+          // finish() has dropped the unused slots: not reached, but a NaN
+          // would fail any check that got here.
+          case ProblemQuantity::none:
+            break;
+        }
+      return std::nan("");
+    }
+
+
+    // A traction is read at a contact node: the point must be on a slave
+    // surface (the nearest node within a segment of it), not anywhere.
+    // Without this, a pressure check at (100, 100) silently reported the
+    // nearest node's pressure as the pressure there. The longest slave
+    // segment, in the reference configuration as the point is, is the
+    // tolerance: any point of the surface is within it of a node, whatever
+    // the mesh. Written !(d <= l) so that a distance that is not a number
+    // is refused too.
+    void
+    CheckedQuantities::require_on_slave_surface(
+      const ProblemCheckParameters &check,
+      const SolutionState          &state,
+      const types::global_dof_index nearest,
+      const ContactSurface         &slave) const
+    {
+      double distance = 0, longest = 0;
+      state.contact_of(nearest).multiplier_dof_nearest_to(check.point,
+                                                          &distance);
+      for (unsigned int k = 0; k < slave.segments().size(); ++k)
+        longest = std::max(longest,
+                           slave.reference_point(k, 0).x.distance(
+                             slave.reference_point(k, 1).x));
+      if (!(distance <= longest))
+        {
+          std::ostringstream where;
+          where << check.point[0] << ", " << check.point[1] << ") is "
+                << distance;
+          throw std::runtime_error(
+            check.name + ": the point (" + where.str() +
+            " from the nearest contact node, farther than a segment of "
+            "its slave surface: give a point on a slave surface");
+        }
+    }
+
+
+    // The farthest slave node in contact (active, with a positive pressure)
+    // from the point, or, where a node in contact is next to an open one on
+    // a segment, the midpoint between the two: the edge of the contact to
+    // half a node spacing. (An open node's pressure is zero to the linear
+    // solver's accuracy, of either sign.)
+    double
+    CheckedQuantities::contact_half_width(const ProblemCheckParameters &check,
+                                          const SolutionState          &state,
+                                          const ContactSurface &slave) const
+    {
+      // The nodes of a segment in the order of its unknowns (vertices
+      // first); sorted by their parameter t, neighbours along the segment
+      // are neighbours in the list, which the edge test below needs.
+      double              width = 0;
+      const auto         &nodes = slave.multiplier_nodes();
+      std::vector<double> t(nodes.begin(), nodes.end());
+      std::sort(t.begin(), t.end());
+      for (unsigned int s = 0; s < slave.segments().size(); ++s)
+        {
+          // A cyclic sector's rotated copies hold the originals' unknowns
+          // again: the sector's own segments are enough.
+          const auto &segment = slave.segments()[s];
+          if (segment.is_copy)
+            continue;
+          const auto dof_at = [&](const double t_node) {
+            for (unsigned int k = 0; k < nodes.size(); ++k)
+              if (nodes[k] == t_node)
+                return segment.multiplier_dofs[k];
+            return segment.multiplier_dofs[0];
+          };
+          // Distances in the reference configuration, as the check's point
+          // is given; a node shared by two segments is seen from both,
+          // with the same answer.
+          for (unsigned int k = 0; k < t.size(); ++k)
+            {
+              const Point<2> x      = slave.reference_point(s, t[k]).x;
+              const auto in_contact = [&](const types::global_dof_index dof) {
+                return state.contact_of(dof).is_active(dof) &&
+                       state.reported_pressure(dof) > 0;
+              };
+              const bool in = in_contact(dof_at(t[k]));
+              if (in)
+                width = std::max(width, x.distance(check.point));
+              for (const int side : {-1, 1})
+                {
+                  const int j = static_cast<int>(k) + side;
+                  if (!in || j < 0 || j >= static_cast<int>(t.size()))
+                    continue;
+                  if (in_contact(dof_at(t[j])))
+                    continue;
+                  const Point<2> edge =
+                    slave.reference_point(s, 0.5 * (t[k] + t[j])).x;
+                  width = std::max(width, edge.distance(check.point));
+                }
+            }
+        }
+      return width;
+    }
+
+
+    // The resultant of the traction over a boundary: its load where it is
+    // loaded, its part of the reactions where it is supported
+    // (BoundaryResultants, which splits a corner node's reaction between
+    // the boundaries that hold it).
+    Tensor<1, 2>
+    CheckedQuantities::resultant_force(const ProblemCheckParameters &check,
+                                       const SolutionState &state) const
+    {
+      // Summing the nodal forces over a boundary's nodes gave, for blocks
+      // loaded by (0.1 p, -p) with one x-support, -92 857 instead of
+      // -100 000 on the support and -71 429 instead of 0 on a free edge: a
+      // corner node's force belongs to two boundaries. The reactions used
+      // leave the contact forces out: a support whose end node lies on a
+      // contact surface took that node's contact force as its own.
+      if (!resultants)
+        {
+          // The directions each boundary's displacement holds.
+          std::vector<SupportCondition> supports;
+          for (const auto &condition : problem.boundary_conditions)
+            if (condition.type == BoundaryConditionType::displacement)
+              supports.push_back(
+                {static_cast<types::boundary_id>(condition.boundary_id),
+                 condition.normal ? SupportCondition::Kind::normal :
+                 condition.polar  ? SupportCondition::Kind::polar :
+                                    SupportCondition::Kind::cartesian,
+                 condition.components});
+          resultants =
+            std::make_unique<BoundaryResultants>(state.get_dof_handler(),
+                                                 state.get_mapping(),
+                                                 supports);
+        }
+      return resultants->resultant(check.boundary_id,
+                                   state.nodal_forces().reactions(),
+                                   state.applied_resultants());
+    }
+
+
+    // The displacement at a point of the mesh (in the reference
+    // configuration), found in whichever cell holds it.
+    double
+    CheckedQuantities::displacement(const ProblemCheckParameters &check,
+                                    const SolutionState          &state) const
+    {
+      // The triangulation is the reference configuration: point_value()
+      // finds the cell that holds the point there, so the value is that of
+      // a material point, followed through the whole motion. Its error (a
+      // point in no cell) becomes one line that names the check.
+      Vector<double> value(Components::n_components);
+      try
+        {
+          VectorTools::point_value(state.get_mapping(),
+                                   state.get_dof_handler(),
+                                   state.get_solution(),
+                                   check.point,
+                                   value);
+        }
+      catch (...)
+        {
+          std::ostringstream where;
+          where << check.point[0] << ", " << check.point[1];
+          throw std::runtime_error(check.name + ": the point (" + where.str() +
+                                   ") is in no cell of the mesh");
+        }
+      return value(check.quantity == ProblemQuantity::displacement_x ?
+                     Components::ux :
+                     Components::uy);
+    }
+  } // namespace General
+} // namespace RingContact
