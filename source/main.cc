@@ -11,9 +11,10 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <ring_contact/base/utilities.h>
-#include <ring_contact/config.h>
+#include <ring_contact/driver/command_line.h>
 #include <ring_contact/driver/mpi_session.h>
 #include <ring_contact/driver/run.h>
+#include <ring_contact/driver/run_log.h>
 #include <ring_contact/driver/signals.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/linear_system.h>
@@ -22,29 +23,6 @@
 #include <iostream>
 #include <string>
 
-namespace
-{
-  const std::string usage = "usage: ring_contact <file.prm>\n"
-                            "       mpirun -np N ring_contact <file.prm>\n"
-                            "       ring_contact --print-parameters   (all "
-                            "entries, defaults, docs)\n"
-                            "       ring_contact --version\n";
-
-  // --help, --version, --print-parameters: answered at once (true).
-  bool
-  answer_flag(const std::string &argument)
-  {
-    if (argument == "--help" || argument == "-h")
-      std::cout << usage;
-    else if (argument == "--version")
-      std::cout << "ring_contact " RING_CONTACT_VERSION "\n";
-    else if (argument == "--print-parameters")
-      RingContact::Parameters::print_reference(std::cout, true);
-    else
-      return false;
-    return true;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -57,29 +35,29 @@ main(int argc, char **argv)
   // The log line by line also into a pipe or a file (`| tee`, a batch
   // system's log): whoever watches sees each step when it is done.
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
-  if (argc != 2)
-    {
-      std::cerr << usage;
-      return 2;
-    }
-  if (answer_flag(argv[1]))
-    return 0;
+  // --help, --version, --print-parameters, or the file and the entries
+  // the command line sets over it.
+  const Driver::CommandLine command_line(argc, argv);
+  if (command_line.answered)
+    return command_line.exit_code;
 
   // MPI when mpirun started the process (before the file is read: every
   // process reads it, and an error in it is every process's).
   Driver::MpiSession mpi(argc, argv);
   Driver::install_signal_handlers(this_process(mpi.world()) == 0);
-  Parameters parameters;
+  // What the terminal shows goes to results/<name>/run.log too.
+  const Driver::RunLog log;
+  Parameters           parameters;
   try
     {
-      parameters.read(argv[1]);
+      parameters.read(command_line.prm_file, command_line.overrides);
     }
   catch (const std::exception &e)
     {
       if (this_process(mpi.world()) == 0)
         std::cerr << "ring_contact: error: " << one_line_message(e)
                   << std::endl;
-      return 1;
+      return Driver::ExitCode::input_refused;
     }
   // Or when the file asks for a solver that needs it, on one process.
   mpi.start_for(parameters);

@@ -162,12 +162,17 @@ namespace
     for (const char ch : err)
       if ((static_cast<unsigned char>(ch) < 0x20 && ch != '\n') || ch == 0x7F)
         return {Outcome::bad, "a control character on stderr"};
-    if ((code == 1 || code == 2) && single &&
+    // A refused input exits with 2, a run that could not go on with 3;
+    // results with 0 or 1 (the checks' verdict), or 3 when a step could
+    // not be solved.
+    if ((code == 2 || code == 3) && single &&
         err.compare(0, 20, "ring_contact: error:") == 0)
       return {Outcome::clean_error, ""};
-    if ((code == 0 || code == 1) && err.empty() &&
-        (out.find("checks pass") != std::string::npos ||
-         out.find("could not be solved") != std::string::npos))
+    if (err.empty() &&
+        (((code == 0 || code == 1) &&
+          out.find("checks pass") != std::string::npos &&
+          out.find("could not be solved") == std::string::npos) ||
+         (code == 3 && out.find("could not be solved") != std::string::npos)))
       return {Outcome::results, ""};
     return {Outcome::bad,
             "exit code " + std::to_string(code) +

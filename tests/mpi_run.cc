@@ -184,7 +184,7 @@ main()
     out << "missing mesh file on 2 processes: exit code " << result.exit_code
         << ", " << errors << " error line, MPI abort: "
         << (result.printed("MPI_ABORT") ? "yes" : "no") << std::endl;
-    check(result.exit_code == 1 && errors == 1 && !result.printed("MPI_ABORT"),
+    check(result.exit_code == 2 && errors == 1 && !result.printed("MPI_ABORT"),
           "a missing mesh file is one error line");
   }
 
@@ -203,7 +203,7 @@ main()
         << "solved " << result.count("Step")
         << ", MPI abort: " << (result.printed("MPI_ABORT") ? "yes" : "no")
         << std::endl;
-    check(result.exit_code == 1 && result.count("Step") == 0 &&
+    check(result.exit_code == 2 && result.count("Step") == 0 &&
             errors.size() == 1 &&
             errors[0].find("in use by another run") != std::string::npos &&
             !result.printed("MPI_ABORT"),
@@ -228,7 +228,7 @@ main()
     out << "traction not finite on 2 processes: exit code " << result.exit_code
         << ", the condition named: " << (named ? "yes" : "no")
         << ", step 2 stopped: " << (stopped ? "yes" : "no") << std::endl;
-    check(result.exit_code == 1 && named && stopped,
+    check(result.exit_code == 3 && named && stopped,
           "a failing load stops both processes");
   }
 }

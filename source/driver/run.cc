@@ -14,6 +14,7 @@
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/driver/mpi_session.h>
 #include <ring_contact/driver/run.h>
+#include <ring_contact/driver/run_log.h>
 #include <ring_contact/driver/signals.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/output/history.h>
@@ -43,7 +44,8 @@ namespace RingContact
           {
             const auto dot = name.rfind('.');
             const bool listed_by_name =
-              name == "history.csv" || name == "verdicts.csv";
+              name == "history.csv" || name == "verdicts.csv" ||
+              name == "used_parameters.prm" || name == "run.log";
             if (listed_by_name)
               text += (text.empty() ? "" : ", ") + name;
             else
@@ -115,6 +117,18 @@ namespace RingContact
             on_process_zero(world, [&]() { history->append(row); });
         }
 
+        /// The parameters as they ran, beside the results.
+        void
+        record_parameters(const std::string &text)
+        {
+          if (writes_files && !text.empty())
+            on_process_zero(world, [&]() {
+              write_file_atomically(output.directory + "/used_parameters.prm",
+                                    text);
+              RunLog::attach(output.directory + "/run.log");
+            });
+        }
+
         void
         write_verdicts(const std::vector<Verdict> &verdicts)
         {
@@ -167,7 +181,8 @@ namespace RingContact
       int
       run_schemes(const Parameters &parameters,
                   const MPI_Comm    world,
-                  std::ostream     &out)
+                  std::ostream     &out,
+                  bool             &started)
       {
         const OutputParameters &output = parameters.output;
         ResultsFolder           folder(output, world, out);
@@ -182,7 +197,14 @@ namespace RingContact
               break;
             ContactProblem problem(parameters, scheme, out, world);
             const auto     columns = problem.history_columns();
-            problem.set_start_observer([&]() { folder.prepare(columns); });
+            // Until the problem starts, an error is a refusal of its input
+            // (exit code 2); after, a failure of the run (3).
+            started = false;
+            problem.set_start_observer([&]() {
+              started = true;
+              folder.prepare(columns);
+              folder.record_parameters(parameters.used_parameters);
+            });
             problem.set_step_observer([&](const HistoryRow &row) {
               // Every process takes part (process 0's failure is all of
               // theirs): the condition is the same on all of them.
@@ -239,7 +261,9 @@ namespace RingContact
         const bool pass = print_verdicts(out, verdicts);
         if (!solved)
           out << "A load step could not be solved (see above).\n";
-        return (pass && solved) ? 0 : 1;
+        return !solved ? ExitCode::step_failed :
+               pass    ? ExitCode::success :
+                         ExitCode::check_failed;
       }
     } // namespace
 
@@ -254,9 +278,15 @@ namespace RingContact
       // Made before the run, with its own communicator: an error must be
       // reported whatever state the run's communication was left in.
       const ErrorBarrier errors(world);
+      bool               started = false;
+      // An error before the problem starts refuses the input; one after
+      // ends a run that could not be completed.
+      const auto code = [&started]() {
+        return started ? ExitCode::step_failed : ExitCode::input_refused;
+      };
       try
         {
-          return run_schemes(parameters, world, out);
+          return run_schemes(parameters, world, out, started);
         }
       catch (const Interrupted &e)
         {
@@ -277,10 +307,15 @@ namespace RingContact
                       << std::endl;
           return 128 + signal;
         }
+      catch (const FactorizationTooLarge &e)
+        {
+          // The mesh is too large for this machine: the input's fault.
+          return errors.fail(one_line_message(e), ExitCode::input_refused);
+        }
       catch (const ParameterError &e)
         {
           // A value found wrong once the mesh is known: its file and line.
-          return errors.fail(parameters.located(e));
+          return errors.fail(parameters.located(e), ExitCode::input_refused);
         }
       // Before std::exception, which would give the bare "std::bad_alloc":
       // the message names the two ways to a smaller problem.
@@ -288,17 +323,18 @@ namespace RingContact
         {
           return errors.fail(
             "out of memory (a smaller mesh, or 'Mesh/Sector elements' for "
-            "cyclic symmetry)");
+            "cyclic symmetry)",
+            code());
         }
       catch (const std::exception &e)
         {
-          return errors.fail(one_line_message(e));
+          return errors.fail(one_line_message(e), code());
         }
       // Anything else, not even a std::exception: still one line and
       // exit code 1 rather than std::terminate.
       catch (...)
         {
-          return errors.fail("an unknown exception");
+          return errors.fail("an unknown exception", code());
         }
     }
   } // namespace Driver

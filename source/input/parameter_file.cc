@@ -65,6 +65,37 @@ namespace RingContact
         read_file(filename, 0);
       }
 
+      // The command line's `--set "Subsection/Entry=value"`, in their order,
+      // after the file: each is the line `set Entry = value` inside its
+      // subsections, so that it meets the same checks as the file's lines;
+      // its origin (and the place an error names) is "--set k", the k-th of
+      // them.
+      void
+      apply_override(const std::string &assignment, const unsigned int k)
+      {
+        const std::string where = "--set " + std::to_string(k);
+        const std::size_t equal = assignment.find('=');
+        const std::size_t slash = assignment.rfind('/', equal);
+        if (equal == std::string::npos || slash == std::string::npos ||
+            slash == 0)
+          fail(where,
+               0,
+               in_quotes(assignment) +
+                 " is not 'Subsection/Entry=value' (for example --set "
+                 "\"Newton/Tolerance=1e-9\")");
+        const std::vector<std::string> subsections =
+          Utilities::split_string_list(assignment.substr(0, slash), '/');
+        for (const auto &name : subsections)
+          scan_line("subsection " + name, where, 0, 0);
+        scan_line("set " + assignment.substr(slash + 1, equal - slash - 1) +
+                    " = " + assignment.substr(equal + 1),
+                  where,
+                  0,
+                  0);
+        for (std::size_t i = 0; i < subsections.size(); ++i)
+          scan_line("end", where, 0, 0);
+      }
+
       std::map<std::string, EntryOrigin> origins;
 
     private:
@@ -137,8 +168,10 @@ namespace RingContact
            const unsigned int line,
            const std::string &what) const
       {
-        throw std::runtime_error(file + ":" + std::to_string(line) + ": " +
-                                 what);
+        // Line 0: a command-line override, named by itself.
+        throw std::runtime_error(
+          (line == 0 ? file : file + ":" + std::to_string(line)) + ": " +
+          what);
       }
 
       void
@@ -414,10 +447,13 @@ namespace RingContact
   std::map<std::string, EntryOrigin>
   read_parameter_file(ParameterHandler                         &prm,
                       const std::string                        &filename,
-                      const std::map<std::string, std::string> &moved)
+                      const std::map<std::string, std::string> &moved,
+                      const std::vector<std::string>           &overrides)
   {
     Reader reader(prm, moved);
     reader.read(filename);
+    for (unsigned int k = 0; k < overrides.size(); ++k)
+      reader.apply_override(overrides[k], k + 1);
     return reader.origins;
   }
 } // namespace RingContact

@@ -159,7 +159,8 @@ namespace RingContact
   }
 
   void
-  Parameters::read(const std::string &filename)
+  Parameters::read(const std::string              &filename,
+                   const std::vector<std::string> &overrides)
   {
     prm_file = filename;
     // Every entry is bound to its member here and takes its value (checked)
@@ -175,7 +176,7 @@ namespace RingContact
         const auto these = entries->moved_entries();
         moved.insert(these.begin(), these.end());
       }
-    origins = read_parameter_file(prm, filename, moved);
+    origins = read_parameter_file(prm, filename, moved, overrides);
 
     // The top file's folder and name: the folder of a relative mesh path that
     // it sets itself, and the default results folder, results/<name>.
@@ -242,6 +243,87 @@ namespace RingContact
       {
         throw std::runtime_error(located(e));
       }
+    used_parameters = describe_used_parameters(prm);
+  }
+
+
+  // The record of the entries as they ran (results/<name>/used_parameters.prm):
+  // deal.II's own listing of every entry, its includes resolved, in which
+  // the entries the file (or --set) set stay `set` lines and the others
+  // become comments that show their default, so that the file runs the same
+  // problem again: an entry set to its default would not be the same (a
+  // scenario replaces the probe point the file leaves alone), and the
+  // entries of other scenarios are left out (a file that set them would be
+  // refused). A relative mesh path is written resolved, since the record
+  // lies in another folder.
+  std::string
+  Parameters::describe_used_parameters(const ParameterHandler &prm) const
+  {
+    std::ostringstream listing;
+    prm.print_parameters(listing, ParameterHandler::ShortPRM);
+    std::istringstream       in(listing.str());
+    std::vector<std::string> path, pending;
+    std::string              line, text;
+    // Subsection lines wait until something is written inside them.
+    std::vector<bool> opened;
+    while (std::getline(in, line))
+      {
+        const std::string trimmed = Utilities::trim(line);
+        if (trimmed.rfind("subsection ", 0) == 0)
+          {
+            path.push_back(trimmed.substr(11));
+            pending.push_back(line);
+            opened.push_back(false);
+            continue;
+          }
+        if (trimmed == "end")
+          {
+            if (opened.back())
+              text += line + "\n";
+            path.pop_back();
+            pending.pop_back();
+            opened.pop_back();
+            continue;
+          }
+        const std::size_t equal = trimmed.find('=');
+        if (trimmed.rfind("set ", 0) != 0 || equal == std::string::npos)
+          continue;
+        std::string subsection;
+        for (const auto &p : path)
+          subsection += (subsection.empty() ? "" : "/") + p;
+        const std::string entry = Utilities::trim(trimmed.substr(4, equal - 4));
+        const std::string key   = entry_key(subsection, entry);
+        const auto        reader = readers.find(key);
+        if (reader != readers.end() && reader->second.count(scenario) == 0)
+          continue;
+        for (unsigned int k = 0; k < path.size(); ++k)
+          if (!opened[k])
+            {
+              text += pending[k] + "\n";
+              opened[k] = true;
+            }
+        const std::string indent = line.substr(0, line.find("set "));
+        std::string       value  = Utilities::trim(trimmed.substr(equal + 1));
+        if (key == entry_key("Mesh", "Mesh file") && !value.empty())
+          value = mesh.mesh_file;
+        if (origins.count(key))
+          text += indent + "set " + entry + " = " + value + "\n";
+        else
+          text += indent + "# set " + entry + " = " + value + "  (default)\n";
+      }
+    std::string set_on_command_line;
+    for (const auto &[key, origin] : origins)
+      if (origin.line == 0)
+        set_on_command_line += "#   " + key + "\n";
+    return "# The parameters of a run of ring_contact on " + prm_file +
+           ", as it ran:\n"
+           "# the entries the file set (includes resolved) and, as comments, "
+           "the\n# defaults of the others. `ring_contact used_parameters.prm` "
+           "runs it again.\n" +
+           (set_on_command_line.empty() ?
+              std::string() :
+              "# Set on the command line (--set):\n" + set_on_command_line) +
+           text;
   }
 
   // Name the file and line that set the value, or say that it is the default:
@@ -253,8 +335,12 @@ namespace RingContact
   Parameters::located(const ParameterError &e) const
   {
     const auto origin = origins.find(entry_key(e.subsection, e.entry));
+    // Line 0: set on the command line (--set k), named by itself.
     if (origin != origins.end())
-      return origin->second.file + ":" + std::to_string(origin->second.line) +
+      return origin->second.file +
+             (origin->second.line == 0 ?
+                std::string() :
+                ":" + std::to_string(origin->second.line)) +
              ": " + e.what();
     return prm_file + ": " + e.what() + " ('" + e.entry +
            "' is not set in the file: its default)";

@@ -326,12 +326,13 @@ namespace RingContact
   bool
   OutputFolder::is_result_file(const std::string &name)
   {
-    // The names VtuWriter, the history and the verdicts use (scheme tags
+    // The names VtuWriter, the history, the verdicts, the record of the
+    // parameters and the run's log use (scheme tags
     // are lower-case letters, digits and hyphens; an MPI run writes each
     // process's piece as solution-<tag>-<step>.<process>.vtu and the
     // .pvtu that lists them), and their temporaries.
     static const std::regex result(
-      "(history\\.csv|verdicts\\.csv|"
+      "(history\\.csv|verdicts\\.csv|used_parameters\\.prm|run\\.log|"
       "(solution|slave)-[a-z0-9-]+-[0-9]+(\\.[0-9]+)?\\.vtu|"
       "solution-[a-z0-9-]+-[0-9]+\\.pvtu|"
       "(solution|slave)-[a-z0-9-]+\\.pvd)");

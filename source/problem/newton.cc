@@ -226,7 +226,10 @@ namespace RingContact
         // Cutting the step would not help (the pattern, hence the fill-in,
         // stays the same): say what makes the system so large to
         // factorize, and end the run.
-        throw std::runtime_error(one_line_message(e) + describe_fill_in());
+        // Thrown again as what it is: the driver refuses the input for it
+        // (exit code 2), the mesh being too large for the machine.
+        throw FactorizationTooLarge(one_line_message(e) + describe_fill_in(),
+                                    e.bytes);
       }
     // GMRES that stops short says nothing about the tangent itself: a
     // direct solver can tell a singular tangent from a weak preconditioner.

@@ -27,6 +27,21 @@ namespace RingContact
 {
   namespace Driver
   {
+    /// The program's exit codes (README.md lists them); an interrupted run
+    /// ends with 128 + the signal (130 for SIGINT, 143 for SIGTERM).
+    namespace ExitCode
+    {
+      /// Every step solved and every check passed.
+      constexpr int success = 0;
+      /// Every step solved, a check failed.
+      constexpr int check_failed = 1;
+      /// The input refused: the command line, the parameter file, the
+      /// mesh, or a problem the program cannot pose (before any step).
+      constexpr int input_refused = 2;
+      /// A load step could not be solved, or the run could not go on.
+      constexpr int step_failed = 3;
+    } // namespace ExitCode
+
     /// Run every scheme of the parameters; the exit code of the program.
     int
     run(const Parameters &parameters, const MPI_Comm world);

@@ -14,6 +14,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace RingContact
 {
@@ -52,7 +53,8 @@ namespace RingContact
   std::map<std::string, EntryOrigin>
   read_parameter_file(ParameterHandler                         &prm,
                       const std::string                        &filename,
-                      const std::map<std::string, std::string> &moved = {});
+                      const std::map<std::string, std::string> &moved = {},
+                      const std::vector<std::string>           &overrides = {});
 
   /// The key of read_parameter_file()'s map.
   std::string

@@ -315,7 +315,14 @@ namespace RingContact
     /// explanation that names the file, the line and the entry on any
     /// problem.
     void
-    read(const std::string &filename);
+    read(const std::string              &filename,
+         const std::vector<std::string> &overrides = {});
+
+    /// The entries as they ran, for results/<name>/used_parameters.prm:
+    /// the entries the file and the command line set (includes resolved,
+    /// a relative mesh path resolved), the others as comments with their
+    /// defaults. Runnable: it reproduces the run.
+    std::string used_parameters;
 
     /// The message of a ParameterError with the file and line that set
     /// the entry (or the note that it is its default).
@@ -338,6 +345,10 @@ namespace RingContact
     /// Print every entry with default and documentation.
     static void
     print_reference(std::ostream &out, bool as_prm);
+
+  private:
+    std::string
+    describe_used_parameters(const ParameterHandler &prm) const;
   };
 } // namespace RingContact
 
