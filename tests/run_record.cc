@@ -67,6 +67,10 @@ int
 main()
 {
   auto &out = RingContactTests::deallog_file;
+  // A rerun of the test starts from nothing (a folder of an earlier run
+  // would add the line that says what was removed).
+  for (const char *folder : {"pass", "fail", "unsolved", "first", "again"})
+    std::filesystem::remove_all(folder);
   const std::vector<std::string> quiet = {"--set",
                                           "Output/VTU interval=0",
                                           "--set",
@@ -155,7 +159,6 @@ main()
       terminal += line + "\n";
     check(contents("first/run.log") == terminal,
           "run.log holds what the terminal showed");
-    out << "run.log: " << first.lines.size()
-        << " lines, the terminal's, in order" << std::endl;
+    out << "run.log: the terminal's lines, in order" << std::endl;
   }
 }
