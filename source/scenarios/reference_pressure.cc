@@ -220,4 +220,61 @@ namespace RingContact
           << row.value("slipping_nodes");
     }
   } // namespace Friction
+
+
+  // @sect4{The scenarios checked against a reference pressure}
+
+  std::vector<std::string>
+  ReferencePressureScenario::leading_columns() const
+  {
+    return ReferencePressure::columns();
+  }
+
+  std::vector<std::string>
+  ReferencePressureScenario::trailing_columns() const
+  {
+    if (run_parameters().contact.friction_coefficient > 0)
+      return Friction::columns();
+    return {};
+  }
+
+  void
+  ReferencePressureScenario::report(const SolutionState &state,
+                                    HistoryRow          &row) const
+  {
+    const Parameters &parameters = run_parameters();
+    ReferencePressure::report(state,
+                              parameters.contact.probe_point,
+                              reference_pressure(state.load_state()),
+                              parameters.contact.reported_pressure,
+                              row.leading);
+    if (parameters.contact.friction_coefficient > 0)
+      Friction::report(state, parameters.contact.probe_point, row.trailing);
+  }
+
+  void
+  ReferencePressureScenario::print_step(std::ostream     &out,
+                                        const HistoryRow &row) const
+  {
+    ReferencePressure::print_step(out, row);
+    if (run_parameters().contact.friction_coefficient > 0)
+      Friction::print_step(out, row);
+  }
+
+  void
+  ReferencePressureScenario::warn(std::ostream &out, const HistoryRow &row) const
+  {
+    ReferencePressure::warn_if_open(out, row);
+  }
+
+  std::vector<Verdict>
+  ReferencePressureScenario::evaluate_checks(
+    const std::string             &scheme,
+    const std::vector<HistoryRow> &history) const
+  {
+    return ReferencePressure::evaluate_checks(run_parameters().checks,
+                                              scheme,
+                                              history,
+                                              load_program().n_steps());
+  }
 } // namespace RingContact

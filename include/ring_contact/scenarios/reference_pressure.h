@@ -17,6 +17,7 @@
 #include <ring_contact/output/history.h>
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/problem/solution_state.h>
+#include <ring_contact/scenarios/scenario.h>
 
 #include <ostream>
 #include <string>
@@ -84,6 +85,50 @@ namespace RingContact
     void
     print_step(std::ostream &out, const HistoryRow &row);
   } // namespace Friction
+
+  /// A scenario checked against a reference pressure that it knows
+  /// everywhere on its slave surface (the rings' closed form, the patch
+  /// test's uniform p). What it reports, prints, warns about and checks is
+  /// the same for all of them, around the reference each gives: the
+  /// functions of ReferencePressure and, with friction, of Friction.
+  class ReferencePressureScenario : public Scenario
+  {
+  public:
+    /// The pressure columns; the friction ones only with friction (a
+    /// frictionless history keeps the columns it had before friction).
+    std::vector<std::string>
+    leading_columns() const override;
+    std::vector<std::string>
+    trailing_columns() const override;
+
+    void
+    report(const SolutionState &state, HistoryRow &row) const override;
+
+    void
+    print_step(std::ostream &out, const HistoryRow &row) const override;
+
+    /// A converged state with the contact open everywhere, where the
+    /// reference has it closed, is another solution of the discrete
+    /// problem: said, since nothing else would say it.
+    void
+    warn(std::ostream &out, const HistoryRow &row) const override;
+
+    /// The checks of subsection Checks against the reference, over the
+    /// load program's steps (not the history's: a run that stopped early
+    /// fails the checks of the steps it did not reach).
+    std::vector<Verdict>
+    evaluate_checks(const std::string             &scheme,
+                    const std::vector<HistoryRow> &history) const override;
+
+  protected:
+    /// The reference pressure at a load state.
+    virtual double
+    reference_pressure(const LoadState &load) const = 0;
+
+    /// The parameters of the run.
+    virtual const Parameters &
+    run_parameters() const = 0;
+  };
 } // namespace RingContact
 
 #endif

@@ -260,7 +260,7 @@ namespace RingContact
     // The blocks pressed together by an imposed shortening, reported and
     // checked as the rings are (reference_pressure.cc) with the uniform p as
     // the reference.
-    class PatchTest : public Scenario
+    class PatchTest : public ReferencePressureScenario
     {
     public:
       // `blocks` refers to the scenario's entries, which the copy of the
@@ -387,60 +387,19 @@ namespace RingContact
       }
 
       // What it reports: the pressure at the probe against the uniform p,
-      // as the rings report theirs against the closed form. The reference is
-      // the load state's pressure itself.
-      std::vector<std::string>
-      leading_columns() const override
+      // as the rings report theirs against the closed form
+      // (ReferencePressureScenario). The reference is the load state's
+      // pressure itself.
+      double
+      reference_pressure(const LoadState &load) const override
       {
-        return ReferencePressure::columns();
+        return load.pressure;
       }
 
-      std::vector<std::string>
-      trailing_columns() const override
+      const Parameters &
+      run_parameters() const override
       {
-        // Friction's columns only with friction: a frictionless history keeps
-        // the columns it had before friction existed.
-        if (parameters.contact.friction_coefficient > 0)
-          return Friction::columns();
-        return {};
-      }
-
-      void
-      report(const SolutionState &state, HistoryRow &row) const override
-      {
-        ReferencePressure::report(state,
-                                  parameters.contact.probe_point,
-                                  state.load_state().pressure,
-                                  parameters.contact.reported_pressure,
-                                  row.leading);
-        if (parameters.contact.friction_coefficient > 0)
-          Friction::report(state, parameters.contact.probe_point, row.trailing);
-      }
-
-      void
-      print_step(std::ostream &out, const HistoryRow &row) const override
-      {
-        ReferencePressure::print_step(out, row);
-        if (parameters.contact.friction_coefficient > 0)
-          Friction::print_step(out, row);
-      }
-
-      void
-      warn(std::ostream &out, const HistoryRow &row) const override
-      {
-        ReferencePressure::warn_if_open(out, row);
-      }
-
-      std::vector<Verdict>
-      evaluate_checks(const std::string             &scheme,
-                      const std::vector<HistoryRow> &history) const override
-      {
-        // Against the ramp's number of steps: a check of the 'last' step, and a
-        // checked step the run did not reach, are resolved by it.
-        return ReferencePressure::evaluate_checks(parameters.checks,
-                                                  scheme,
-                                                  history,
-                                                  program.n_steps());
+        return parameters;
       }
 
     private:

@@ -446,7 +446,7 @@ namespace RingContact
     // (evaluated at each load state's pressure), and the load program.
     namespace
     {
-      class Rings : public Scenario
+      class Rings : public ReferencePressureScenario
       {
       public:
         // The closed form is made once: its constants depend on the radii,
@@ -633,73 +633,24 @@ namespace RingContact
               0.0};
         }
 
-        // What the rings report: the pressure at node A against the
-        // closed form (and the L2 error over the slave surface, the
-        // extreme pressures), and with friction the tangential traction.
-        std::vector<std::string>
-        leading_columns() const override
+        // What the rings report: the pressure at node A against the closed
+        // form (and the L2 error over the slave surface, the extreme
+        // pressures), and with friction the tangential traction; printed,
+        // warned about and checked as by every scenario checked against a
+        // reference pressure (ReferencePressureScenario). The reference is
+        // the closed form at the load state's pressure, the same pressure
+        // whose displacements were imposed (the rotation program keeps it
+        // fixed, the ramp raises it step by step).
+        double
+        reference_pressure(const LoadState &load) const override
         {
-          return ReferencePressure::columns();
+          return analytic.contact_pressure(load.pressure);
         }
 
-        // The friction columns only when there is friction: a frictionless
-        // run's history.csv has the columns it always had.
-        std::vector<std::string>
-        trailing_columns() const override
+        const Parameters &
+        run_parameters() const override
         {
-          if (parameters.contact.friction_coefficient > 0)
-            return Friction::columns();
-          return {};
-        }
-
-        // The reference is the closed form at this state's pressure, the
-        // same pressure whose displacements were imposed: the rotation
-        // program keeps it fixed, the ramp raises it step by step.
-        void
-        report(const SolutionState &state, HistoryRow &row) const override
-        {
-          ReferencePressure::report(state,
-                                    parameters.contact.probe_point,
-                                    analytic.contact_pressure(
-                                      state.load_state().pressure),
-                                    parameters.contact.reported_pressure,
-                                    row.leading);
-          if (parameters.contact.friction_coefficient > 0)
-            Friction::report(state,
-                             parameters.contact.probe_point,
-                             row.trailing);
-        }
-
-        void
-        print_step(std::ostream &out, const HistoryRow &row) const override
-        {
-          ReferencePressure::print_step(out, row);
-          if (parameters.contact.friction_coefficient > 0)
-            Friction::print_step(out, row);
-        }
-
-        // A converged state with the contact open everywhere, where the
-        // closed form has it closed, is another solution of the discrete
-        // problem: said, since nothing else would say it.
-        void
-        warn(std::ostream &out, const HistoryRow &row) const override
-        {
-          ReferencePressure::warn_if_open(out, row);
-        }
-
-        // The checks of subsection Checks against the closed form. The
-        // number of steps is the load program's, not the history's: a run
-        // that stopped early fails its checks of the steps it did not
-        // reach ('step not reached'), instead of passing them on the last
-        // step it converged.
-        std::vector<Verdict>
-        evaluate_checks(const std::string             &scheme,
-                        const std::vector<HistoryRow> &history) const override
-        {
-          return ReferencePressure::evaluate_checks(parameters.checks,
-                                                    scheme,
-                                                    history,
-                                                    program.n_steps());
+          return parameters;
         }
 
       private:
