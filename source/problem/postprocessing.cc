@@ -234,14 +234,18 @@ namespace RingContact
     NodalForces forces;
     forces.internal = internal_force;
     forces.applied  = external_force;
-    forces.applied *= -1; // external_force is the loads' part of R
+    // (Before the first assembly the vectors are empty: deal.II's Debug
+    // mode refuses to scale an empty vector.)
+    if (forces.applied.size() > 0)
+      forces.applied *= -1; // external_force is the loads' part of R
     forces.supported = supported;
     // As the Newton loop's floor of the forces (residual_measure()), with
     // the same factor of ten. From the last assembly with the tangent: the
     // converged iterate's own assembly may have skipped the cell matrices
     // that the bulk's magnitudes come from.
     forces.round_off = tangent_magnitude;
-    forces.round_off *= 10 * std::numeric_limits<double>::epsilon();
+    if (forces.round_off.size() > 0)
+      forces.round_off *= 10 * std::numeric_limits<double>::epsilon();
     // Per pair, the contact terms' values before any constraint condenses
     // them: a support whose node lies on a contact surface must not count
     // the contact force there as its reaction. add_forces() walks every
