@@ -3,10 +3,13 @@
 
     /usr/bin/python3 check_results.py FOLDER [options]
 
-(Debian's /usr/bin/python3, which has python3-vtk9.) Checks:
-- history.csv: the header and rows of 15 fields, the checked quantities,
-  and the invariants (equilibrium_error, action_reaction_error), every
-  number parses;
+(Debian's /usr/bin/python3 with python3-vtk9; where ParaView's Python is
+installed instead, python3-paraview, which conflicts with python3-vtk9, the
+script runs itself again under pvpython: both give VTK 9's vtkmodules.)
+Checks:
+- history.csv: a header that starts with scheme, step, time, holds the
+  solver's columns and ends with the invariants (equilibrium_error,
+  action_reaction_error), rows of as many fields, every number parses;
 - verdicts.csv (if present): rows of 10 fields;
 - every .pvd parses and every file it lists exists; every listed .vtu (or
   .pvtu of an MPI run, with its pieces) is read
@@ -25,11 +28,13 @@ import csv
 import glob
 import math
 import os
+import shutil
 import sys
 import xml.etree.ElementTree as ET
 
-HISTORY_FIELDS = 15
 VERDICT_FIELDS = 10
+LEADING = ["scheme", "step", "time"]
+SOLVER = ["newton_iterations", "step_cuts", "active_nodes", "wall_time"]
 INVARIANTS = ["equilibrium_error", "action_reaction_error"]
 
 
@@ -53,16 +58,22 @@ def check_csv(path, n_fields):
 
 
 def history_fields(path):
-    """The 15 fields of every run, a general problem's checked quantities
-    after them (check_1_contact_pressure, ...), and the invariants last."""
+    """scheme, step, time, the scenario's leading columns, the solver's,
+    the scenario's trailing ones, and the invariants last: the number of
+    fields of the header, whose names must be unique."""
     with open(path, newline="") as f:
         header = next(csv.reader(f), [])
+    if header[:len(LEADING)] != LEADING:
+        fail(f"{path}: the header does not start with {LEADING}")
     if header[-len(INVARIANTS):] != INVARIANTS:
         fail(f"{path}: the header does not end with {INVARIANTS}")
-    extra = header[HISTORY_FIELDS:-len(INVARIANTS)]
-    if any(not name.startswith("check_") for name in extra):
-        fail(f"{path}: header has unknown fields {extra}")
-    return HISTORY_FIELDS + len(extra) + len(INVARIANTS)
+    position = [header.index(name) if name in header else -1 for name in SOLVER]
+    if -1 in position or position != sorted(position) or \
+            position[-1] - position[0] != len(SOLVER) - 1:
+        fail(f"{path}: the header lacks the solver's columns {SOLVER} in order")
+    if len(set(header)) != len(header):
+        fail(f"{path}: the header repeats a name")
+    return len(header)
 
 
 def check_history(path):
@@ -84,10 +95,10 @@ def scheme_tag(name):
 def triangulated_measure(cell, points):
     """Signed area (2d cells) or length (1d cells) of VTK's triangulation of
     one cell, and the same with absolute values."""
-    import vtk
+    from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
 
-    ids = vtk.vtkIdList()
-    pts = vtk.vtkPoints()
+    ids = vtkIdList()
+    pts = vtkPoints()
     cell.Triangulate(0, ids, pts)
     signed, absolute = 0.0, 0.0
     if cell.GetCellDimension() == 2:
@@ -129,7 +140,8 @@ def pvtu_pieces(path):
 
 def check_vtu(path):
     """A .vtu, or a .pvtu with its pieces read as one grid."""
-    import vtk
+    from vtkmodules.vtkIOXML import (vtkXMLPUnstructuredGridReader,
+                                     vtkXMLUnstructuredGridReader)
 
     class Errors:
         messages = []
@@ -141,8 +153,8 @@ def check_vtu(path):
     parallel = path.endswith(".pvtu")
     if parallel:
         pvtu_pieces(path)
-    reader = (vtk.vtkXMLPUnstructuredGridReader() if parallel else
-              vtk.vtkXMLUnstructuredGridReader())
+    reader = (vtkXMLPUnstructuredGridReader() if parallel else
+              vtkXMLUnstructuredGridReader())
     reader.AddObserver("ErrorEvent", errors)
     reader.AddObserver("WarningEvent", errors)
     reader.SetFileName(path)
@@ -213,6 +225,24 @@ def check_measure(path, info, expected, tolerance, what):
                  f"{expected:.6g} within {tolerance:g}")
 
 
+def ensure_vtk():
+    """VTK 9's Python modules, from python3-vtk9 or from ParaView: without
+    the former, the script runs itself again under pvpython (once)."""
+    try:
+        import vtkmodules.vtkCommonDataModel  # noqa: F401
+        import vtkmodules.vtkIOXML  # noqa: F401
+        return
+    except ImportError:
+        pass
+    pvpython = shutil.which("pvpython")
+    if pvpython and os.environ.get("RING_CONTACT_UNDER_PVPYTHON") != "1":
+        os.environ["RING_CONTACT_UNDER_PVPYTHON"] = "1"
+        sys.stdout.flush()
+        os.execv(pvpython, [pvpython, os.path.abspath(__file__)] + sys.argv[1:])
+    fail("no VTK for Python: install python3-vtk9, or ParaView's "
+         "python3-paraview (pvpython)")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("folder")
@@ -228,6 +258,7 @@ def main():
     parser.add_argument("--tolerance", type=float, default=1e-3)
     parser.add_argument("--quiet", action="store_true")
     args = parser.parse_args()
+    ensure_vtk()
 
     def say(text):
         if not args.quiet:

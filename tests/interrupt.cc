@@ -36,16 +36,11 @@ namespace
     return name + ".prm";
   }
 
-  // The step number of a "Step   k ..." line, 0 for any other line.
+  // The step number of a step line (" 3/100 ..."), 0 for any other line.
   unsigned int
   step_of(const std::string &line)
   {
-    std::istringstream in(line);
-    std::string        word;
-    unsigned int       step = 0;
-    if (in >> word && word == "Step" && in >> step)
-      return step;
-    return 0;
+    return RingContactTests::RunResult::step_of(line);
   }
 
   // Send `signal` (and `second_signal`, if not 0, right after it) when the
@@ -78,7 +73,7 @@ namespace
                              (signal == SIGINT ? "SIGINT" : "SIGTERM") +
                              (second_signal != 0 ? ", then SIGTERM" : "") + ")";
     check(sent, what + ": the signal was sent");
-    const unsigned int steps_printed = result.count("Step ");
+    const unsigned int steps_printed = result.steps_printed();
     const unsigned int rows          = count_rows(name + "/history.csv");
     const bool         verdicts = std::ifstream(name + "/verdicts.csv").good();
     if (second_signal == 0)
@@ -162,38 +157,33 @@ namespace
     std::thread                           signaller;
     std::chrono::steady_clock::time_point sent;
     bool                                  gmsh_started = false;
-    const auto                            result       = RingContactTests::
-      run_command({RING_CONTACT_EXECUTABLE, "endless.prm"},
-                  {},
-                  0,
-                  [&](const pid_t pid) {
-                    signaller = std::thread([&, pid]() {
-                      // gmsh runs when the program has a child process;
-                      // at most a minute to get there, then SIGKILL.
-                      const std::string children =
-                        "/proc/" + std::to_string(pid) + "/task/" +
-                        std::to_string(pid) + "/children";
-                      for (int i = 0; i < 600 && !gmsh_started; ++i)
-                        {
-                          std::string child;
-                          std::ifstream(children) >> child;
-                          gmsh_started = !child.empty();
-                          std::this_thread::sleep_for(
-                            std::chrono::milliseconds(100));
-                        }
-                      sent = std::chrono::steady_clock::now();
-                      ::kill(pid, gmsh_started ? SIGTERM : SIGKILL);
-                      // A run deaf to it is killed after 20 s.
-                      for (int i = 0; i < 200; ++i)
-                        {
-                          std::this_thread::sleep_for(
-                            std::chrono::milliseconds(100));
-                          if (::kill(pid, 0) != 0)
-                            return;
-                        }
-                      ::kill(pid, SIGKILL);
-                    });
-                  });
+    const auto result = RingContactTests::run_command(
+      {RING_CONTACT_EXECUTABLE, "endless.prm"}, {}, 0, [&](const pid_t pid) {
+        signaller = std::thread([&, pid]() {
+          // gmsh runs when the program has a child process;
+          // at most a minute to get there, then SIGKILL.
+          const std::string children = "/proc/" + std::to_string(pid) +
+                                       "/task/" + std::to_string(pid) +
+                                       "/children";
+          for (int i = 0; i < 600 && !gmsh_started; ++i)
+            {
+              std::string child;
+              std::ifstream(children) >> child;
+              gmsh_started = !child.empty();
+              std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            }
+          sent = std::chrono::steady_clock::now();
+          ::kill(pid, gmsh_started ? SIGTERM : SIGKILL);
+          // A run deaf to it is killed after 20 s.
+          for (int i = 0; i < 200; ++i)
+            {
+              std::this_thread::sleep_for(std::chrono::milliseconds(100));
+              if (::kill(pid, 0) != 0)
+                return;
+            }
+          ::kill(pid, SIGKILL);
+        });
+      });
     const auto ended = std::chrono::steady_clock::now();
     signaller.join();
     const double seconds = std::chrono::duration<double>(ended - sent).count();
@@ -230,7 +220,7 @@ namespace
          " set Print timing = false\nend\n";
     bool                                  sent = false;
     std::chrono::steady_clock::time_point sent_at;
-    const auto                            result = RingContactTests::run_program(
+    const auto result = RingContactTests::run_program(
       "cuts.prm", [&](const std::string &line, const pid_t pid) {
         if (!sent && line.find("Newton failed") != std::string::npos)
           {
@@ -239,16 +229,17 @@ namespace
             sent = true;
           }
       });
-    const double seconds = std::chrono::duration<double>(
-                             std::chrono::steady_clock::now() - sent_at)
-                             .count();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent_at)
+        .count();
     check(sent, "step cuts: a step failed and was cut");
     check(result.exit_code == 143,
           "step cuts: exit code " + std::to_string(result.exit_code));
     check(result.printed("Interrupted by a signal in step 1"),
           "step cuts: the message");
     check(result.count("  step 1: Newton failed") <= 2,
-          "step cuts: " + std::to_string(result.count("  step 1: Newton failed")) +
+          "step cuts: " +
+            std::to_string(result.count("  step 1: Newton failed")) +
             " cuts after the signal");
     check(seconds < 5, "step cuts: stopped within seconds");
     check(RingContactTests::count_rows("cuts/history.csv") == 0,

@@ -74,7 +74,7 @@ namespace
     const auto                  first     = RingContactTests::run_program(
       write_prm("lock", 400, "nodal, Gauss 3", 1),
       [&](const std::string &line, const pid_t pid) {
-        if (line.rfind("Step", 0) == 0 && first_pid == 0)
+        if (RingContactTests::RunResult::step_of(line) > 0 && first_pid == 0)
           {
             first_pid = pid;
             second = RingContactTests::run_program("lock.prm");
@@ -89,14 +89,14 @@ namespace
             message.find("pid " + std::to_string(first_pid)) !=
               std::string::npos,
           "lock: the message names the folder and the pid: " + message);
-    check(second.count("Step") == 0, "lock: the second run solved nothing");
+    check(second.steps_printed() == 0, "lock: the second run solved nothing");
     check(first.exit_code == 143,
           "lock: the first run stopped by SIGTERM, exit code " +
             std::to_string(first.exit_code));
     const unsigned int rows = count_rows("results_lock/history.csv");
-    check(rows == first.count("Step"),
+    check(rows == first.steps_printed(),
           "lock: the first run's rows: " + std::to_string(rows) + " rows for " +
-            std::to_string(first.count("Step")) + " steps printed");
+            std::to_string(first.steps_printed()) + " steps printed");
     check(RingContactTests::check_results(
             "results_lock",
             "--quiet --all-listed --vtu-every-step --rows " +
@@ -128,12 +128,11 @@ namespace
     const auto second =
       RingContactTests::run_program(write_prm("rerun", 3, "nodal", 1));
     check(second.exit_code == 0, "rerun: the second run");
-    const auto removal =
-      std::find_if(second.lines.begin(),
-                   second.lines.end(),
-                   [](const std::string &line) {
-                     return line.rfind("Removed", 0) == 0;
-                   });
+    const auto removal = std::find_if(second.lines.begin(),
+                                      second.lines.end(),
+                                      [](const std::string &line) {
+                                        return line.rfind("Removed", 0) == 0;
+                                      });
     check(removal != second.lines.end() &&
             removal->find("the 36 files of an earlier run") !=
               std::string::npos,
@@ -168,8 +167,7 @@ namespace
     const auto result = RingContactTests::run_program(prm);
     check(result.exit_code == 2,
           "failed start: exit code " + std::to_string(result.exit_code));
-    check(!result.printed("earlier run"),
-          "failed start: nothing said removed");
+    check(!result.printed("earlier run"), "failed start: nothing said removed");
     check(count_rows("results_rerun/history.csv") == 3 &&
             count_files("results_rerun", ".vtu") == 2 * (3 + 1) &&
             count_files("results_rerun", ".pvd") == 2,
@@ -227,7 +225,7 @@ namespace
             message.find(expected_file) != std::string::npos,
           name + ": the message names the file: " + message);
     const std::string  folder        = "results_" + name;
-    const unsigned int steps_printed = result.count("Step");
+    const unsigned int steps_printed = result.steps_printed();
     const unsigned int rows          = count_rows(folder + "/history.csv");
     // The step whose file could not be written is printed, not recorded.
     check(steps_printed >= 1 && rows + 1 == steps_printed,

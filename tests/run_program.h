@@ -24,6 +24,16 @@
 
 namespace RingContactTests
 {
+  /// A file's whole contents ("" if it cannot be read).
+  inline std::string
+  file_contents(const std::string &filename)
+  {
+    std::ifstream      in(filename);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   /// The data rows of a CSV file with a header row.
   inline unsigned int
   count_rows(const std::string &filename)
@@ -53,6 +63,40 @@ namespace RingContactTests
       return n;
     }
 
+    /// The step k of a step line (" 12/21  0.6  2 ...": the progress
+    /// table's first column is k/N), 0 for any other line.
+    static unsigned int
+    step_of(const std::string &line)
+    {
+      std::istringstream in(line);
+      unsigned int       k = 0, n = 0;
+      char               slash = 0;
+      if (in >> k >> slash >> n && slash == '/' && n > 0 &&
+          (in.peek() == ' ' || in.eof()))
+        return k;
+      return 0;
+    }
+
+    /// Number of step lines printed.
+    unsigned int
+    steps_printed() const
+    {
+      unsigned int n = 0;
+      for (const auto &line : lines)
+        n += step_of(line) > 0;
+      return n;
+    }
+
+    /// Whether the step line of step k was printed.
+    bool
+    printed_step(const unsigned int k) const
+    {
+      for (const auto &line : lines)
+        if (step_of(line) == k)
+          return true;
+      return false;
+    }
+
     /// Whether a printed line contains `text`.
     bool
     printed(const std::string &text) const
@@ -71,7 +115,7 @@ namespace RingContactTests
   inline RunResult
   run_command(
     const std::vector<std::string>                        &arguments,
-    const std::function<void(const std::string &, pid_t)> &on_line = {},
+    const std::function<void(const std::string &, pid_t)> &on_line         = {},
     const rlim_t                                           file_size_limit = 0,
     const std::function<void(pid_t)>                      &on_start        = {})
   {

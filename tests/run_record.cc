@@ -18,15 +18,6 @@ using RingContactTests::check;
 
 namespace
 {
-  std::string
-  contents(const std::string &filename)
-  {
-    std::ifstream     in(filename);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   // history.csv without its wall_time column.
   std::string
   history_without_wall_time(const std::string &filename)
@@ -132,22 +123,24 @@ main()
                              "Load program/Ramp steps=7",
                              a});
     check(first.exit_code == 0, "first run");
-    const std::string used = contents("first/used_parameters.prm");
+    const std::string used =
+      RingContactTests::file_contents("first/used_parameters.prm");
     check(used.find("  set Ramp steps = 7\n") != std::string::npos &&
             used.find("#   Load program/Ramp steps\n") != std::string::npos,
           "the override is recorded as set on the command line");
     check(RingContactTests::count_rows("first/history.csv") == 2 * 7,
           "the override acts: 7 steps of each of A's two schemes");
-    const auto again = run({"--set",
-                            "Output/Directory=" +
-                              std::filesystem::current_path().string() +
-                              "/again",
-                            "first/used_parameters.prm"});
+    const auto again =
+      run({"--set",
+           "Output/Directory=" + std::filesystem::current_path().string() +
+             "/again",
+           "first/used_parameters.prm"});
     check(again.exit_code == 0, "rerun from used_parameters.prm");
     check(history_without_wall_time("first/history.csv") ==
             history_without_wall_time("again/history.csv"),
           "the rerun's history equals the first's (wall_time aside)");
-    check(contents("first/verdicts.csv") == contents("again/verdicts.csv"),
+    check(RingContactTests::file_contents("first/verdicts.csv") ==
+            RingContactTests::file_contents("again/verdicts.csv"),
           "the rerun's verdicts equal the first's");
     out << "used_parameters.prm: the rerun's history.csv and verdicts.csv "
            "equal the first run's"
@@ -157,7 +150,7 @@ main()
     std::string terminal;
     for (const auto &line : first.lines)
       terminal += line + "\n";
-    check(contents("first/run.log") == terminal,
+    check(RingContactTests::file_contents("first/run.log") == terminal,
           "run.log holds what the terminal showed");
     out << "run.log: the terminal's lines, in order" << std::endl;
   }

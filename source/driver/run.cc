@@ -12,6 +12,7 @@
 // signal after a stop by SIGINT or SIGTERM (130, 143), the shell's code
 // for a process ended by a signal.
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/config.h>
 #include <ring_contact/driver/mpi_session.h>
 #include <ring_contact/driver/run.h>
 #include <ring_contact/driver/run_log.h>
@@ -19,9 +20,12 @@
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/output/history.h>
 #include <ring_contact/output/output_folder.h>
+#include <ring_contact/output/progress.h>
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/problem/contact_problem.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -91,9 +95,10 @@ namespace RingContact
           on_process_zero(world, [&]() {
             const auto removed = folder->remove_earlier_results();
             if (!removed.empty())
-              out << "Removed from " << output.directory << " the "
-                  << removed.size() << " files of an earlier run ("
-                  << describe_files(removed) << ")\n";
+              out << wrap_text("Removed from " + output.directory + " the " +
+                               std::to_string(removed.size()) +
+                               " files of an earlier run (" +
+                               describe_files(removed) + ")");
             if (output.write_history)
               history =
                 std::make_unique<HistoryFile>(output.directory + "/history.csv",
@@ -139,6 +144,26 @@ namespace RingContact
             });
         }
 
+        /// This run's files in the folder, in one line (describe_files());
+        /// empty where the run writes none.
+        std::string
+        contents() const
+        {
+          if (!writes_files)
+            return "";
+          std::vector<std::string> names;
+          std::error_code          error;
+          for (const auto &entry :
+               std::filesystem::directory_iterator(output.directory, error))
+            {
+              const std::string name = entry.path().filename().string();
+              if (OutputFolder::is_result_file(name) && name.front() != '.')
+                names.push_back(name);
+            }
+          std::sort(names.begin(), names.end());
+          return describe_files(names);
+        }
+
       private:
         const OutputParameters       &output;
         const MPI_Comm                world;
@@ -177,6 +202,75 @@ namespace RingContact
             << "\n";
       }
 
+      std::string
+      absolute_path(const std::string &directory)
+      {
+        std::error_code error;
+        const auto      path = std::filesystem::absolute(directory, error);
+        return error ? directory : path.lexically_normal().string();
+      }
+
+      // The first line of a run: the program, the file, the schemes and
+      // where the results go, so that a log read later says what it is.
+      std::string
+      start_line(const Parameters &parameters)
+      {
+        const OutputParameters &output = parameters.output;
+        std::string             schemes;
+        for (const auto &scheme : parameters.contact.schemes)
+          schemes += (schemes.empty() ? "" : ", ") + scheme.name();
+        const unsigned int n = parameters.contact.schemes.size();
+        return wrap_text(
+          "ring_contact " RING_CONTACT_VERSION ": " + parameters.prm_file +
+          ", " + std::to_string(n) + (n == 1 ? " scheme (" : " schemes (") +
+          schemes + "); results in " +
+          (output.write_history || output.vtu_interval > 0 ?
+             absolute_path(output.directory) :
+             std::string("no folder (no history, no VTU output)")));
+      }
+
+      // The run's totals, for the line that ends it.
+      struct RunSummary
+      {
+        unsigned int steps = 0, iterations = 0, cuts = 0, schemes = 0;
+
+        void
+        add(const std::vector<HistoryRow> &history)
+        {
+          ++schemes;
+          steps += history.size();
+          for (const auto &row : history)
+            {
+              iterations += row.newton_iterations;
+              cuts += row.step_cuts;
+            }
+        }
+
+        std::string
+        text(const double                seconds,
+             const bool                  solved,
+             const std::vector<Verdict> &verdicts) const
+        {
+          unsigned int passed = 0;
+          for (const auto &verdict : verdicts)
+            passed += verdict.pass;
+          return wrap_text(
+            std::string(solved ? "Done: " : "Stopped: ") +
+            std::to_string(steps) + (steps == 1 ? " step" : " steps") +
+            (schemes > 1 ? " of " + std::to_string(schemes) + " schemes" :
+                           std::string()) +
+            " in " + format_duration(seconds) + ", " +
+            std::to_string(iterations) +
+            (iterations == 1 ? " Newton iteration, " : " Newton iterations, ") +
+            std::to_string(cuts) +
+            (cuts == 1 ? " step cut; " : " step cuts; ") +
+            (verdicts.empty() ?
+               std::string("no checks") :
+               std::to_string(passed) + " of " +
+                 std::to_string(verdicts.size()) + " checks pass"));
+        }
+      };
+
       // Every scheme, one after the other; the exit code.
       int
       run_schemes(const Parameters &parameters,
@@ -188,15 +282,22 @@ namespace RingContact
         ResultsFolder           folder(output, world, out);
         std::vector<Verdict>    verdicts;
         bool                    solved = true, stop = false;
+        RunProgress             progress(parameters.contact.schemes.size());
+        RunSummary              summary;
+        if (output.print_steps)
+          out << start_line(parameters);
         // Each scheme is a problem of its own (its mesh, unknowns and
         // history): the schemes share nothing but the results folder and
         // the verdicts, which accumulate over them.
-        for (const auto &scheme : parameters.contact.schemes)
+        for (unsigned int s = 0; s < parameters.contact.schemes.size(); ++s)
           {
+            const auto &scheme = parameters.contact.schemes[s];
             if (stop)
               break;
             ContactProblem problem(parameters, scheme, out, world);
             const auto     columns = problem.history_columns();
+            problem.set_progress(progress);
+            progress.start_scheme(s);
             // Until the problem starts, an error is a refusal of its input
             // (exit code 2); after, a failure of the run (3).
             started = false;
@@ -215,6 +316,7 @@ namespace RingContact
             // run() first: `solved && problem.run()` would skip the later
             // schemes once one failed.
             solved = problem.run() && solved;
+            summary.add(problem.history());
             // Asked again: the observer does not run after a failed step,
             // and a signal may come after its last call.
             stop = stop_asked(world);
@@ -261,6 +363,12 @@ namespace RingContact
         const bool pass = print_verdicts(out, verdicts);
         if (!solved)
           out << "A load step could not be solved (see above).\n";
+        if (output.print_steps)
+          out << summary.text(progress.elapsed(), solved, verdicts)
+              << (folder.contents().empty() ?
+                    std::string() :
+                    wrap_text("Results in " + absolute_path(output.directory) +
+                              ": " + folder.contents()));
         return !solved ? ExitCode::step_failed :
                pass    ? ExitCode::success :
                          ExitCode::check_failed;

@@ -162,6 +162,14 @@ namespace RingContact
           return at == data.size();
         }
 
+        /// Whether the next byte is `marker` (false at the end).
+        bool
+        next_is(const std::uint8_t marker) const
+        {
+          return at < data.size() &&
+                 static_cast<std::uint8_t>(data[at]) == marker;
+        }
+
       private:
         const std::string &data;
         const std::string &filename;
@@ -189,6 +197,65 @@ namespace RingContact
       // that ends without them was cut short, one with bytes after them is
       // not what the child meant to write.
       constexpr std::uint32_t end_of_answer = 0x52494e47;
+
+      // Before the answer, the child says what it starts: this byte and a
+      // string ("reading it", "meshing it with Mesh.Algorithm = 8 (...)").
+      // A child that crashes has said what it was doing: a crash of gmsh's
+      // mesher is then reported as gmsh's, with the algorithm, not as a
+      // damaged file (Mesh.Algorithm = 8 crashes gmsh 4.8 on a unit
+      // square).
+      constexpr std::uint8_t stage_marker = 0xfe;
+
+      // The last stage the child announced in a (possibly cut) answer, ""
+      // if none.
+      std::string
+      last_stage(const std::string &answer, const std::string &filename)
+      {
+        std::string stage;
+        Reader      in(answer, filename);
+        try
+          {
+            while (in.next_is(stage_marker))
+              {
+                in.value<std::uint8_t>();
+                stage = in.string();
+              }
+          }
+        catch (const std::exception &)
+          {
+            // A stage cut in the middle: the one before it.
+          }
+        return stage;
+      }
+
+      // gmsh's names of its 2d algorithms (Mesh.Algorithm).
+      std::string
+      algorithm_name(const int algorithm)
+      {
+        switch (algorithm)
+          {
+            case 1:
+              return "MeshAdapt";
+            case 2:
+              return "Automatic";
+            case 3:
+              return "Initial mesh only";
+            case 5:
+              return "Delaunay";
+            case 6:
+              return "Frontal-Delaunay";
+            case 7:
+              return "BAMG";
+            case 8:
+              return "Frontal-Delaunay for quads";
+            case 9:
+              return "Packing of parallelograms";
+            case 11:
+              return "Quasi-structured quad";
+            default:
+              return "unknown";
+          }
+      }
 
       // gmsh 4.8 throws some of its errors (a surface that the transfinite
       // algorithm cannot mesh, say) from where no exception can leave:
@@ -258,6 +325,11 @@ namespace RingContact
             gmsh::option::setNumber("General.Terminal", 0);
             gmsh::option::setNumber("General.AbortOnError", 3); // throw
             gmsh::option::setNumber("General.NumThreads", 1);
+            const auto stage = [&out](const std::string &what) {
+              out.value<std::uint8_t>(stage_marker);
+              out.string(what);
+            };
+            stage("reading it");
             gmsh::open(filename);
             // A script is meshed here, in two dimensions, at the order the
             // caller asks: the rings 2 as soon as one of them is quadratic,
@@ -265,7 +337,14 @@ namespace RingContact
             // general problem 1, since its cells take the vertices only.
             if (geo)
               {
+                double algorithm = 0;
+                gmsh::option::getNumber("Mesh.Algorithm", algorithm);
+                const int a = static_cast<int>(algorithm);
+                stage("meshing it with Mesh.Algorithm = " + std::to_string(a) +
+                      " (" + algorithm_name(a) + ")");
                 gmsh::model::mesh::generate(2);
+                stage("making its elements of order " +
+                      std::to_string(element_order));
                 gmsh::model::mesh::setOrder(static_cast<int>(element_order));
               }
 
@@ -496,12 +575,26 @@ namespace RingContact
           fail(filename,
                "gmsh did not finish reading it within " +
                  std::to_string(static_cast<int>(time_limit_seconds)) + " s");
+        // A crash while gmsh meshes a script is gmsh's: the script was read.
+        // While it reads a file, the file is the suspect (gmsh 4.8 crashes
+        // on some damaged files).
         if (WIFSIGNALED(status))
-          fail(filename,
-               "gmsh's reader crashed on it (signal " +
-                 std::to_string(WTERMSIG(status)) + ", " +
-                 strsignal(WTERMSIG(status)) +
-                 "): the file is damaged or not a mesh gmsh can read");
+          {
+            const std::string signal = "signal " +
+                                       std::to_string(WTERMSIG(status)) +
+                                       ", " + strsignal(WTERMSIG(status));
+            const std::string stage = last_stage(answer, filename);
+            if (stage.rfind("meshing", 0) == 0 || stage.rfind("making", 0) == 0)
+              fail(filename,
+                   "gmsh " GMSH_API_VERSION " crashed (" + signal + ") while " +
+                     stage +
+                     ": a fault of gmsh's mesher, not of the script; another "
+                     "algorithm may mesh it (Mesh.Algorithm = 6, "
+                     "Frontal-Delaunay, with Recombine Surface)");
+            fail(filename,
+                 "gmsh's reader crashed on it (" + signal +
+                   "): the file is damaged or not a mesh gmsh can read");
+          }
         // The child's own codes (3: the pipe, 4: descriptor 3, 5: the
         // parent gone) or an exit() inside gmsh.
         if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
@@ -531,6 +624,11 @@ namespace RingContact
       Reader in(answer, filename);
       if (answer.empty())
         fail(filename, "gmsh's reader gave no answer");
+      while (in.next_is(stage_marker))
+        {
+          in.value<std::uint8_t>();
+          in.string();
+        }
       if (in.value<std::uint8_t>() != 0)
         // gmsh's message (it often repeats the file name), on one line.
         fail(filename, "gmsh: " + printable(in.string(), 300));

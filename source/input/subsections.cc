@@ -6,12 +6,12 @@
 // other, its finish(). How an entry is declared, checked and documented is
 // told at the top of parameters.cc, which assembles these subsections and
 // the scenarios' own into the whole file.
+#include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/scenarios/scenario.h>
-#include <ring_contact/base/utilities.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -311,9 +311,9 @@ namespace RingContact
 
   namespace
   {
-      // 'nodal' by default, the original's default scheme. The schemes of a list
-      // are run one after the other on the same mesh and load program, each with
-      // its own output files, so that one file compares them.
+    // 'nodal' by default, the original's default scheme. The schemes of a list
+    // are run one after the other on the same mesh and load program, each with
+    // its own output files, so that one file compares them.
     // Each name is parsed by IntegrationScheme::parse(); the list is the
     // member `schemes` of ContactParameters.
     void
@@ -339,14 +339,18 @@ namespace RingContact
               for (const auto &entry : Utilities::split_string_list(text))
                 {
                   // parse() knows the schemes but not the file: its message
-                  // becomes a ParameterError of this entry, reported at its line.
+                  // becomes a ParameterError of this entry, reported at its
+                  // line.
                   try
                     {
                       schemes.push_back(IntegrationScheme::parse(entry));
                     }
                   catch (const std::exception &e)
                     {
-                      require(false, "Contact", "Integration schemes", e.what());
+                      require(false,
+                              "Contact",
+                              "Integration schemes",
+                              e.what());
                     }
                   // One run per scheme: a scheme listed twice would run twice
                   // and write its files over its own.
@@ -414,9 +418,9 @@ namespace RingContact
           "largest Young's modulus over the smallest slave "
           "segment length.",
           not_negative());
-    // 0 by default: the rings' case is frictionless. With 0 the tangential multiplier
-    // is FE_Nothing, so a frictionless run has the same unknowns, numbering and
-    // digits as before friction existed (doc/design.md).
+    // 0 by default: the rings' case is frictionless. With 0 the tangential
+    // multiplier is FE_Nothing, so a frictionless run has the same unknowns,
+    // numbering and digits as before friction existed (doc/design.md).
     s.add("Friction coefficient",
           friction_coefficient,
           "0",
@@ -439,19 +443,18 @@ namespace RingContact
           "surface (the multiplier itself); nominal: force per "
           "reference length.");
     // (0.6, 0) is node A of the seed rings, and also lies on the patch test's
-    // interface. A scenario replaces it when the file does not set the entry
-    // (the rings: (R2, 0) for any interface radius; a general problem: the
-    // point of its first pressure check), and checks that the point is near its
-    // slave surface, since the nearest slave node is used whatever the
-    // distance.
+    // interface. The rings replace it by (R2, 0) when the file does not set
+    // the entry, and check that the point is near the slave surface, since
+    // the nearest slave node is used whatever the distance. A general
+    // problem refuses it: it has no node A, its checks name their points.
     s.add("Probe point",
           "0.6, 0",
           Patterns::List(Patterns::Double(), 2, 2),
           "Reference position [m] of the probe, the slave node "
           "whose pressure is reported (the nearest slave node is "
-          "used). Not set: the scenario's (the rings: node A at (R2, 0) "
-          "for any interface radius; a general problem: the point of its "
-          "first pressure check).",
+          "used). Not set: node A at (R2, 0) for any interface radius. "
+          "The rings and the patch test only: a general problem reports "
+          "the quantities of its Check subsections.",
           [this](const std::string &text) {
             const auto xy = point_from_text(text, "Contact", "Probe point");
             probe_point   = Point<2>(xy[0], xy[1]);
@@ -709,10 +712,13 @@ namespace RingContact
           "true",
           "Start each step from the linear extrapolation of the "
           "last two converged states.");
+    // Off by default: the step's line says how many iterations a step took;
+    // the residuals are for whoever studies the convergence.
     s.add("Verbose",
           verbose,
-          "true",
-          "Print the residual of every Newton iteration.");
+          "false",
+          "Print the residual of every Newton iteration (besides the "
+          "step's line).");
     // 'auto' keeps a serial run free of MPI (starting it costs about a second):
     // UMFPACK on one process, MUMPS under mpirun. MUMPS asked for on one
     // process starts MPI for itself. The iterative solver is for meshes whose
@@ -788,8 +794,10 @@ namespace RingContact
     s.add("Print steps",
           print_steps,
           "true",
-          "Print one line per step (load, Newton iterations, "
-          "pressure at A, error).");
+          "Print the run's progress: its first line (file, schemes, "
+          "results folder), one line per step (step k/N, pseudo-time, "
+          "Newton iterations, the checked quantities, elapsed and "
+          "remaining time) and a summary at the end.");
     // Switched off in the tests: the times change from run to run, and a test's
     // output is compared line by line with the expected one.
     s.add("Print timing",

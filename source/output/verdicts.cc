@@ -10,6 +10,7 @@
 #include <ring_contact/output/output_folder.h>
 #include <ring_contact/output/verdicts.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -30,42 +31,76 @@ namespace RingContact
         out << "\nChecks: none\n";
         return true;
       }
-    // Fixed widths: scheme and quantity left-aligned, numbers
-    // right-aligned, so that the columns of a long table line up.
-    bool all_pass = true;
-    out << "\nChecks\n"
-        << std::left << std::setw(18) << "scheme" << std::setw(22) << "quantity"
-        << std::right << std::setw(5) << "step" << std::setw(15) << "value"
-        << std::setw(15) << "reference"
-        << "  " << std::left << std::setw(8) << "error is" << std::right
-        << std::setw(11) << "error" << std::setw(11) << "tolerance"
-        << "  " << std::left << std::setw(13) << "reference is"
-        << "verdict\n";
+    // The table's cells first, then each column as wide as its widest
+    // cell: a quantity as long as "tangential traction at (0.3, 0)" fits
+    // within 132 columns beside the rest (fixed widths once pushed such a
+    // row to 136). Scheme, quantity and the words left-aligned, numbers
+    // right-aligned, two spaces between columns.
+    const std::vector<std::string> header = {"scheme",
+                                             "quantity",
+                                             "step",
+                                             "value",
+                                             "reference",
+                                             "error is",
+                                             "error",
+                                             "tolerance",
+                                             "source",
+                                             "verdict"};
+    const std::vector<bool>        left   = {
+               true, true, false, false, false, true, false, false, true, true};
+    std::vector<std::vector<std::string>> rows;
+    bool                                  all_pass = true;
     for (const auto &v : verdicts)
       {
         // A step not reached has no value, reference or error: "-".
         // Otherwise seven digits for value and reference, three for error
         // and tolerance, whose sign as a fixed percentage (0.0000 %) flipped
         // with round-off between runs.
-        const bool none = std::isnan(v.value) && std::isnan(v.error);
-        out << std::left << std::setw(18) << v.scheme << std::setw(22)
-            << v.quantity << std::right << std::setw(5) << v.step
-            << std::setprecision(7) << std::setw(15);
-        if (none)
-          out << "-" << std::setw(15) << "-"
-              << "  " << std::left << std::setw(8) << "" << std::right
-              << std::setw(11) << "-";
-        else
-          out << v.value << std::setw(15) << v.reference << "  " << std::left
-              << std::setw(8) << (v.relative ? "relative" : "absolute")
-              << std::right << std::scientific << std::setprecision(2)
-              << std::setw(11) << v.error;
-        out << std::scientific << std::setprecision(2) << std::setw(11)
-            << v.tolerance << std::defaultfloat << "  " << std::left
-            << std::setw(13) << (v.source.empty() ? "-" : v.source)
-            << (v.pass ? "PASS" : "FAIL") << std::right << '\n';
+        const bool none       = std::isnan(v.value) && std::isnan(v.error);
+        const auto scientific = [](const double x) {
+          std::ostringstream text;
+          text << std::scientific << std::setprecision(2) << x;
+          return text.str();
+        };
+        const auto digits = [](const double x) {
+          std::ostringstream text;
+          text << std::setprecision(7) << x;
+          return text.str();
+        };
+        rows.push_back({v.scheme,
+                        v.quantity,
+                        std::to_string(v.step),
+                        none ? "-" : digits(v.value),
+                        none ? "-" : digits(v.reference),
+                        none ? "" : (v.relative ? "relative" : "absolute"),
+                        none ? "-" : scientific(v.error),
+                        scientific(v.tolerance),
+                        v.source.empty() ? "-" : v.source,
+                        v.pass ? "PASS" : "FAIL"});
         all_pass = all_pass && v.pass;
       }
+    std::vector<std::size_t> widths;
+    for (unsigned int c = 0; c < header.size(); ++c)
+      {
+        widths.push_back(header[c].size());
+        for (const auto &row : rows)
+          widths[c] = std::max(widths[c], row[c].size());
+      }
+    const auto print_row = [&](const std::vector<std::string> &cells) {
+      std::string line;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const std::string padding(widths[c] - cells[c].size(), ' ');
+          line += (c == 0 ? "" : "  ") +
+                  (left[c] ? cells[c] + padding : padding + cells[c]);
+        }
+      // The last column's padding is not kept.
+      out << line.substr(0, line.find_last_not_of(' ') + 1) << '\n';
+    };
+    out << "\nChecks\n";
+    print_row(header);
+    for (const auto &row : rows)
+      print_row(row);
     unsigned int n_pass = 0;
     for (const auto &v : verdicts)
       n_pass += v.pass;

@@ -21,8 +21,8 @@
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/base/utilities.h>
-#include <ring_contact/output/output_folder.h>
 #include <ring_contact/linear_algebra/linear_system.h>
+#include <ring_contact/output/output_folder.h>
 #include <ring_contact/output/vtu_writer.h>
 
 #include <cerrno>
@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -185,15 +186,15 @@ namespace RingContact
       }
     };
 
-    // The gap, stored in the multiplier component of a dof vector: the
-    // nodal gap belongs to the multiplier's nodes, so the DoFHandler's own
-    // numbering places it and DataOutFaces interpolates it like the
-    // pressure.
-    class GapPostprocessor : public DataPostprocessorScalar<2>
+    // A nodal field of the slave surface (the gap, the arc length), stored
+    // in the multiplier component of a dof vector: it belongs to the
+    // multiplier's nodes, so the DoFHandler's own numbering places it and
+    // DataOutFaces interpolates it like the pressure.
+    class SurfaceFieldPostprocessor : public DataPostprocessorScalar<2>
     {
     public:
-      GapPostprocessor()
-          : DataPostprocessorScalar<2>("gap", update_values)
+      explicit SurfaceFieldPostprocessor(const std::string &name)
+          : DataPostprocessorScalar<2>(name, update_values)
       {}
 
       void
@@ -242,7 +243,7 @@ namespace RingContact
   VtuWriter::write(const DoFHandler<2>                    &dof_handler,
                    const hp::MappingCollection<2>         &mapping,
                    const Vector<double>                   &solution,
-                   const Vector<double>                   &nodal_gap,
+                   const std::vector<SurfaceField>        &surface_fields,
                    const std::map<unsigned int, Material> &materials,
                    const std::set<types::boundary_id>     &slave_boundary_ids,
                    const unsigned int                      step,
@@ -258,17 +259,18 @@ namespace RingContact
     // 9.4 writes correctly for dim = 2; displacement, Cauchy stress tensor,
     // von Mises stress and the material id of each cell.
     // A vector of one value per active cell is cell data for DataOut:
-    // each cell shows its body's material id (float suffices for ids).
-    Vector<float> ring_id(dof_handler.get_triangulation().n_active_cells());
+    // each cell shows its body's material id, the physical group of a gmsh
+    // model (float suffices for ids).
+    Vector<float> material_id(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      ring_id(cell->active_cell_index()) = cell->material_id();
+      material_id(cell->active_cell_index()) = cell->material_id();
     StressPostprocessor       stress(materials);
     DisplacementPostprocessor displacement;
     DataOut<2>                data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(solution, displacement);
     data_out.add_data_vector(solution, stress);
-    data_out.add_data_vector(ring_id, "ring_id");
+    data_out.add_data_vector(material_id, "material_id");
     // With subdivisions > 1 the cells are written as Lagrange cells of that
     // degree, so that ParaView draws curved edges curved and a Q2 field
     // with its own degree; with one, as plain quadrilaterals.
@@ -317,7 +319,7 @@ namespace RingContact
       write_slave_surface(dof_handler,
                           mapping,
                           solution,
-                          nodal_gap,
+                          surface_fields,
                           slave_boundary_ids,
                           step,
                           flags);
@@ -349,10 +351,11 @@ namespace RingContact
   // list (the .pvtu) process 0 writes later, once all are whole. Returns
   // the name the .pvd lists.
   std::string
-  VtuWriter::write_bulk(const DataOut<2> &data_out, const std::string &bulk_stem)
+  VtuWriter::write_bulk(const DataOut<2>  &data_out,
+                        const std::string &bulk_stem)
   {
-    const unsigned int n_pieces = n_processes(communicator);
-    const unsigned int piece    = this_process(communicator);
+    const unsigned int n_pieces  = n_processes(communicator);
+    const unsigned int piece     = this_process(communicator);
     std::string        bulk_name = bulk_stem + ".vtu";
     if (n_pieces == 1)
       write_vtu_file(data_out, directory + "/" + bulk_name);
@@ -394,7 +397,7 @@ namespace RingContact
     const DoFHandler<2>                &dof_handler,
     const hp::MappingCollection<2>     &mapping,
     const Vector<double>               &solution,
-    const Vector<double>               &nodal_gap,
+    const std::vector<SurfaceField>    &surface_fields,
     const std::set<types::boundary_id> &slave_boundary_ids,
     const unsigned int                  step,
     const DataOutBase::VtkFlags        &flags)
@@ -411,8 +414,14 @@ namespace RingContact
                           names,
                           DataOutFaces<2>::type_dof_data,
                           solution_interpretation());
-    GapPostprocessor gap;
-    faces.add_data_vector(nodal_gap, gap);
+    // Each field's postprocessor lives until the patches are built.
+    std::vector<std::unique_ptr<SurfaceFieldPostprocessor>> postprocessors;
+    for (const auto &[name, values] : surface_fields)
+      {
+        postprocessors.push_back(
+          std::make_unique<SurfaceFieldPostprocessor>(name));
+        faces.add_data_vector(values, *postprocessors.back());
+      }
     // Linear segments, `subdivisions` per face: deal.II 9.4 numbers the
     // points of a 1d Lagrange curve wrongly (and a Debug build aborts in
     // write_high_order_cells for dim = 1), so the surface's curved faces

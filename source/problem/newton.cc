@@ -463,27 +463,32 @@ namespace RingContact
         if (scale != 0)
           {
             from_converged = true;
-            log << "  step " << step << ": Newton failed from the extrapolated "
-                << "state (" << failure_reason
-                << "); trying again from the last converged state\n";
+            log << wrap_text("  step " + std::to_string(step) +
+                             ": Newton failed from the extrapolated state (" +
+                             failure_reason +
+                             "); trying again from the last converged state");
             continue;
           }
         from_converged = false;
         if (cuts == parameters.newton.max_step_cuts)
           {
-            log << "Step " << step << ": Newton did not converge after " << cuts
-                << " step cuts (" << failure_reason
-                << "; last relative residual " << residual
-                << " at t = " << t_next << ", increment " << dt
-                << "); stopping with the last converged state (t = "
-                << current_time << ")\n";
+            std::ostringstream message;
+            message << "Step " << step << ": Newton did not converge after "
+                    << cuts << " step cuts (" << failure_reason
+                    << "; last relative residual " << residual
+                    << " at t = " << t_next << ", increment " << dt
+                    << "); stopping with the last converged state (t = "
+                    << current_time << ")";
+            log << wrap_text(message.str());
             return false;
           }
         ++cuts;
         dt /= 2;
-        log << "  step " << step << ": Newton failed (" << failure_reason
-            << "; relative residual " << residual
-            << "), cutting the increment to " << dt << '\n';
+        std::ostringstream message;
+        message << "  step " << step << ": Newton failed (" << failure_reason
+                << "; relative residual " << residual
+                << "), cutting the increment to " << dt;
+        log << wrap_text(message.str());
       }
     postprocess_step(step, total_iterations, cuts, wall.wall_time());
     return true;

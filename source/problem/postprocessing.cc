@@ -7,6 +7,7 @@
 // (SolutionState): the contact nodes, the reported pressure, the nodal
 // forces.
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/contact/surface_arc_length.h>
 #include <ring_contact/diagnostics/initial_interpenetration.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
 #include <ring_contact/problem/contact_problem.h>
@@ -56,9 +57,9 @@ namespace RingContact
                                     contact_interfaces(),
                                     parameters.contact.friction_coefficient > 0,
                                     log);
-    log << "Scheme " << scheme.name() << ": " << triangulation.n_active_cells()
-        << " cells, " << dof_handler.n_dofs() << " unknowns, "
-        << n_contact_nodes() << " contact pressure nodes, "
+    log << "Scheme " << scheme.name() << progress->scheme_label() << ": "
+        << triangulation.n_active_cells() << " cells, " << dof_handler.n_dofs()
+        << " unknowns, " << n_contact_nodes() << " contact pressure nodes, "
         << load_program.n_steps() << " steps\n";
     const auto pairs = parameters.contact_pairs();
     for (unsigned int i = 0; i < contacts.size(); ++i)
@@ -196,18 +197,7 @@ namespace RingContact
       history_rows.push_back(row);
 
     if (parameters.output.print_steps)
-      {
-        log << "Step " << std::setw(3) << step << "  t " << std::setw(6)
-            << std::setprecision(4) << row.time;
-        scenario->print_step(log, row);
-        // The invariants: the larger of the equilibrium and the
-        // action-reaction errors (equilibrium.h).
-        log << "  balance " << std::setprecision(2)
-            << (std::isnan(row.action_reaction_error) ?
-                  row.equilibrium_error :
-                  std::max(row.equilibrium_error, row.action_reaction_error))
-            << std::setprecision(6) << '\n';
-      }
+      print_step_line(row);
     // The run stops here with the reason (UntrustedState reaches the
     // driver), before the step observer writes the step as converged.
     if (!balanced)
@@ -223,6 +213,56 @@ namespace RingContact
     if (interval > 0 &&
         (step % interval == 0 || step == load_program.n_steps()))
       output_results(step);
+  }
+
+  // The step's line (output/progress.h): where the load program is (step k
+  // of N, the pseudo-time), how hard Newton worked (iterations, step cuts),
+  // the scenario's quantities (what its checks look at), the invariants
+  // (the larger of the equilibrium and the action-reaction errors:
+  // equilibrium.h), the time since the run started and a forecast of the
+  // time left. The first line of a scheme comes with the table's header,
+  // and the scenario's legend of its columns where it has one.
+  void
+  ContactProblem::print_step_line(const HistoryRow &row)
+  {
+    const unsigned int n_steps = load_program.n_steps();
+    // The legend's entries side by side, as many as fit on a line.
+    if (!step_table.started())
+      {
+        std::string line;
+        for (const auto &entry : scenario->step_legend())
+          {
+            if (!line.empty() &&
+                line.size() + 3 + entry.size() > max_line_width)
+              {
+                log << line << '\n';
+                line.clear();
+              }
+            line += (line.empty() ? "" : "   ") + entry;
+          }
+        if (!line.empty())
+          log << line << '\n';
+      }
+    std::vector<StepField> fields = {
+      {"step",
+       std::to_string(row.step) + "/" + std::to_string(n_steps),
+       2 * static_cast<unsigned int>(std::to_string(n_steps).size()) + 1},
+      {"t", format_number(row.time, 6), 6},
+      {"Newton", std::to_string(row.newton_iterations)},
+      {"cuts", std::to_string(row.step_cuts)}};
+    for (auto &field : scenario->step_fields(row))
+      fields.push_back(std::move(field));
+    const double balance =
+      std::isnan(row.action_reaction_error) ?
+        row.equilibrium_error :
+        std::max(row.equilibrium_error, row.action_reaction_error);
+    fields.push_back({"balance", format_number(balance, 2), 7});
+    fields.push_back({"elapsed", format_duration(progress->elapsed()), 7});
+    fields.push_back(
+      {"left",
+       "~" + format_duration(progress->remaining(row.step, n_steps)),
+       7});
+    step_table.print(log, fields);
   }
 
   // The nodal forces of the state (equilibrium.h), from the last assembly.
@@ -359,17 +399,26 @@ namespace RingContact
       }
     // The gap of each slave node, at the multiplier's place: the surface's
     // file shows the gap beside the pressure, and lambda g = 0 can be seen.
+    // The arc length along the surface (surface_arc_length.h) is the
+    // abscissa to plot them against.
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto &contact : contacts)
       for (const auto dof : contact->multiplier_dofs())
         nodal_gap(dof) = contact->gap_at(dof, solution);
+    if (arc_length.size() != dof_handler.n_dofs())
+      {
+        arc_length.reinit(dof_handler.n_dofs());
+        for (const auto &contact : contacts)
+          for (const auto &[dof, s] : arc_lengths(contact->slave_surface()))
+            arc_length(dof) = s;
+      }
     std::set<types::boundary_id> slave_ids;
     for (const auto &[slave, master] : parameters.contact_pairs())
       slave_ids.insert(slave);
     vtu_writer->write(dof_handler,
                       mapping_collection,
                       solution,
-                      nodal_gap,
+                      {{"gap", nodal_gap}, {"arc_length", arc_length}},
                       materials,
                       slave_ids,
                       step,

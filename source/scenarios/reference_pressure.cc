@@ -14,6 +14,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace RingContact
 {
@@ -38,6 +39,22 @@ namespace RingContact
               "pressure_max"};
     }
 
+    // The extremes over every contact node, open ones included: an open
+    // node's zero pressure belongs in the spread, which it makes large under
+    // a load that should close the whole surface.
+    std::pair<double, double>
+    pressure_extremes(const SolutionState &state)
+    {
+      double lowest  = std::numeric_limits<double>::max();
+      double highest = -std::numeric_limits<double>::max();
+      for (const auto node : state.contact_nodes())
+        {
+          lowest  = std::min(lowest, state.reported_pressure(node));
+          highest = std::max(highest, state.reported_pressure(node));
+        }
+      return {lowest, highest};
+    }
+
     void
     report(const SolutionState     &state,
            const Point<2>          &probe,
@@ -51,16 +68,7 @@ namespace RingContact
       // the same in which the L2 error is taken.
       const double pressure_A =
         state.reported_pressure(state.contact_node_nearest_to(probe));
-      double lowest  = std::numeric_limits<double>::max();
-      double highest = -std::numeric_limits<double>::max();
-      // The extremes over every contact node, open ones included: an open
-      // node's zero pressure belongs in the spread, which it makes large under
-      // a load that should close the whole surface.
-      for (const auto node : state.contact_nodes())
-        {
-          lowest  = std::min(lowest, state.reported_pressure(node));
-          highest = std::max(highest, state.reported_pressure(node));
-        }
+      const auto [lowest, highest] = pressure_extremes(state);
       // The L2 error over the slave surface of the first pair: the rings and
       // the patch test have one pair. One number serves as the reference along
       // the whole surface because both exact pressures are uniform on it (the
@@ -80,28 +88,32 @@ namespace RingContact
                    {"pressure_max", highest}});
     }
 
-    void
-    print_step(std::ostream &out, const HistoryRow &row)
+    // The load p and the rotation s say where the load program is; p_A
+    // against the analytic value is what the checks look at. The analytic
+    // value is the first column left out of a line that would be too wide
+    // (the error says how far p_A is from it).
+    std::vector<StepField>
+    step_fields(const HistoryRow &row)
     {
-      const unsigned int cuts = row.step_cuts;
-      out << "  p " << std::setw(10) << std::setprecision(6)
-          << row.value("load_factor") << "  s " << std::setw(5)
-          << std::setprecision(3) << row.value("rotation") << "  Newton "
-          << row.newton_iterations
-          << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
-          << "  p_A " << std::setprecision(7) << std::setw(12)
-          << row.value("pressure_A") << "  analytic " << std::setw(12)
-          << row.value("analytic");
+      std::vector<StepField> fields = {
+        {"p", format_number(row.value("load_factor"), 6), 11},
+        {"s", format_number(row.value("rotation"), 3), 5},
+        {"p_A", format_number(row.value("pressure_A")), 12},
+        {"analytic", format_number(row.value("analytic")), 12, 3}};
       // Errors relative to a zero analytic pressure (an input as soft as
       // E = 1e-300 gives one) have no meaning: said so, not inf or nan.
       const double relative = row.value("relative_error"),
                    l2       = row.value("l2_relative_error");
-      if (!std::isfinite(relative) || !std::isfinite(l2))
-        out << "  error     n/a  L2    n/a";
-      else
-        out << "  error " << std::fixed << std::setprecision(3) << std::setw(7)
-            << 100 * relative << "%  L2 " << std::setw(6) << 100 * l2 << '%'
-            << std::defaultfloat;
+      const auto percent    = [](const double value) {
+        if (!std::isfinite(value))
+          return std::string("n/a");
+        std::ostringstream text;
+        text << std::fixed << std::setprecision(3) << 100 * value << '%';
+        return text.str();
+      };
+      fields.push_back({"error", percent(relative), 8});
+      fields.push_back({"L2", percent(l2), 7});
+      return fields;
     }
 
     // A converged state with every node open under a load that closes the
@@ -196,28 +208,33 @@ namespace RingContact
       return {"tangential_traction_A", "slipping_nodes"};
     }
 
+    unsigned int
+    n_slipping(const SolutionState &state)
+    {
+      unsigned int n = 0;
+      for (const ContactInterface *contact : state.contact_interfaces())
+        n += contact->n_slipping();
+      return n;
+    }
+
     void
     report(const SolutionState     &state,
            const Point<2>          &probe,
            std::vector<NamedValue> &into)
     {
-      const auto   node       = state.contact_node_nearest_to(probe);
-      unsigned int n_slipping = 0;
-      for (const ContactInterface *contact : state.contact_interfaces())
-        n_slipping += contact->n_slipping();
+      const auto node = state.contact_node_nearest_to(probe);
       into.insert(into.end(),
                   {{"tangential_traction_A",
                     state.get_solution()(
                       state.contact_of(node).tangential_dof(node))},
-                   {"slipping_nodes", static_cast<double>(n_slipping)}});
+                   {"slipping_nodes", static_cast<double>(n_slipping(state))}});
     }
 
-    void
-    print_step(std::ostream &out, const HistoryRow &row)
+    std::vector<StepField>
+    step_fields(const HistoryRow &row)
     {
-      out << "  q_A " << std::setprecision(7)
-          << row.value("tangential_traction_A") << "  sliding "
-          << row.value("slipping_nodes");
+      return {{"q_A", format_number(row.value("tangential_traction_A")), 12, 1},
+              {"sliding", format_number(row.value("slipping_nodes")), 7, 2}};
     }
   } // namespace Friction
 
@@ -252,17 +269,19 @@ namespace RingContact
       Friction::report(state, parameters.contact.probe_point, row.trailing);
   }
 
-  void
-  ReferencePressureScenario::print_step(std::ostream     &out,
-                                        const HistoryRow &row) const
+  std::vector<StepField>
+  ReferencePressureScenario::step_fields(const HistoryRow &row) const
   {
-    ReferencePressure::print_step(out, row);
+    auto fields = ReferencePressure::step_fields(row);
     if (run_parameters().contact.friction_coefficient > 0)
-      Friction::print_step(out, row);
+      for (auto &field : Friction::step_fields(row))
+        fields.push_back(field);
+    return fields;
   }
 
   void
-  ReferencePressureScenario::warn(std::ostream &out, const HistoryRow &row) const
+  ReferencePressureScenario::warn(std::ostream     &out,
+                                  const HistoryRow &row) const
   {
     ReferencePressure::warn_if_open(out, row);
   }

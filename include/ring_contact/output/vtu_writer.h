@@ -5,12 +5,12 @@
 #ifndef ring_contact_output_vtu_writer_h
 #define ring_contact_output_vtu_writer_h
 
-#include <deal.II/numerics/data_out.h>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <ring_contact/materials/material.h>
 
@@ -42,11 +42,16 @@ namespace RingContact
               const unsigned int subdivisions,
               const MPI_Comm     communicator = MPI_COMM_SELF);
 
+    /// A scalar of the slave surface's nodes, by name, stored in the
+    /// multiplier component of a vector of the dofs (the gap, the arc
+    /// length).
+    using SurfaceField = std::pair<std::string, Vector<double>>;
+
     void
     write(const DoFHandler<2>                    &dof_handler,
           const hp::MappingCollection<2>         &mapping,
           const Vector<double>                   &solution,
-          const Vector<double>                   &nodal_gap,
+          const std::vector<SurfaceField>        &surface_fields,
           const std::map<unsigned int, Material> &materials,
           const std::set<types::boundary_id>     &slave_boundary_ids,
           const unsigned int                      step,
@@ -61,7 +66,7 @@ namespace RingContact
     write_slave_surface(const DoFHandler<2>                &dof_handler,
                         const hp::MappingCollection<2>     &mapping,
                         const Vector<double>               &solution,
-                        const Vector<double>               &nodal_gap,
+                        const std::vector<SurfaceField>    &surface_fields,
                         const std::set<types::boundary_id> &slave_boundary_ids,
                         const unsigned int                  step,
                         const DataOutBase::VtkFlags        &flags);

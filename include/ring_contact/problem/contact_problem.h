@@ -43,6 +43,7 @@
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/output/history.h>
+#include <ring_contact/output/progress.h>
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/output/vtu_writer.h>
 #include <ring_contact/problem/load_program.h>
@@ -156,6 +157,15 @@ namespace RingContact
     set_step_observer(std::function<bool(const HistoryRow &)> observer)
     {
       step_observer = std::move(observer);
+    }
+
+    /// The clock of the run this problem is a scheme of, for the step
+    /// lines' elapsed and remaining times (by default the problem's own,
+    /// started when it is made).
+    void
+    set_progress(const RunProgress &run_progress)
+    {
+      progress = &run_progress;
     }
 
     /// @name What a scenario may read (SolutionState)
@@ -275,9 +285,10 @@ namespace RingContact
     /// right-hand side -R at the current solution; returns the number of
     /// contact nodes whose status changed.
     unsigned int
-    assemble_newton_system(const ContactInterface::Pairing pairing =
-                             ContactInterface::Pairing::search,
-                           const Assembly what = Assembly::residual_and_tangent);
+    assemble_newton_system(
+      const ContactInterface::Pairing pairing =
+        ContactInterface::Pairing::search,
+      const Assembly what = Assembly::residual_and_tangent);
     void
     assemble_system(const Assembly what = Assembly::residual_and_tangent);
     void
@@ -352,6 +363,9 @@ namespace RingContact
                      const unsigned int iterations,
                      const unsigned int cuts,
                      const double       wall_time);
+    /// The step's line on the terminal (output/progress.h).
+    void
+    print_step_line(const HistoryRow &row);
     /// The invariants of a converged state into `row` (equilibrium.h);
     /// false if the state cannot be trusted (see unbalanced_forces).
     bool
@@ -527,7 +541,15 @@ namespace RingContact
 
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
-    TimerOutput                timer;
+    /// The reference arc length at the slave nodes, for the VTU files
+    /// (made at the first output: the reference geometry does not change).
+    Vector<double> arc_length;
+    TimerOutput    timer;
+
+    /// The step lines (output/progress.h) and the clock they read.
+    RunProgress        own_progress;
+    const RunProgress *progress = &own_progress;
+    StepTable          step_table;
 
     /// See set_start_observer() and set_step_observer().
     std::function<void()>                   start_observer;

@@ -21,6 +21,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RingContact
@@ -35,6 +36,11 @@ namespace RingContact
     std::vector<std::string>
     columns();
 
+    /// The lowest and the highest contact pressure over every contact node
+    /// of every pair, open nodes included, in the reported measure.
+    std::pair<double, double>
+    pressure_extremes(const SolutionState &state);
+
     /// Their values at a state: the pressure at the contact node nearest to
     /// `probe` against `reference` (NaN: none known), reported as
     /// `measure` says.
@@ -45,10 +51,10 @@ namespace RingContact
            const PressureMeasure    measure,
            std::vector<NamedValue> &into);
 
-    /// The rings' part of the step's line: the load, the Newton
-    /// iterations, the pressure at A against the analytic one, the errors.
-    void
-    print_step(std::ostream &out, const HistoryRow &row);
+    /// The rings' columns of the step's line: the load, the rotation, the
+    /// pressure at A against the analytic one, the errors.
+    std::vector<StepField>
+    step_fields(const HistoryRow &row);
 
     /// A converged state with every contact node open under a load that
     /// closes the contact (reference pressure > 0) is another solution of
@@ -74,6 +80,10 @@ namespace RingContact
     std::vector<std::string>
     columns();
 
+    /// The number of sliding nodes over every pair.
+    unsigned int
+    n_slipping(const SolutionState &state);
+
     /// The tangential traction (Cauchy, the multiplier itself) at the
     /// contact node nearest to `probe`, and the number of sliding nodes.
     void
@@ -81,9 +91,10 @@ namespace RingContact
            const Point<2>          &probe,
            std::vector<NamedValue> &into);
 
-    /// "  q_A ...  sliding n".
-    void
-    print_step(std::ostream &out, const HistoryRow &row);
+    /// q_A and the number of sliding nodes, left out before the pressure
+    /// when the line is too wide.
+    std::vector<StepField>
+    step_fields(const HistoryRow &row);
   } // namespace Friction
 
   /// A scenario checked against a reference pressure that it knows
@@ -104,8 +115,8 @@ namespace RingContact
     void
     report(const SolutionState &state, HistoryRow &row) const override;
 
-    void
-    print_step(std::ostream &out, const HistoryRow &row) const override;
+    std::vector<StepField>
+    step_fields(const HistoryRow &row) const override;
 
     /// A converged state with the contact open everywhere, where the
     /// reference has it closed, is another solution of the discrete

@@ -31,6 +31,7 @@
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/output/history.h>
+#include <ring_contact/output/progress.h>
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/problem/load_program.h>
 #include <ring_contact/problem/solution_state.h>
@@ -108,12 +109,12 @@ namespace RingContact
   /// body of revolution whose mesh and loads repeat every element around.
   struct CyclicSector
   {
-    double             angle;            ///< the sector's angle
-    types::boundary_id start_side;       ///< its radial side at angle 0
-    types::boundary_id end_side;         ///< and at `angle`
-    unsigned int       sector_elements;  ///< elements around in the sector
-    unsigned int       elements_around;  ///< and in the whole circle
-    double             slave_rotation;   ///< the slave's turn (elements)
+    double             angle;           ///< the sector's angle
+    types::boundary_id start_side;      ///< its radial side at angle 0
+    types::boundary_id end_side;        ///< and at `angle`
+    unsigned int       sector_elements; ///< elements around in the sector
+    unsigned int       elements_around; ///< and in the whole circle
+    double             slave_rotation;  ///< the slave's turn (elements)
   };
 
   class Scenario
@@ -190,10 +191,18 @@ namespace RingContact
     virtual void
     report(const SolutionState &state, HistoryRow &row) const = 0;
 
-    /// Its part of the step's line, after the pseudo-time; and a warning
-    /// about the step where it has one (none by default).
-    virtual void
-    print_step(std::ostream &out, const HistoryRow &row) const = 0;
+    /// Its columns of the step's line (output/progress.h), between the
+    /// solver's (step, pseudo-time, Newton iterations, cuts) and the
+    /// invariants and times; a legend printed once above them where the
+    /// headers need one (none by default); and a warning about the step
+    /// where it has one (none by default).
+    virtual std::vector<StepField>
+    step_fields(const HistoryRow &row) const = 0;
+    virtual std::vector<std::string>
+    step_legend() const
+    {
+      return {};
+    }
     virtual void
     warn(std::ostream &, const HistoryRow &) const
     {}
@@ -220,7 +229,7 @@ namespace RingContact
     bool is_default = false;
     /// Said after the refusal of an entry that this scenario does not read
     /// (where its own entries are, say).
-    std::string foreign_entry_hint;
+    std::string                                          foreign_entry_hint;
     std::function<std::shared_ptr<ScenarioParameters>()> make_parameters;
     std::function<std::unique_ptr<Scenario>(const Parameters &)> make;
 

@@ -342,15 +342,16 @@ namespace RingContact
               }
         }
 
-        // What it reports: the pressure at the probe (no reference is
-        // known: the columns of the rings' reference, NaN), then the
-        // quantities of its checks and, with friction, the tangential
-        // traction. The same leading columns as the rings: history.csv
-        // starts alike for every scenario.
+        // What it reports: the extreme contact pressures over every slave
+        // node (the rings' pressure at A and its analytic value mean nothing
+        // here), then the quantities of its checks and, with friction, the
+        // number of sliding nodes. A quantity at a point (a pressure, a
+        // tangential traction, a displacement) is a Check subsection's:
+        // `Steps = none` reports it at every step without checking it.
         std::vector<std::string>
         leading_columns() const override
         {
-          return ReferencePressure::columns();
+          return {"pressure_min", "pressure_max"};
         }
 
         std::vector<std::string>
@@ -362,8 +363,7 @@ namespace RingContact
           for (const auto &check : problem.checks)
             columns.push_back(check.column());
           if (parameters.contact.friction_coefficient > 0)
-            for (const auto &column : Friction::columns())
-              columns.push_back(column);
+            columns.emplace_back("slipping_nodes");
           return columns;
         }
 
@@ -373,36 +373,49 @@ namespace RingContact
         void
         report(const SolutionState &state, HistoryRow &row) const override
         {
-          ReferencePressure::report(state,
-                                    parameters.contact.probe_point,
-                                    std::nan(""),
-                                    parameters.contact.reported_pressure,
-                                    row.leading);
+          const auto [lowest, highest] =
+            ReferencePressure::pressure_extremes(state);
+          row.leading = {{"pressure_min", lowest}, {"pressure_max", highest}};
           for (const auto &check : problem.checks)
             row.trailing.emplace_back(check.column(),
                                       quantities.value(check, state));
           if (parameters.contact.friction_coefficient > 0)
-            Friction::report(state,
-                             parameters.contact.probe_point,
-                             row.trailing);
+            row.trailing.emplace_back("slipping_nodes",
+                                      static_cast<double>(
+                                        Friction::n_slipping(state)));
         }
 
-        // One line per step on the terminal: Newton's work, the active
-        // nodes, and every checked quantity as it goes, so that a long run
-        // shows whether it is on track before its verdicts.
-        void
-        print_step(std::ostream &out, const HistoryRow &row) const override
+        // The step's line: the active nodes and the largest pressure, then
+        // every checked quantity as it goes (headed "check k", the legend
+        // above the table says which is which), so that a long run shows
+        // whether it is on track before its verdicts. The checks that do
+        // not fit within the line's width are left out, the last first.
+        std::vector<StepField>
+        step_fields(const HistoryRow &row) const override
         {
-          const unsigned int cuts = row.step_cuts;
-          out << "  Newton " << row.newton_iterations
-              << (cuts > 0 ? " (" + std::to_string(cuts) + " cuts)" : "")
-              << "  active " << row.active_nodes << "  p_probe "
-              << std::setprecision(7) << row.value("pressure_A");
-          for (const auto &check : problem.checks)
-            out << "  " << check.description() << " " << std::setprecision(7)
-                << row.value(check.column());
+          std::vector<StepField> fields = {
+            {"active", format_number(row.active_nodes), 6},
+            {"p_max", format_number(row.value("pressure_max")), 10}};
+          for (unsigned int k = 0; k < problem.checks.size(); ++k)
+            fields.push_back(
+              {"check " + std::to_string(k + 1),
+               format_number(row.value(problem.checks[k].column())),
+               10,
+               1});
           if (parameters.contact.friction_coefficient > 0)
-            Friction::print_step(out, row);
+            fields.push_back(
+              {"sliding", format_number(row.value("slipping_nodes")), 7, 2});
+          return fields;
+        }
+
+        std::vector<std::string>
+        step_legend() const override
+        {
+          std::vector<std::string> legend;
+          for (unsigned int k = 0; k < problem.checks.size(); ++k)
+            legend.push_back("check " + std::to_string(k + 1) + ": " +
+                             problem.checks[k].description());
+          return legend;
         }
 
         // Each check's quantity against its reference expression, evaluated

@@ -9,16 +9,16 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/utilities.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/general/problem_description.h>
-#include <ring_contact/base/utilities.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
-#include <cstdlib>
 #include <sstream>
 #include <tuple>
 
@@ -173,20 +173,16 @@ namespace RingContact
       check.finish(constants);
 
     refuse_unread_slots(parameters);
-    // The probe (the pressure of history.csv's pressure_A): the point of
-    // the first pressure check, when the file does not give one. Without
-    // a pressure check, the origin: a general problem has no node A of its
-    // own.
-    if (parameters.origins.count(entry_key("Contact", "Probe point")) == 0)
-      {
-        parameters.contact.probe_point = Point<2>();
-        for (const auto &check : checks)
-          if (check.quantity == ProblemQuantity::contact_pressure)
-            {
-              parameters.contact.probe_point = check.point;
-              break;
-            }
-      }
+    // The probe places the rings' node A (history.csv's pressure_A): a
+    // general problem has no node A, and its history no such column. A
+    // quantity at a point is a check's, reported at every step.
+    require(parameters.origins.count(entry_key("Contact", "Probe point")) == 0,
+            "Contact",
+            "Probe point",
+            "has no meaning in a general problem (it places the rings' node "
+            "A); a quantity at a point is a Check subsection's, reported at "
+            "every step (Quantity = contact pressure, Point = x, y; Steps = "
+            "none to report it without checking it)");
 
     // The description refers to the mesh by its physical groups: only a
     // gmsh mesh has them (the generated meshes are the rings' and the
