@@ -364,11 +364,12 @@ namespace RingContact
         if (!solved)
           out << "A load step could not be solved (see above).\n";
         if (output.print_steps)
-          out << summary.text(progress.elapsed(), solved, verdicts)
-              << (folder.contents().empty() ?
-                    std::string() :
-                    wrap_text("Results in " + absolute_path(output.directory) +
-                              ": " + folder.contents()));
+          {
+            out << summary.text(progress.elapsed(), solved, verdicts);
+            if (const auto files = folder.contents(); !files.empty())
+              out << wrap_text("Results in " + absolute_path(output.directory) +
+                               ": " + files);
+          }
         return !solved ? ExitCode::step_failed :
                pass    ? ExitCode::success :
                          ExitCode::check_failed;

@@ -81,6 +81,26 @@ namespace RingContact
   }
 
 
+  // Unlike wrap_text(), an entry is never broken ("check 5: contact
+  // half-width" stays whole): the legend of a table's columns.
+  std::string
+  side_by_side(const std::vector<std::string> &entries,
+               const unsigned int              width)
+  {
+    std::string text, line;
+    for (const auto &entry : entries)
+      {
+        if (!line.empty() && line.size() + 3 + entry.size() > width)
+          {
+            text += line + '\n';
+            line.clear();
+          }
+        line += (line.empty() ? "" : "   ") + entry;
+      }
+    return line.empty() ? text : text + line + '\n';
+  }
+
+
   // @sect4{The clock}
   //
   // The time left is the mean time of the steps solved so far in this

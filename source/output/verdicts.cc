@@ -8,6 +8,7 @@
 // run prints and as verdicts.csv for the report's scripts, and the table's
 // outcome becomes the run's exit code.
 #include <ring_contact/output/output_folder.h>
+#include <ring_contact/output/progress.h>
 #include <ring_contact/output/verdicts.h>
 
 #include <algorithm>
@@ -62,16 +63,11 @@ namespace RingContact
           text << std::scientific << std::setprecision(2) << x;
           return text.str();
         };
-        const auto digits = [](const double x) {
-          std::ostringstream text;
-          text << std::setprecision(7) << x;
-          return text.str();
-        };
         rows.push_back({v.scheme,
                         v.quantity,
                         std::to_string(v.step),
-                        none ? "-" : digits(v.value),
-                        none ? "-" : digits(v.reference),
+                        none ? "-" : format_number(v.value),
+                        none ? "-" : format_number(v.reference),
                         none ? "" : (v.relative ? "relative" : "absolute"),
                         none ? "-" : scientific(v.error),
                         scientific(v.tolerance),

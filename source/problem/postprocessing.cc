@@ -226,23 +226,8 @@ namespace RingContact
   ContactProblem::print_step_line(const HistoryRow &row)
   {
     const unsigned int n_steps = load_program.n_steps();
-    // The legend's entries side by side, as many as fit on a line.
     if (!step_table.started())
-      {
-        std::string line;
-        for (const auto &entry : scenario->step_legend())
-          {
-            if (!line.empty() &&
-                line.size() + 3 + entry.size() > max_line_width)
-              {
-                log << line << '\n';
-                line.clear();
-              }
-            line += (line.empty() ? "" : "   ") + entry;
-          }
-        if (!line.empty())
-          log << line << '\n';
-      }
+      log << side_by_side(scenario->step_legend());
     std::vector<StepField> fields = {
       {"step",
        std::to_string(row.step) + "/" + std::to_string(n_steps),

@@ -45,6 +45,12 @@ namespace RingContact
             const unsigned int width  = max_line_width,
             const unsigned int indent = 4);
 
+  /// `entries` side by side, three spaces apart, as many on a line as fit
+  /// within `width`; each line ends in a newline ("" for no entries).
+  std::string
+  side_by_side(const std::vector<std::string> &entries,
+               const unsigned int              width = max_line_width);
+
   /// The clock of a run of several schemes: the time since the run
   /// started, and the time left estimated from the steps solved so far in
   /// the current scheme (each later scheme counted as long as this one).
