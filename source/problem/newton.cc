@@ -557,7 +557,9 @@ namespace RingContact
     // there) Newton went to another solution, the rings apart, p_A = 0.
     // Through the linearised problem the increment spreads over the bodies.
     // No lifting update (false) when the predictor hit the target already.
-    lifting                = make_lifting_constraints();
+    lifting = make_lifting_constraints();
+    for (const auto &contact : contacts)
+      contact->start_step();
     unsigned int n_changed = assemble_newton_system();
     // The update that led to the current iterate: none yet, or whether it
     // imposed the boundary increment and the residual it started from.
@@ -707,7 +709,16 @@ namespace RingContact
         n_changed = assemble_newton_system(accepted_pairing(), next);
         return true;
       }
-    double step_length = 1;
+    // The changes are counted from here: each trial of the line search is
+    // assembled afresh, and counting against the trial before it said
+    // "changed 0" while the active set grew by three nodes per iteration
+    // (and an iterate could pass as converged with a set it was not solved
+    // with).
+    const auto states_before = contact_states();
+    double     step_length   = 1;
+    const auto count_changes = [&]() {
+      n_changed = n_changed_since(states_before);
+    };
     // No decrease along the update: with a free pairing the residual may
     // jump between pairings at every trial, so the pairing is held and the
     // same iterate assembled again, now smooth in the displacement; the
@@ -718,7 +729,8 @@ namespace RingContact
         if (keep_partners)
           return false;
         keep_partners = true;
-        n_changed     = assemble_newton_system(accepted_pairing());
+        assemble_newton_system(accepted_pairing());
+        count_changes();
         if (parameters.newton.verbose)
           log << "      line search failed: pairing held\n";
         return true;
@@ -727,8 +739,28 @@ namespace RingContact
       log << "      line search: step length " << step_length << '\n';
     // The trials followed held partners onto their extensions.
     if (keep_partners)
-      n_changed = assemble_newton_system(accepted_pairing(), next);
+      assemble_newton_system(accepted_pairing(), next);
+    count_changes();
     return true;
+  }
+
+  std::vector<ContactInterface::NodeStates>
+  ContactProblem::contact_states() const
+  {
+    std::vector<ContactInterface::NodeStates> states;
+    for (const auto &contact : contacts)
+      states.push_back(contact->node_states());
+    return states;
+  }
+
+  unsigned int
+  ContactProblem::n_changed_since(
+    const std::vector<ContactInterface::NodeStates> &before) const
+  {
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < contacts.size(); ++i)
+      n += contacts[i]->n_changed_since(before[i]);
+    return n;
   }
 
   // @sect4{The line search}

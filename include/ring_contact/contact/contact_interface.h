@@ -120,6 +120,37 @@ namespace RingContact
     update(const Vector<double> &solution,
            const Pairing         pairing = Pairing::search);
 
+    /// The next update() chooses the first active set of a load step (or of
+    /// a retry after a cut): nodes that touch close as well (see update()).
+    void
+    start_step()
+    {
+      first_update_of_step = true;
+    }
+
+    /// The contact state of every node: closed or open, and with friction
+    /// stick (0) or the sense of its slip (+-1).
+    struct NodeStates
+    {
+      std::vector<bool> active;
+      std::vector<int>  slip_sign;
+    };
+
+    NodeStates
+    node_states() const
+    {
+      return {active, slip_sign};
+    }
+
+    /// The number of nodes whose state differs from `before`.
+    unsigned int
+    n_changed_since(const NodeStates &before) const;
+
+    /// Each node's mean gap g~_k / w_k at the last update() (0 where w_k
+    /// is 0).
+    std::vector<double>
+    mean_gaps() const;
+
     /// True if the current pairs are all inside the last sparsity pattern.
     bool
     sparsity_covers_pairing() const;
@@ -317,6 +348,8 @@ namespace RingContact
     std::vector<double> weighted_gap;     ///< g~_k
     std::vector<bool>   active;
     double              segment_length; ///< smallest slave segment
+    /// Set by start_step(), cleared by the update() that it concerns.
+    bool first_update_of_step = false;
 
     /// Friction: per node the tangential dof, s~_k and the state (0 stick,
     /// +1 or -1 the sign of the slip); the last converged solution and

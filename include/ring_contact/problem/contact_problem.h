@@ -338,6 +338,14 @@ namespace RingContact
     print_newton_iteration(const unsigned int     it,
                            const ResidualMeasure &measure,
                            const unsigned int     n_changed) const;
+    /// The contact states of all pairs' nodes, and how many differ from
+    /// them now: the changes of an iterate are counted against the iterate
+    /// it came from, not against the last line-search trial.
+    std::vector<ContactInterface::NodeStates>
+    contact_states() const;
+    unsigned int
+    n_changed_since(
+      const std::vector<ContactInterface::NodeStates> &before) const;
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,

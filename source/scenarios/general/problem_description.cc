@@ -22,16 +22,16 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/utilities.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/general/problem_description.h>
-#include <ring_contact/base/utilities.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
-#include <cstdlib>
 #include <sstream>
 #include <tuple>
 
@@ -479,6 +479,12 @@ namespace RingContact
           return "tangential traction" + at();
         case ProblemQuantity::contact_half_width:
           return "contact half-width";
+        case ProblemQuantity::minimum_contact_pressure:
+          return "minimum pressure";
+        case ProblemQuantity::maximum_contact_pressure:
+          return "maximum pressure";
+        case ProblemQuantity::mean_contact_pressure:
+          return "mean pressure";
         case ProblemQuantity::resultant_force_x:
           return "force x on " + std::to_string(boundary_id);
         case ProblemQuantity::resultant_force_y:
@@ -514,6 +520,12 @@ namespace RingContact
           return prefix + "_tangential_traction";
         case ProblemQuantity::contact_half_width:
           return prefix + "_contact_half_width";
+        case ProblemQuantity::minimum_contact_pressure:
+          return prefix + "_minimum_pressure";
+        case ProblemQuantity::maximum_contact_pressure:
+          return prefix + "_maximum_pressure";
+        case ProblemQuantity::mean_contact_pressure:
+          return prefix + "_mean_pressure";
         case ProblemQuantity::resultant_force_x:
           return prefix + "_force_x";
         case ProblemQuantity::resultant_force_y:
@@ -540,29 +552,37 @@ namespace RingContact
     // positive pressure (quantities.cc). An open node's multiplier is zero
     // only to the linear solver's accuracy, of either sign (the iterative
     // solver stops at 1e-8 of the right-hand side).
-    s.add("Quantity",
-          quantity,
-          "none",
-          {{"none", ProblemQuantity::none},
-           {"contact pressure", ProblemQuantity::contact_pressure},
-           {"tangential traction", ProblemQuantity::tangential_traction},
-           {"contact half-width", ProblemQuantity::contact_half_width},
-           {"resultant force x", ProblemQuantity::resultant_force_x},
-           {"resultant force y", ProblemQuantity::resultant_force_y},
-           {"displacement x", ProblemQuantity::displacement_x},
-           {"displacement y", ProblemQuantity::displacement_y}},
-          "Scenario = general: none (slot not used); contact pressure at the "
-          "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
-          "tangential traction there (friction: Cauchy, on the tangent e_z x n "
-          "of the master's outward normal n; it has the sign of the slave's "
-          "slip) [Pa]; "
-          "contact half-width: the largest distance from 'Point' to which the "
-          "slave surface is in contact, to half a segment (midway between the "
-          "last node with positive pressure and the next open one) [m]; "
-          "resultant force x or y: the sum of the nodal forces on 'Boundary "
-          "id' (the reaction of an imposed displacement, or the resultant of "
-          "a load) [N per unit thickness]; displacement x or y at 'Point' "
-          "(reference position) [m].");
+    s.add(
+      "Quantity",
+      quantity,
+      "none",
+      {{"none", ProblemQuantity::none},
+       {"contact pressure", ProblemQuantity::contact_pressure},
+       {"tangential traction", ProblemQuantity::tangential_traction},
+       {"contact half-width", ProblemQuantity::contact_half_width},
+       {"minimum contact pressure", ProblemQuantity::minimum_contact_pressure},
+       {"maximum contact pressure", ProblemQuantity::maximum_contact_pressure},
+       {"mean contact pressure", ProblemQuantity::mean_contact_pressure},
+       {"resultant force x", ProblemQuantity::resultant_force_x},
+       {"resultant force y", ProblemQuantity::resultant_force_y},
+       {"displacement x", ProblemQuantity::displacement_x},
+       {"displacement y", ProblemQuantity::displacement_y}},
+      "Scenario = general: none (slot not used); contact pressure at the "
+      "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
+      "tangential traction there (friction: Cauchy, on the tangent e_z x n "
+      "of the master's outward normal n; it has the sign of the slave's "
+      "slip) [Pa]; "
+      "contact half-width: the largest distance from 'Point' to which the "
+      "slave surface is in contact, to half a segment (midway between the "
+      "last node with positive pressure and the next open one) [m]; "
+      "minimum, maximum or mean contact pressure: over the nodes of the "
+      "slave surface nearest to 'Point' (the mean: the integral of the "
+      "pressure over the surface's reference length, divided by that "
+      "length) [Pa]; "
+      "resultant force x or y: the sum of the nodal forces on 'Boundary "
+      "id' (the reaction of an imposed displacement, or the resultant of "
+      "a load) [N per unit thickness]; displacement x or y at 'Point' "
+      "(reference position) [m].");
     // In the reference configuration, as the boundary conditions' x and
     // y: a point on a body stays the same material point at every step.
     s.add("Point",

@@ -8,6 +8,7 @@
 // thrown away: a check that cannot be evaluated (a point outside the mesh,
 // or off every slave surface) stops the run then, not after the first
 // step's work.
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace RingContact
@@ -64,6 +66,11 @@ namespace RingContact
 
           case ProblemQuantity::contact_half_width:
             return contact_half_width(check, state, slave);
+
+          case ProblemQuantity::minimum_contact_pressure:
+          case ProblemQuantity::maximum_contact_pressure:
+          case ProblemQuantity::mean_contact_pressure:
+            return surface_pressure(check, state, slave);
 
           case ProblemQuantity::resultant_force_x:
           case ProblemQuantity::resultant_force_y:
@@ -179,6 +186,59 @@ namespace RingContact
             }
         }
       return width;
+    }
+
+
+    // The pressure over a whole slave surface: its extremes over the nodes
+    // (every node, open ones at zero: a press fit with a node open has a
+    // minimum of 0), or its mean, the integral of the interpolated nodal
+    // pressures p = sum p_k Phi_k over the reference length divided by that
+    // length, with Gauss points enough for the product of the multiplier
+    // basis and the geometry's stretch.
+    double
+    CheckedQuantities::surface_pressure(const ProblemCheckParameters &check,
+                                        const SolutionState          &state,
+                                        const ContactSurface &slave) const
+    {
+      double minimum               = std::numeric_limits<double>::max(),
+             maximum               = -std::numeric_limits<double>::max();
+      double              integral = 0, length = 0;
+      const QGauss<1>     rule(slave.multiplier_basis().size() + 2);
+      std::vector<double> Phi;
+      for (unsigned int s = 0; s < slave.segments().size(); ++s)
+        {
+          // A cyclic sector's rotated copies hold the originals' unknowns.
+          const auto &segment = slave.segments()[s];
+          if (segment.is_copy)
+            continue;
+          for (const auto dof : segment.multiplier_dofs)
+            {
+              minimum = std::min(minimum, state.reported_pressure(dof));
+              maximum = std::max(maximum, state.reported_pressure(dof));
+            }
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              slave.multiplier_basis().evaluate(rule.point(q)[0], Phi);
+              double p = 0;
+              for (unsigned int k = 0; k < Phi.size(); ++k)
+                p +=
+                  Phi[k] * state.reported_pressure(segment.multiplier_dofs[k]);
+              const double dS =
+                slave.reference_point(s, rule.point(q)[0]).dx.norm() *
+                rule.weight(q);
+              integral += p * dS;
+              length += dS;
+            }
+        }
+      switch (check.quantity)
+        {
+          case ProblemQuantity::minimum_contact_pressure:
+            return minimum;
+          case ProblemQuantity::maximum_contact_pressure:
+            return maximum;
+          default:
+            return integral / length;
+        }
     }
 
 

@@ -54,6 +54,10 @@ namespace RingContact
       contact_half_width(const ProblemCheckParameters &check,
                          const SolutionState          &state,
                          const ContactSurface         &slave) const;
+      double
+      surface_pressure(const ProblemCheckParameters &check,
+                       const SolutionState          &state,
+                       const ContactSurface         &slave) const;
       Tensor<1, 2>
       resultant_force(const ProblemCheckParameters &check,
                       const SolutionState          &state) const;

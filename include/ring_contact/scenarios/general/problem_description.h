@@ -107,7 +107,12 @@ namespace RingContact
     contact_pressure,    ///< at the slave node nearest to the point
     tangential_traction, ///< friction: at the slave node nearest to the point
     contact_half_width,  ///< farthest extent of the contact from the point
-    resultant_force_x,   ///< sum of the nodal forces of a boundary
+    /// Over the slave surface nearest to the point: the smallest and the
+    /// largest nodal pressure, and the mean, int p dS / int dS.
+    minimum_contact_pressure,
+    maximum_contact_pressure,
+    mean_contact_pressure,
+    resultant_force_x, ///< sum of the nodal forces of a boundary
     resultant_force_y,
     displacement_x, ///< at the point (reference coordinates)
     displacement_y
@@ -121,11 +126,11 @@ namespace RingContact
     Point<2>        point;
     unsigned int    boundary_id;
     /// The reference, an expression of x, y (the point) and t.
-    std::string               reference;
-    double                    tolerance;
-    bool                      relative;
+    std::string reference;
+    double      tolerance;
+    bool        relative;
     /// Where the reference comes from (for the verdict table).
-    std::string source;
+    std::string               source;
     bool                      every_step;
     std::vector<unsigned int> steps; ///< invalid_unsigned_int: the last
     std::string               name;  ///< "Check 2"
@@ -195,7 +200,6 @@ namespace RingContact
       const std::vector<std::pair<unsigned int, unsigned int>> &pairs) const;
 
   public:
-
     std::vector<std::pair<unsigned int, unsigned int>>
     more_contact_pairs() const override
     {
