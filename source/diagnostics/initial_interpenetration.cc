@@ -11,13 +11,20 @@
 // is read.
 #include <ring_contact/diagnostics/initial_interpenetration.h>
 
+#include <deal.II/dofs/dof_accessor.h>
+#include <deal.II/grid/manifold.h>
+#include <deal.II/grid/tria_accessor.h>
+
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
+#include <vector>
 
 namespace RingContact
 {
   namespace Diagnostics
   {
-    void
+    bool
     report_initial_interpenetration(ContactInterface     &contact,
                                     const Vector<double> &solution,
                                     std::ostream         &log)
@@ -25,7 +32,7 @@ namespace RingContact
       contact.update(solution);
       const auto [depth, where] = contact.deepest_interpenetration();
       if (!(depth > 1e-4 * contact.slave_segment_length()))
-        return;
+        return false;
       log << "Warning: the contact surfaces interpenetrate before any "
              "load, by up to "
           << std::setprecision(3) << depth << " at (" << where[0] << ", "
@@ -36,6 +43,97 @@ namespace RingContact
              "degree = 0 with mixed element degrees: Mapping degree = 1 "
              "makes both faceted), as do bodies that overlap in the mesh.\n"
           << std::setprecision(6);
+      return true;
     }
+
+    // @sect4{A mesh too coarse for its geometry}
+    //
+    // The error of the initial gap that the discrete surfaces make: at three
+    // points of every slave segment, the slave's departure from its curve
+    // (the face's manifold: the gmsh model's circle, the rings' polar
+    // manifold) minus the master's at the partner, along the master's
+    // normal. A faceted arc (Mapping degree = 1) departs by its chord sag,
+    // h^2 / 8 R; a quadratic mapping by O(h^4 / R^3). Matching facets make
+    // the same error on both sides, and it cancels. Compared with the
+    // median size of the initial mean gaps g~_k / w_k, the gap or the
+    // interference the problem states, where the surfaces conform (most
+    // gaps within a factor 2 of each other). The threshold is low, 0.1 %: a
+    // shrink fit of 1e-3 R between straight facets that do not match swung
+    // from -100 % (nodes open) to +200 % at 40, 80 and 160 segments per
+    // quarter alike, where the sag is 19 %, 5 % and 1.2 % of the
+    // interference: the kinks of the facets, not the sag, make the swing,
+    // and refining does not remove it. Curved (Mapping degree = 2), the
+    // departure is 1e-6 of it and the swing a few percent.
+    bool
+    report_coarse_geometry(ContactInterface     &contact,
+                           const Vector<double> &solution,
+                           std::ostream         &log)
+    {
+      contact.update(solution);
+      std::vector<double> gaps;
+      const double        h = contact.slave_segment_length();
+      for (const double g : contact.mean_gaps())
+        if (std::abs(g) > 1e-8 * h)
+          gaps.push_back(std::abs(g));
+      // Most nodes must have a gap, and of one size (conforming surfaces: a
+      // fit, a gap that closes): surfaces that start in contact state no
+      // gap size, and a body that comes to the other from afar (the
+      // shallow ironing's indenter, 0.03 to 1 m away) states none that the
+      // pressure depends on.
+      if (gaps.empty() || 2 * gaps.size() < contact.mean_gaps().size())
+        return false;
+      std::sort(gaps.begin(), gaps.end());
+      const double gap = gaps[gaps.size() / 2];
+      if (gaps[(9 * gaps.size()) / 10] > 2 * gaps[gaps.size() / 10])
+        return false;
+
+      const ContactSurface &slave  = contact.slave_surface(),
+                           &master = contact.master_surface();
+      const auto departure         = [](const ContactSurface &surface,
+                                const unsigned int    s,
+                                const double          t) {
+        const auto    &segment = surface.segments()[s];
+        const auto     face    = segment.cell->face(segment.face_no);
+        const Point<2> on_curve =
+          face->get_manifold().get_intermediate_point(face->vertex(0),
+                                                      face->vertex(1),
+                                                      t);
+        return on_curve - surface.reference_point(s, t).x;
+      };
+      double   worst = 0;
+      Point<2> where;
+      for (unsigned int s = 0; s < slave.segments().size(); ++s)
+        if (!slave.segments()[s].is_copy)
+          for (const double t : {0.25, 0.5, 0.75})
+            {
+              const Point<2>   x = slave.reference_point(s, t).x;
+              const Projection p = master.project(x);
+              if (p.clamped)
+                continue;
+              const double error =
+                (departure(slave, s, t) - departure(master, p.segment, p.t)) *
+                master.normal(p);
+              if (std::abs(error) > worst)
+                {
+                  worst = std::abs(error);
+                  where = x;
+                }
+            }
+      if (!(worst > 1e-3 * gap))
+        return false;
+      log << "Warning: the contact surfaces are too coarse for their "
+             "curves: at ("
+          << std::setprecision(3) << where[0] << ", " << where[1]
+          << ") the gap they give departs by " << worst
+          << " from the gap between the curves, " << 100 * worst / gap
+          << " % of the typical initial gap or interference (" << gap
+          << "). Between facets that do not match, the pressure then "
+             "swings from facet to facet, and refining does not remove it "
+             "(a shrink fit: -100 % to +200 % at any mesh); Mapping degree "
+             "= 2 curves the surfaces.\n"
+          << std::setprecision(6);
+      return true;
+    }
+
   } // namespace Diagnostics
 } // namespace RingContact

@@ -1,8 +1,8 @@
 // @sect3{Gmsh files: checked before gmsh reads them, and after}
 //
 // Every mesh the program does not generate itself comes from gmsh: the
-// original meshes of the rings' case (format 1), files a user writes in any format
-// gmsh saves, and .geo scripts that gmsh meshes when they are read. The
+// original meshes of the rings' case (format 1), files a user writes in any
+// format gmsh saves, and .geo scripts that gmsh meshes when they are read. The
 // reading itself is gmsh's own library, run in a child process
 // (gmsh_process.cc); this file stands on both sides of it. Before: a light
 // check of the text, because gmsh 4.8's readers trust the file (a low
@@ -14,10 +14,10 @@
 // replaced lost 19 of 40 fixed segments of a format-1 file with a low
 // count, crashed on a triangle and read a short element past its end: each
 // of those is now a one-line error that names the file.
+#include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/gmsh_process.h>
 #include <ring_contact/input/parameter_file.h>
-#include <ring_contact/base/utilities.h>
 
 #include <algorithm>
 #include <cctype>
@@ -227,15 +227,12 @@ namespace RingContact
         // The count line: one number in formats 1 and 2.2; in 4.1
         // "numEntityBlocks numItems minTag maxTag".
         std::vector<std::size_t> numbers;
-        if (body.empty() || !read_integers(body[0],
-                                           numbers,
-                                           format_4 ? 2 : 1,
-                                           !format_4))
+        if (body.empty() ||
+            !read_integers(body[0], numbers, format_4 ? 2 : 1, !format_4))
           at_line(i + 1,
                   "the count of section " + in_quotes(line) + " is " +
                     in_quotes(body.empty() ? "" : body[0]) + ", not " +
-                    (format_4 ? "'blocks " + what + "s ...'" :
-                                "a number"));
+                    (format_4 ? "'blocks " + what + "s ...'" : "a number"));
         const std::size_t count  = format_4 ? numbers[1] : numbers[0];
         const std::size_t blocks = format_4 ? numbers[0] : 0;
         // Format 4.1: a line per block, then per node a tag line and
@@ -246,24 +243,22 @@ namespace RingContact
         // the line arithmetic below from overflowing.
         if (count > text_size || blocks > text_size)
           at_line(i + 1,
-                  "the " + what + " section declares " +
-                    std::to_string(count) + " " + what +
-                    "s: more than the file can hold");
+                  "the " + what + " section declares " + std::to_string(count) +
+                    " " + what + "s: more than the file can hold");
         // Either way the file is damaged; gmsh would silently drop
         // what a low count leaves out.
         const std::size_t expected =
           blocks + (format_4 && nodes ? 2 * count : count);
         if (listed != expected)
           at_line(i,
-                  format_4 ?
-                    "the " + what + " section declares " +
-                      std::to_string(count) + " " + what + "s in " +
-                      std::to_string(blocks) + " blocks (" +
-                      std::to_string(expected) + " lines) but has " +
-                      std::to_string(listed) + " lines" :
-                    "the " + what + " section declares " +
-                      std::to_string(count) + " " + what +
-                      "s but lists " + std::to_string(listed));
+                  format_4 ? "the " + what + " section declares " +
+                               std::to_string(count) + " " + what + "s in " +
+                               std::to_string(blocks) + " blocks (" +
+                               std::to_string(expected) + " lines) but has " +
+                               std::to_string(listed) + " lines" :
+                             "the " + what + " section declares " +
+                               std::to_string(count) + " " + what +
+                               "s but lists " + std::to_string(listed));
         return count;
       }
 
@@ -784,6 +779,13 @@ namespace RingContact
                     return a.tag < b.tag;
                   });
         check_cells(mesh);
+        for (const auto &[tag, xyz] : model.curves)
+          {
+            std::vector<Point<2>> points;
+            for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+              points.emplace_back(xyz[i], xyz[i + 1]);
+            mesh.curves.emplace_back(tag, std::move(points));
+          }
         return mesh;
       }
     } // namespace

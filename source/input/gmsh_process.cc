@@ -13,8 +13,8 @@
 // an exit(), a hang past the time limit or a Ctrl-C all end the child, and
 // each becomes one line that names the file. The cost is one fork per
 // read, a few milliseconds.
-#include <ring_contact/input/gmsh_process.h>
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/input/gmsh_process.h>
 
 #include <fcntl.h>
 #include <gmsh.h>
@@ -206,6 +206,9 @@ namespace RingContact
       // square).
       constexpr std::uint8_t stage_marker = 0xfe;
 
+      // The points per curve of a script's model (see gmsh_child()).
+      constexpr unsigned int curve_samples = 513;
+
       // The last stage the child announced in a (possibly cut) answer, ""
       // if none.
       std::string
@@ -385,6 +388,35 @@ namespace RingContact
                     out.vector(element_tags[t]);
                     out.vector(nodes[t]);
                   }
+              }
+            // A script's curves as the CAD kernel has them: each sampled at
+            // `curve_samples` points evenly spaced in its parameter
+            // (gmsh::model::getValue), from which the parent recognises a
+            // straight line or a circle and otherwise interpolates
+            // (model_curves.cc): the geometry that refinement and a curved
+            // mapping follow. A mesh file has no CAD: none.
+            std::vector<std::pair<int, std::vector<double>>> curves;
+            if (geo)
+              for (const auto &[dim, tag] : entities)
+                if (dim == 1)
+                  {
+                    std::vector<double> low, high;
+                    gmsh::model::getParametrizationBounds(1, tag, low, high);
+                    if (low.size() != 1 || high.size() != 1)
+                      continue;
+                    std::vector<double> t(curve_samples), xyz;
+                    for (unsigned int i = 0; i < curve_samples; ++i)
+                      t[i] =
+                        low[0] + (high[0] - low[0]) * i / (curve_samples - 1.0);
+                    gmsh::model::getValue(1, tag, t, xyz);
+                    if (xyz.size() == 3 * curve_samples)
+                      curves.emplace_back(tag, std::move(xyz));
+                  }
+            out.value<std::uint64_t>(curves.size());
+            for (const auto &[tag, xyz] : curves)
+              {
+                out.value<std::int32_t>(tag);
+                out.vector(xyz);
               }
             out.value(end_of_answer);
             _exit(0);
@@ -581,8 +613,8 @@ namespace RingContact
         if (WIFSIGNALED(status))
           {
             const std::string signal = "signal " +
-                                       std::to_string(WTERMSIG(status)) +
-                                       ", " + strsignal(WTERMSIG(status));
+                                       std::to_string(WTERMSIG(status)) + ", " +
+                                       strsignal(WTERMSIG(status));
             const std::string stage = last_stage(answer, filename);
             if (stage.rfind("meshing", 0) == 0 || stage.rfind("making", 0) == 0)
               fail(filename,
@@ -649,6 +681,14 @@ namespace RingContact
               entity.element_nodes.push_back(in.vector<std::size_t>());
             }
           model.entities.push_back(std::move(entity));
+        }
+      const auto n_curves = in.value<std::uint64_t>();
+      for (std::uint64_t c = 0; c < n_curves; ++c)
+        {
+          const int tag = in.value<std::int32_t>();
+          model.curves.emplace_back(tag, in.vector<double>());
+          if (model.curves.back().second.size() != 3 * curve_samples)
+            fail(filename, "the answer of gmsh's reader is inconsistent");
         }
       if (in.value<std::uint32_t>() != end_of_answer || !in.at_end() ||
           model.coordinates.size() != 3 * model.node_tags.size())

@@ -74,6 +74,7 @@ namespace RingContact
         Diagnostics::report_initial_interpenetration(*contacts[i],
                                                      solution,
                                                      log);
+        Diagnostics::report_coarse_geometry(*contacts[i], solution, log);
       }
     // Every quantity the scenario reports, evaluated once at rest and
     // thrown away: a quantity that cannot be evaluated throws now.

@@ -26,11 +26,21 @@ namespace RingContact
     using namespace dealii;
 
     /// Warn in `log` when the surfaces of `contact` interpenetrate at
-    /// `solution` (the reference state).
-    void
+    /// `solution` (the reference state); true if it warned.
+    bool
     report_initial_interpenetration(ContactInterface     &contact,
                                     const Vector<double> &solution,
                                     std::ostream         &log);
+
+    /// Warn in `log` when the discrete contact surfaces are too coarse for
+    /// the curves they follow (their manifolds): when the initial gap they
+    /// give departs from the gap between the curves by more than 0.1 % of the
+    /// median initial gap or interference. Silent unless most nodes start
+    /// with gaps of one size (conforming surfaces). True if it warned.
+    bool
+    report_coarse_geometry(ContactInterface     &contact,
+                           const Vector<double> &solution,
+                           std::ostream         &log);
   } // namespace Diagnostics
 } // namespace RingContact
 

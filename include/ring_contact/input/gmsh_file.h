@@ -31,10 +31,10 @@ namespace RingContact
     /// One element of a gmsh mesh.
     struct GmshElement
     {
-      int                      type;     ///< gmsh type: 1, 3, 8, 10 or 16
-      long                     physical; ///< physical tag (0 if none)
-      std::vector<std::size_t> nodes;    ///< node tags, gmsh order
-      std::size_t              tag;      ///< gmsh element tag
+      int                      type;       ///< gmsh type: 1, 3, 8, 10 or 16
+      long                     physical;   ///< physical tag (0 if none)
+      std::vector<std::size_t> nodes;      ///< node tags, gmsh order
+      std::size_t              tag;        ///< gmsh element tag
       int                      entity = 0; ///< its gmsh (elementary) entity
     };
 
@@ -45,6 +45,9 @@ namespace RingContact
       /// Lines and quadrilaterals, by increasing tag (points are dropped).
       std::vector<GmshElement> elements;
       bool                     quadratic = false; ///< types 8, 10 or 16
+      /// A script's curves by gmsh tag, sampled evenly in their parameter
+      /// (GmshModel::curves; model_curves.h makes them the geometry).
+      std::vector<std::pair<int, std::vector<Point<2>>>> curves;
       /// The node tag of each vertex of the triangulation built from it
       /// (set by Geometry::read_gmsh()).
       std::vector<std::size_t> node_of_vertex;

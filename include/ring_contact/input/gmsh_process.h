@@ -37,6 +37,10 @@ namespace RingContact
         std::vector<std::vector<std::size_t>> element_nodes;
       };
       std::vector<Entity> entities;
+      /// A script's curves (dimension-1 entities) by tag, each as points
+      /// x, y, z evenly spaced in the CAD kernel's parameter, ends
+      /// included; none for a mesh file.
+      std::vector<std::pair<int, std::vector<double>>> curves;
     };
 
     /// Open `filename` with gmsh's library in a child process; if

@@ -21,6 +21,7 @@
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/input/gmsh_mesh.h>
+#include <ring_contact/input/model_curves.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/scenarios/general/general.h>
 #include <ring_contact/scenarios/reference_pressure.h>
@@ -149,9 +150,9 @@ namespace RingContact
             , quantities(problem)
         {}
 
-        // The bodies of a gmsh model, straight-sided (FlatManifold), meshed
-        // from a script with linear elements (the cells take the vertices
-        // only); the audit of its tags first (a line it drops leaves a
+        // The bodies of a gmsh model, on the model's curves, meshed from a
+        // script with linear elements (the cells take the vertices only);
+        // the audit of its tags first (a line it drops leaves a
         // boundary without faces, which check_bodies() would report).
         void
         create_mesh(Triangulation<2> &triangulation) const override
@@ -172,10 +173,10 @@ namespace RingContact
           Geometry::check_size(triangulation.n_active_cells(),
                                degree,
                                parameters.mesh.global_refinements);
-          // No manifold is attached: deal.II's default, a FlatManifold,
-          // puts the refined vertices on the straight sides. A curved
-          // boundary is resolved by the mesh (as the Hertz model does), not
-          // by the geometry.
+          // A script's curves are the geometry (model_curves.h): refined
+          // vertices go onto them, and a Mapping degree >= 2 curves the
+          // cells and the contact surfaces. A mesh file has straight sides.
+          Geometry::attach_model_curves(triangulation, mesh);
           triangulation.refine_global(parameters.mesh.global_refinements);
         }
 
