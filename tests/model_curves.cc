@@ -9,6 +9,10 @@
 // curves, the refined vertices sit on the chords, 4e-3 and 8e-3 off. A mapping
 // of degree 2 then gives the disc's quarter an area within 1e-8 of pi and the
 // ellipse's within 1e-8 of 9 pi / 8 (straight-sided: 3e-3 and 2e-3 off).
+// Last, closed curves (OpenCASCADE's whole disc and whole ellipse, each one
+// curve whose ends meet): the ellipse's chart is periodic, and refinement
+// across its seam keeps the vertices on it (a transfinite interpolation of
+// the cells beside the curves once failed here while refining).
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_values.h>
@@ -34,6 +38,16 @@ namespace
   // Body 2: the quarter ellipse x^2 / 9 + y^2 / 2.25 <= 1 moved to x >= 4,
   // centre (4, 0). Tags: 10 the circle, 20 the ellipse, 11-12 and 21-22
   // the straight sides.
+  const char *closed = R"(
+SetFactory("OpenCASCADE");
+Disk(1) = {0, 0, 0, 1};
+Disk(2) = {3, 0, 0, 1, 0.5};
+Mesh.RecombineAll = 1; Mesh.Algorithm = 6; Mesh.SubdivisionAlgorithm = 1;
+Mesh.MeshSizeMax = 0.4;
+Physical Surface(1) = {1}; Physical Surface(2) = {2};
+Physical Curve(10) = {1}; Physical Curve(20) = {2};
+)";
+
   const char *script = R"(
 Point(1) = {1, 1, 0}; Point(2) = {3, 1, 0}; Point(3) = {1, 3, 0};
 Line(1) = {1, 2}; Circle(2) = {2, 1, 3}; Line(3) = {3, 1};
@@ -150,4 +164,24 @@ main()
         check(circle > 1e-3 && ellipse > 1e-3,
               "straight-sided, the refined vertices are on the chords");
     }
+
+  std::ofstream("closed.geo") << closed;
+  Triangulation<2>         triangulation;
+  const Geometry::GmshMesh mesh =
+    Geometry::read_gmsh(triangulation, "closed.geo", {}, 1, false);
+  Geometry::attach_model_curves(triangulation, mesh);
+  triangulation.refine_global(3);
+  const double circle  = worst(triangulation, 10, [](const Point<2> &x) {
+    return std::abs(x.norm() - 1);
+  });
+  const double ellipse = worst(triangulation, 20, [](const Point<2> &x) {
+    const double X = x[0] - 3, Y = x[1];
+    const double F = X * X + Y * Y / 0.25 - 1;
+    return std::abs(F) / std::hypot(2 * X, 2 * Y / 0.25);
+  });
+  out << "closed curves: vertices off the circle "
+      << (circle < 1e-12 ? 0 : circle) << ", off the ellipse "
+      << (ellipse < 1e-9 ? 0 : ellipse) << std::endl;
+  check(circle < 1e-12, "refined vertices on the whole circle");
+  check(ellipse < 1e-9, "refined vertices on the whole ellipse");
 }

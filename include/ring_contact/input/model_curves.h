@@ -79,11 +79,9 @@ namespace RingContact
 
     /// The curves of `mesh` (a script's, see GmshMesh::curves) attached to
     /// `triangulation` made from it (read_gmsh()): every boundary face on a
-    /// circle or another curve gets that curve's manifold, and every cell
-    /// with such a face a transfinite interpolation of its boundary (as in
-    /// step-65), so that its refined vertices and a curved mapping's inner
-    /// points follow the curve too. Straight curves keep the flat default.
-    /// Returns the curves found, by kind, for the report.
+    /// circle or another curve gets that curve's manifold; straight curves
+    /// and the cells keep the flat default. Returns the curves found, by
+    /// kind.
     std::vector<ModelCurve>
     attach_model_curves(Triangulation<2> &triangulation, const GmshMesh &mesh);
   } // namespace Geometry
