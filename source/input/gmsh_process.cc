@@ -25,8 +25,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -399,19 +401,30 @@ namespace RingContact
             if (geo)
               for (const auto &[dim, tag] : entities)
                 if (dim == 1)
-                  {
-                    std::vector<double> low, high;
-                    gmsh::model::getParametrizationBounds(1, tag, low, high);
-                    if (low.size() != 1 || high.size() != 1)
-                      continue;
-                    std::vector<double> t(curve_samples), xyz;
-                    for (unsigned int i = 0; i < curve_samples; ++i)
-                      t[i] =
-                        low[0] + (high[0] - low[0]) * i / (curve_samples - 1.0);
-                    gmsh::model::getValue(1, tag, t, xyz);
-                    if (xyz.size() == 3 * curve_samples)
-                      curves.emplace_back(tag, std::move(xyz));
-                  }
+                  // A curve the kernel cannot evaluate (a discrete or
+                  // compound curve) stays straight-sided: the status byte
+                  // has gone out, and an error now would lose the mesh.
+                  try
+                    {
+                      std::vector<double> low, high;
+                      gmsh::model::getParametrizationBounds(1, tag, low, high);
+                      if (low.size() != 1 || high.size() != 1 ||
+                          !std::isfinite(low[0]) || !std::isfinite(high[0]) ||
+                          !(high[0] > low[0]))
+                        continue;
+                      std::vector<double> t(curve_samples), xyz;
+                      for (unsigned int i = 0; i < curve_samples; ++i)
+                        t[i] = low[0] +
+                               (high[0] - low[0]) * i / (curve_samples - 1.0);
+                      gmsh::model::getValue(1, tag, t, xyz);
+                      if (xyz.size() == 3 * curve_samples &&
+                          std::all_of(xyz.begin(), xyz.end(), [](double v) {
+                            return std::isfinite(v);
+                          }))
+                        curves.emplace_back(tag, std::move(xyz));
+                    }
+                  catch (...)
+                    {}
             out.value<std::uint64_t>(curves.size());
             for (const auto &[tag, xyz] : curves)
               {
