@@ -813,16 +813,27 @@ namespace RingContact
     // angles to some 1e-9 only, and the two distances differ by about
     // 2 sin(half the angle between the segments) times the point's offset
     // along the surface; 1e-5 of the segment's length.
-    const double d_best = x.distance(current_point(best.segment, best.t).x);
-    const double h_best = current_point(best.segment, 0)
-                            .x.distance(current_point(best.segment, 1).x);
-    for (const auto &[q, distance] : valid)
+    // (Only where another valid projection exists: the search's hot path
+    // is left as it was.)
+    if (valid.size() > 1)
       {
-        const auto &n    = segment_list[best.segment].neighbours;
-        const int shared = n[0] == q.segment ? 0 : (n[1] == q.segment ? 1 : -1);
-        if (shared >= 0 && q.segment != best.segment &&
-            std::abs(distance - d_best) <= 1e-5 * h_best)
-          return project_onto_vertex(x, best.segment, shared);
+        double d_best = 0;
+        for (const auto &[p, distance] : valid)
+          if (p.segment == best.segment)
+            d_best = distance;
+        const auto &n = segment_list[best.segment].neighbours;
+        for (const auto &[q, distance] : valid)
+          {
+            const int shared =
+              n[0] == q.segment ? 0 : (n[1] == q.segment ? 1 : -1);
+            if (shared < 0)
+              continue;
+            const double h_best =
+              current_point(best.segment, 0)
+                .x.distance(current_point(best.segment, 1).x);
+            if (std::abs(distance - d_best) <= 1e-5 * h_best)
+              return project_onto_vertex(x, best.segment, shared);
+          }
       }
     // The nearer end when the projection is clamped or within 1e-6 (in t) of
     // it; at the end of an open surface there is no vertex normal, and the
