@@ -34,7 +34,8 @@ import xml.etree.ElementTree as ET
 
 VERDICT_FIELDS = 10
 LEADING = ["scheme", "step", "time"]
-SOLVER = ["newton_iterations", "step_cuts", "active_nodes", "wall_time"]
+SOLVER = ["newton_iterations", "step_cuts", "active_nodes", "wall_time", "cells",
+          "unknowns"]
 INVARIANTS = ["equilibrium_error", "action_reaction_error"]
 
 

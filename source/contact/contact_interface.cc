@@ -884,4 +884,13 @@ namespace RingContact
       }
     return std::sqrt(error / norm);
   }
+  std::vector<std::pair<unsigned int, unsigned int>>
+  ContactInterface::paired_segments() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (const ContactPoint &point : points)
+      if (point.projection.segment != numbers::invalid_unsigned_int)
+        pairs.emplace_back(point.slave_segment, point.projection.segment);
+    return pairs;
+  }
 } // namespace RingContact

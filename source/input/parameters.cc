@@ -122,6 +122,7 @@ namespace RingContact
             Patterns::Selection(names));
     }
     mesh.add_parameters(prm);
+    refinement.add_parameters(prm);
     materials.add_parameters(prm);
     finite_elements.add_parameters(prm);
     contact.add_parameters(prm);
@@ -234,6 +235,15 @@ namespace RingContact
         // compare its entries with the common ones, and may set common ones
         // that the file left alone (the rings put the probe at their node A).
         mesh.finish(mesh_folder);
+        refinement.finish();
+        require(refinement.adaptive_cycles == 0 ||
+                  refinement.maximum_level > mesh.global_refinements,
+                "Mesh refinement",
+                "Maximum level",
+                "is " + std::to_string(refinement.maximum_level) +
+                  ", not above Mesh/Global refinements (" +
+                  std::to_string(mesh.global_refinements) +
+                  "): adaptive refinement could refine nothing");
         contact.finish();
         load.finish();
         output.finish(name);

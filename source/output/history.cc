@@ -47,6 +47,10 @@ namespace RingContact
       return step_cuts;
     if (name == "active_nodes")
       return active_nodes;
+    if (name == "cells")
+      return cells;
+    if (name == "unknowns")
+      return static_cast<double>(unknowns);
     if (name == "equilibrium_error")
       return equilibrium_error;
     if (name == "action_reaction_error")
@@ -64,7 +68,12 @@ namespace RingContact
     std::vector<std::string> columns = {"scheme", "step", "time"};
     columns.insert(columns.end(), leading.begin(), leading.end());
     for (const char *fixed :
-         {"newton_iterations", "step_cuts", "active_nodes", "wall_time"})
+         {"newton_iterations",
+          "step_cuts",
+          "active_nodes",
+          "wall_time",
+          "cells",
+          "unknowns"})
       columns.emplace_back(fixed);
     columns.insert(columns.end(), trailing.begin(), trailing.end());
     columns.emplace_back("equilibrium_error");
@@ -100,7 +109,8 @@ namespace RingContact
       for (const auto &[name, value] : r.leading)
         out << ',' << value;
       out << ',' << r.newton_iterations << ',' << r.step_cuts << ','
-          << r.active_nodes << ',' << r.wall_time;
+          << r.active_nodes << ',' << r.wall_time << ',' << r.cells << ','
+          << r.unknowns;
       for (const auto &[name, value] : r.trailing)
         out << ',' << value;
       out << std::setprecision(3) << ',' << r.equilibrium_error << ','

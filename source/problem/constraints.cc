@@ -34,6 +34,10 @@ namespace RingContact
   void
   ContactProblem::make_constraints()
   {
+    hanging_node_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
     imposed_dofs.clear();
     const ImposedMotion motion = scenario->boundary_motion(dof_handler,
                                                            mapping_collection,
@@ -94,6 +98,9 @@ namespace RingContact
     std::vector<bool>                               *fixed_dofs)
   {
     target.clear();
+    // The hanging nodes of an adaptively refined mesh (refinement.cc), on
+    // inner faces only: never an imposed unknown or a slave surface's node.
+    target.merge(hanging_node_constraints);
     // The imposed unknowns, then their increments: an unknown the increment
     // leaves out keeps its value (a homogeneous line).
     for (const auto dof : imposed_dofs)
@@ -116,7 +123,9 @@ namespace RingContact
       {
         fixed_dofs->assign(dof_handler.n_dofs(), false);
         for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-          (*fixed_dofs)[i] = target.is_constrained(i);
+          (*fixed_dofs)[i] =
+            target.is_constrained(i) &&
+            !hanging_node_constraints.is_constrained(i);
       }
 
     // The multiplier lives on the slave surface only. The layer's nodes off
@@ -128,7 +137,7 @@ namespace RingContact
     for (const auto &[node, pair] : pair_of_node)
       slave_multipliers.insert(node);
     for (const auto i : all_multipliers)
-      if (slave_multipliers.count(i) == 0)
+      if (slave_multipliers.count(i) == 0 && !target.is_constrained(i))
         target.add_line(i);
 
     // Cyclic symmetry: the end side of the sector follows the start side,

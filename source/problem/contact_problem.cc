@@ -35,6 +35,10 @@ namespace RingContact
       , bodies(scenario->bodies())
       , boundary_loads(scenario->boundary_loads())
       , load_program(scenario->load_program())
+      // Adaptive refinement (refinement.cc) keeps neighbouring cells within
+      // one level at every vertex, so that a refined patch grades into the
+      // mesh around it; uniform refinement is unaffected.
+      , triangulation(Triangulation<2>::limit_level_difference_at_vertices)
       , dof_handler(triangulation)
       , displacement(0)
       , previous_time(0)

@@ -381,10 +381,27 @@ namespace RingContact
   bool
   ContactProblem::solve_load_step(const unsigned int step)
   {
-    const double t_end = load_program.time(step);
-    double       dt    = t_end - current_time;
     unsigned int cuts = 0, total_iterations = 0;
     Timer        wall;
+    if (!advance_to(step, load_program.time(step), cuts, total_iterations))
+      return false;
+    // Adaptive refinement (refinement.cc): the step solved again on finer
+    // meshes before it is reported.
+    if (!refine_and_solve_again(step, cuts, total_iterations))
+      return false;
+    postprocess_step(step, total_iterations, cuts, wall.wall_time());
+    return true;
+  }
+
+  // From the current state to the load state at t_end, through increments
+  // halved while Newton fails (at most Newton/Maximum step cuts times).
+  bool
+  ContactProblem::advance_to(const unsigned int step,
+                             const double       t_end,
+                             unsigned int      &cuts,
+                             unsigned int      &total_iterations)
+  {
+    double dt = t_end - current_time;
     // Whether the increment being tried starts from the last converged
     // state itself: after a failure from the extrapolated state, the same
     // increment is tried from there before it is cut.
@@ -490,7 +507,6 @@ namespace RingContact
                 << "), cutting the increment to " << dt;
         log << wrap_text(message.str());
       }
-    postprocess_step(step, total_iterations, cuts, wall.wall_time());
     return true;
   }
 

@@ -189,6 +189,8 @@ namespace RingContact
     row.step_cuts         = cuts;
     row.active_nodes      = n_active_nodes();
     row.wall_time         = wall_time;
+    row.cells             = triangulation.n_active_cells();
+    row.unknowns          = dof_handler.n_dofs();
     scenario->report(*this, row);
     // A state that fails an invariant is not recorded: the history and the
     // verdicts keep converged states that can be trusted only. Its line
@@ -280,6 +282,23 @@ namespace RingContact
       {
         forces.contact.emplace_back(dof_handler.n_dofs());
         contact->add_forces(solution, forces.contact.back());
+      }
+    // A hanging node's force acts on the nodes it hangs from (adaptive
+    // refinement): a support next to one takes its share as reaction.
+    if (hanging_node_constraints.n_constraints() > 0)
+      {
+        for (Vector<double> *f : {&forces.internal, &forces.applied})
+          if (f->size() > 0)
+            hanging_node_constraints.condense(*f);
+        for (auto &f : forces.contact)
+          hanging_node_constraints.condense(f);
+        if (forces.round_off.size() > 0)
+          for (const auto &line : hanging_node_constraints.get_lines())
+            {
+              for (const auto &[j, c] : line.entries)
+                forces.round_off(j) += std::abs(c) * forces.round_off(line.index);
+              forces.round_off(line.index) = 0;
+            }
       }
     return forces;
   }

@@ -40,6 +40,15 @@ namespace RingContact
   ContactProblem::setup()
   {
     make_grid();
+    // A sector's two sides are tied node to node (cyclic_symmetry.h):
+    // refined apart, their nodes would no longer face each other.
+    if (parameters.refinement.adaptive_cycles > 0 && scenario->cyclic_sector())
+      throw ParameterError("Mesh refinement",
+                           "Adaptive cycles",
+                           "Mesh refinement/Adaptive cycles: adaptive "
+                           "refinement needs the whole rings, not a sector "
+                           "(cyclic symmetry ties the sides' nodes, which "
+                           "refinement would part)");
     setup_system();
     for (const auto &contact : contacts)
       contact->update(solution);

@@ -151,6 +151,12 @@ namespace RingContact
     std::vector<double>
     mean_gaps() const;
 
+    /// The slave and master segments of every contact point paired at the
+    /// last update() (adaptive refinement keeps the master as fine as the
+    /// slave where they face each other).
+    std::vector<std::pair<unsigned int, unsigned int>>
+    paired_segments() const;
+
     /// True if the current pairs are all inside the last sparsity pattern.
     bool
     sparsity_covers_pairing() const;

@@ -117,6 +117,35 @@ namespace RingContact
     finish(const std::string &prm_folder);
   };
 
+  /// What the adaptive refinement estimates the error of (subsection Mesh
+  /// refinement).
+  enum class RefinementEstimator
+  {
+    /// Kelly's jumps of the displacement gradient across the cells' faces.
+    kelly,
+    /// Kelly's, plus on each slave face the residual of the contact:
+    /// the body's traction against the multiplier's.
+    kelly_and_contact
+  };
+
+  /// Subsection Mesh refinement: the mesh refined where the error estimate
+  /// is largest, and each such step solved again on the new mesh.
+  struct RefinementParameters
+  {
+    unsigned int        adaptive_cycles;
+    RefinementEstimator estimator;
+    double              refine_fraction;
+    double              coarsen_fraction;
+    unsigned int        every;
+    unsigned int        maximum_level;
+    unsigned int        maximum_cells;
+
+    void
+    add_parameters(ParameterHandler &prm);
+    void
+    finish();
+  };
+
   struct MaterialParameters
   {
     Kinematics      kinematics;
@@ -279,6 +308,7 @@ namespace RingContact
     /// Problem/Scenario: the name of a registered scenario (scenario.h).
     std::string             scenario;
     MeshParameters          mesh;
+    RefinementParameters    refinement;
     MaterialParameters      materials;
     FiniteElementParameters finite_elements;
     ContactParameters       contact;

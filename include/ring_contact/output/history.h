@@ -29,6 +29,10 @@ namespace RingContact
     unsigned int step_cuts         = 0;
     unsigned int active_nodes      = 0;
     double       wall_time         = 0; ///< seconds spent on the step
+    /// The mesh the step was solved on (adaptive refinement changes it):
+    /// active cells and unknowns.
+    unsigned int       cells    = 0;
+    unsigned long long unknowns = 0;
     /// The invariants (equilibrium.h): the worst body's equilibrium and
     /// the worst pair's action and reaction, relative to their forces.
     double equilibrium_error     = 0;
@@ -48,7 +52,7 @@ namespace RingContact
 
   /// The columns of history.csv for rows with these leading and trailing
   /// quantities: scheme, step, time, the leading ones, newton_iterations,
-  /// step_cuts, active_nodes, wall_time, the trailing ones, then
+  /// step_cuts, active_nodes, wall_time, cells, unknowns, the trailing ones, then
   /// equilibrium_error and action_reaction_error.
   std::vector<std::string>
   history_columns(const std::vector<std::string> &leading,

@@ -210,6 +210,11 @@ namespace RingContact
     {
       return applied_resultant;
     }
+    unsigned int
+    mesh_version() const override
+    {
+      return n_refinements;
+    }
     /// @}
 
     /// What an assembly computes: the right-hand side -R and the tangent
@@ -358,6 +363,30 @@ namespace RingContact
     extrapolation_factor(const double t_next) const;
     bool
     solve_load_step(const unsigned int step);
+    /// From the current state to the load state at t_end, the increment
+    /// halved while Newton fails; false if it still fails after the cuts.
+    bool
+    advance_to(const unsigned int step,
+               const double       t_end,
+               unsigned int      &cuts,
+               unsigned int      &iterations);
+    /// @}
+
+    /// @name Adaptive refinement (refinement.cc)
+    /// @{
+    /// Each active cell's error indicator (subsection Mesh refinement).
+    Vector<float>
+    estimate_error() const;
+    /// Mark, refine and coarsen, carry the state (solution and
+    /// previous_solution) to the new mesh and set the problem up on it.
+    void
+    refine_mesh();
+    /// After a converged step, if refinement is due: 'Adaptive cycles'
+    /// times refine and solve the step again. False if a cycle fails.
+    bool
+    refine_and_solve_again(const unsigned int step,
+                           unsigned int      &cuts,
+                           unsigned int      &iterations);
     /// @}
 
     /// @name Postprocessing (postprocessing.cc)
@@ -432,6 +461,13 @@ namespace RingContact
     /// Homogeneous constraints of a Newton update: the imposed
     /// displacements, zero multiplier off the slave surfaces.
     AffineConstraints<double> constraints;
+    /// The hanging nodes' lines alone (adaptive refinement): the nodal
+    /// forces at a hanging node are its masters' (nodal_forces()).
+    AffineConstraints<double> hanging_node_constraints;
+    /// How many times the mesh was refined adaptively (mesh_version()).
+    unsigned int n_refinements = 0;
+    /// The log has said that Mesh refinement/Maximum cells stops it.
+    bool said_maximum_cells = false;
     std::vector<bool>         is_dirichlet;
     std::vector<bool>         is_multiplier;
     /// The unknowns whose rows this process stores (all on one process).

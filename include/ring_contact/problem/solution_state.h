@@ -66,6 +66,12 @@ namespace RingContact
     nodal_forces() const = 0;
     virtual const std::map<types::boundary_id, Tensor<1, 2>> &
     applied_resultants() const = 0;
+
+    /// A number that changes whenever the mesh and its unknowns do
+    /// (adaptive refinement): what a reader built from them must build
+    /// again.
+    virtual unsigned int
+    mesh_version() const = 0;
   };
 } // namespace RingContact
 

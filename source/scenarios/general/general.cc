@@ -441,11 +441,15 @@ namespace RingContact
                 v.tolerance = check.tolerance;
                 v.value     = row.value(check.column());
                 reference->set_time(row.time);
-                v.reference = reference->value(check.point);
+                // An L2 error is its own error: its reference expression is
+                // the pressure it was measured against.
+                const bool is_error = check.quantity ==
+                                      ProblemQuantity::contact_pressure_l2_error;
+                v.reference = is_error ? 0 : reference->value(check.point);
                 v.error     = v.value - v.reference;
-                if (check.relative)
+                if (check.relative && !is_error)
                   v.error /= std::abs(v.reference);
-                v.relative = check.relative;
+                v.relative = check.relative && !is_error;
                 v.source   = check.source;
                 // A reference that is no number, or a relative error against
                 // a reference of 0, fails the check: it cannot pass by a

@@ -485,6 +485,8 @@ namespace RingContact
           return "maximum pressure";
         case ProblemQuantity::mean_contact_pressure:
           return "mean pressure";
+        case ProblemQuantity::contact_pressure_l2_error:
+          return "pressure L2 error";
         case ProblemQuantity::resultant_force_x:
           return "force x on " + std::to_string(boundary_id);
         case ProblemQuantity::resultant_force_y:
@@ -526,6 +528,8 @@ namespace RingContact
           return prefix + "_maximum_pressure";
         case ProblemQuantity::mean_contact_pressure:
           return prefix + "_mean_pressure";
+        case ProblemQuantity::contact_pressure_l2_error:
+          return prefix + "_pressure_l2_error";
         case ProblemQuantity::resultant_force_x:
           return prefix + "_force_x";
         case ProblemQuantity::resultant_force_y:
@@ -563,6 +567,8 @@ namespace RingContact
        {"minimum contact pressure", ProblemQuantity::minimum_contact_pressure},
        {"maximum contact pressure", ProblemQuantity::maximum_contact_pressure},
        {"mean contact pressure", ProblemQuantity::mean_contact_pressure},
+       {"contact pressure L2 error",
+        ProblemQuantity::contact_pressure_l2_error},
        {"resultant force x", ProblemQuantity::resultant_force_x},
        {"resultant force y", ProblemQuantity::resultant_force_y},
        {"displacement x", ProblemQuantity::displacement_x},
@@ -579,6 +585,10 @@ namespace RingContact
       "slave surface nearest to 'Point' (the mean: the integral of the "
       "pressure over the surface's reference length, divided by that "
       "length) [Pa]; "
+      "contact pressure L2 error: over the same surface, "
+      "||p_h - p_ref|| / ||p_ref|| with p_ref the 'Reference' expression "
+      "as a function of x, y (reference position) and t; the check "
+      "passes when it is at most 'Tolerance' [-]; "
       "resultant force x or y: the sum of the nodal forces on 'Boundary "
       "id' (the reaction of an imposed displacement, or the resultant of "
       "a load) [N per unit thickness]; displacement x or y at 'Point' "

@@ -72,6 +72,9 @@ namespace RingContact
           case ProblemQuantity::mean_contact_pressure:
             return surface_pressure(check, state, slave);
 
+          case ProblemQuantity::contact_pressure_l2_error:
+            return pressure_l2_error(check, state, slave);
+
           case ProblemQuantity::resultant_force_x:
           case ProblemQuantity::resultant_force_y:
             {
@@ -242,6 +245,47 @@ namespace RingContact
     }
 
 
+    // ||p_h - p_ref|| / ||p_ref|| over the slave surface, in the reference
+    // configuration (the expression's x and y, as every check's). The rule,
+    // Gauss points on 8 pieces of each segment, integrates p_h^2 exactly and
+    // follows a reference that is not smooth, as Hertz's sqrt at the edge of
+    // the contact (4 points per segment read 0.55 % where 24 read 0.56 %).
+    double
+    CheckedQuantities::pressure_l2_error(const ProblemCheckParameters &check,
+                                         const SolutionState          &state,
+                                         const ContactSurface &slave) const
+    {
+      const auto reference = make_expression({check.reference},
+                                             problem.constants,
+                                             check.name + "/Reference");
+      reference->set_time(state.load_state().time);
+      double               error = 0, norm = 0;
+      const QIterated<1>   rule(QGauss<1>(slave.multiplier_basis().size() + 1),
+                              8);
+      std::vector<double> Phi;
+      for (unsigned int s = 0; s < slave.segments().size(); ++s)
+        {
+          const auto &segment = slave.segments()[s];
+          if (segment.is_copy)
+            continue;
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              slave.multiplier_basis().evaluate(rule.point(q)[0], Phi);
+              double p = 0;
+              for (unsigned int k = 0; k < Phi.size(); ++k)
+                p +=
+                  Phi[k] * state.reported_pressure(segment.multiplier_dofs[k]);
+              const auto   X  = slave.reference_point(s, rule.point(q)[0]);
+              const double dS = X.dx.norm() * rule.weight(q);
+              const double p_ref = reference->value(X.x);
+              error += (p - p_ref) * (p - p_ref) * dS;
+              norm += p_ref * p_ref * dS;
+            }
+        }
+      return std::sqrt(error / norm);
+    }
+
+
     // The resultant of the traction over a boundary: its load where it is
     // loaded, its part of the reactions where it is supported
     // (BoundaryResultants, which splits a corner node's reaction between
@@ -256,8 +300,9 @@ namespace RingContact
       // corner node's force belongs to two boundaries. The reactions used
       // leave the contact forces out: a support whose end node lies on a
       // contact surface took that node's contact force as its own.
-      if (!resultants)
+      if (!resultants || resultants_mesh != state.mesh_version())
         {
+          resultants_mesh = state.mesh_version();
           // The directions each boundary's displacement holds.
           std::vector<SupportCondition> supports;
           for (const auto &condition : problem.boundary_conditions)

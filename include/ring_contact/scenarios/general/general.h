@@ -55,6 +55,10 @@ namespace RingContact
                          const SolutionState          &state,
                          const ContactSurface         &slave) const;
       double
+      pressure_l2_error(const ProblemCheckParameters &check,
+                        const SolutionState          &state,
+                        const ContactSurface         &slave) const;
+      double
       surface_pressure(const ProblemCheckParameters &check,
                        const SolutionState          &state,
                        const ContactSurface         &slave) const;
@@ -66,8 +70,10 @@ namespace RingContact
                    const SolutionState          &state) const;
 
       const ProblemParameters &problem;
-      /// Built at the first resultant asked for (the mesh does not change).
+      /// Built at the first resultant asked for, again when the mesh changes.
       mutable std::unique_ptr<BoundaryResultants> resultants;
+      /// The SolutionState::mesh_version() they were built for.
+      mutable unsigned int resultants_mesh = 0;
     };
   } // namespace General
 } // namespace RingContact

@@ -112,6 +112,10 @@ namespace RingContact
     minimum_contact_pressure,
     maximum_contact_pressure,
     mean_contact_pressure,
+    /// Over the slave surface nearest to the point: the relative L2 error
+    /// of the pressure against the reference expression, a function of x,
+    /// y and t, ||p_h - p_ref|| / ||p_ref||.
+    contact_pressure_l2_error,
     resultant_force_x, ///< sum of the nodal forces of a boundary
     resultant_force_y,
     displacement_x, ///< at the point (reference coordinates)
