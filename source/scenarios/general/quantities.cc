@@ -23,6 +23,40 @@ namespace RingContact
 {
   namespace General
   {
+    namespace
+    {
+      // The reported pressure p_h at the points of `rule` on every segment
+      // of a slave surface (a cyclic sector's rotated copies hold the
+      // originals' unknowns and are left out), handed to
+      // visit(p_h, X, dS) with the reference position X and the reference
+      // length element times the weight.
+      template <typename Visitor>
+      void
+      along_slave_surface(const ContactSurface &slave,
+                          const SolutionState  &state,
+                          const Quadrature<1>  &rule,
+                          const Visitor        &visit)
+      {
+        std::vector<double> Phi;
+        for (unsigned int s = 0; s < slave.segments().size(); ++s)
+          {
+            const auto &segment = slave.segments()[s];
+            if (segment.is_copy)
+              continue;
+            for (unsigned int q = 0; q < rule.size(); ++q)
+              {
+                slave.multiplier_basis().evaluate(rule.point(q)[0], Phi);
+                double p = 0;
+                for (unsigned int k = 0; k < Phi.size(); ++k)
+                  p += Phi[k] *
+                       state.reported_pressure(segment.multiplier_dofs[k]);
+                const auto X = slave.reference_point(s, rule.point(q)[0]);
+                visit(p, X.x, X.dx.norm() * rule.weight(q));
+              }
+          }
+      }
+    } // namespace
+
     // The boundary resultants need the mesh and the unknowns, which do not
     // exist yet when the scenario is made: they are built at the first
     // resultant asked for (resultant_force()).
@@ -203,11 +237,10 @@ namespace RingContact
                                         const SolutionState          &state,
                                         const ContactSurface &slave) const
     {
-      double minimum               = std::numeric_limits<double>::max(),
-             maximum               = -std::numeric_limits<double>::max();
-      double              integral = 0, length = 0;
-      const QGauss<1>     rule(slave.multiplier_basis().size() + 2);
-      std::vector<double> Phi;
+      double minimum           = std::numeric_limits<double>::max(),
+             maximum           = -std::numeric_limits<double>::max();
+      double          integral = 0, length = 0;
+      const QGauss<1> rule(slave.multiplier_basis().size() + 2);
       for (unsigned int s = 0; s < slave.segments().size(); ++s)
         {
           // A cyclic sector's rotated copies hold the originals' unknowns.
@@ -219,20 +252,16 @@ namespace RingContact
               minimum = std::min(minimum, state.reported_pressure(dof));
               maximum = std::max(maximum, state.reported_pressure(dof));
             }
-          for (unsigned int q = 0; q < rule.size(); ++q)
-            {
-              slave.multiplier_basis().evaluate(rule.point(q)[0], Phi);
-              double p = 0;
-              for (unsigned int k = 0; k < Phi.size(); ++k)
-                p +=
-                  Phi[k] * state.reported_pressure(segment.multiplier_dofs[k]);
-              const double dS =
-                slave.reference_point(s, rule.point(q)[0]).dx.norm() *
-                rule.weight(q);
-              integral += p * dS;
-              length += dS;
-            }
         }
+      along_slave_surface(slave,
+                          state,
+                          rule,
+                          [&](const double p,
+                              const Point<2> &,
+                              const double dS) {
+                            integral += p * dS;
+                            length += dS;
+                          });
       switch (check.quantity)
         {
           case ProblemQuantity::minimum_contact_pressure:
@@ -259,29 +288,19 @@ namespace RingContact
                                              problem.constants,
                                              check.name + "/Reference");
       reference->set_time(state.load_state().time);
-      double               error = 0, norm = 0;
-      const QIterated<1>   rule(QGauss<1>(slave.multiplier_basis().size() + 1),
+      double             error = 0, norm = 0;
+      const QIterated<1> rule(QGauss<1>(slave.multiplier_basis().size() + 1),
                               8);
-      std::vector<double> Phi;
-      for (unsigned int s = 0; s < slave.segments().size(); ++s)
-        {
-          const auto &segment = slave.segments()[s];
-          if (segment.is_copy)
-            continue;
-          for (unsigned int q = 0; q < rule.size(); ++q)
-            {
-              slave.multiplier_basis().evaluate(rule.point(q)[0], Phi);
-              double p = 0;
-              for (unsigned int k = 0; k < Phi.size(); ++k)
-                p +=
-                  Phi[k] * state.reported_pressure(segment.multiplier_dofs[k]);
-              const auto   X  = slave.reference_point(s, rule.point(q)[0]);
-              const double dS = X.dx.norm() * rule.weight(q);
-              const double p_ref = reference->value(X.x);
-              error += (p - p_ref) * (p - p_ref) * dS;
-              norm += p_ref * p_ref * dS;
-            }
-        }
+      along_slave_surface(slave,
+                          state,
+                          rule,
+                          [&](const double    p,
+                              const Point<2> &X,
+                              const double    dS) {
+                            const double p_ref = reference->value(X);
+                            error += (p - p_ref) * (p - p_ref) * dS;
+                            norm += p_ref * p_ref * dS;
+                          });
       return std::sqrt(error / norm);
     }
 
