@@ -39,6 +39,7 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/numerics/error_estimator.h>
+#include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/solution_transfer.h>
 
 #include <ring_contact/base/components.h>
@@ -50,6 +51,7 @@
 #include <cmath>
 #include <iomanip>
 #include <set>
+#include <tuple>
 
 namespace RingContact
 {
@@ -399,8 +401,7 @@ namespace RingContact
                                      solution,
                                      indicator,
                                      Components::displacement_mask());
-    if (parameters.refinement.estimator !=
-        RefinementEstimator::kelly_and_contact)
+    if (parameters.refinement.estimator == RefinementEstimator::kelly)
       return indicator;
 
     const auto          slave_ids = slave_boundaries(parameters);
@@ -421,6 +422,9 @@ namespace RingContact
       double       length, E;
     };
     std::map<unsigned int, std::vector<Slope>> slopes;
+    // The slave faces with their largest |multiplier|, for the weight of
+    // 'Contact weighted' below.
+    std::vector<std::tuple<Point<2>, double, double>> slave_faces;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
@@ -450,6 +454,12 @@ namespace RingContact
                     (residual * area / area.norm()) * area / area.norm();
                 sum += residual.norm_square() * fv.JxW(q);
               }
+            double largest = 0;
+            for (const double l : lambda)
+              largest = std::max(largest, std::abs(l));
+            slave_faces.emplace_back(cell->face(f)->center(),
+                                     cell->face(f)->measure(),
+                                     largest);
             const double E = material.youngs_modulus;
             indicator[cell->active_cell_index()] =
               std::sqrt(std::pow(indicator[cell->active_cell_index()], 2) +
@@ -484,6 +494,46 @@ namespace RingContact
                                             jump / (end.E * end.E));
             }
         }
+    // Contact weighted: the error that matters is the contact's. A cell's
+    // error reaches the contact pressure through the dual solution of a
+    // functional on the contact zone, whose second derivatives (which
+    // weigh the cell's residual) fall like 1 / r^2 away from a zone of
+    // length l: each indicator is weighed by (l / (l + d))^2, d the
+    // distance from the cell to the nearest active slave face. Hertz
+    // (a = R / 30, 11 cycles of 5 %): the pressure's L2 error 0.15 % with
+    // 25 000 unknowns, against 0.28 % unweighted (doc/validation.md).
+    // The faces in contact: a multiplier above 1e-8 of the largest (an open
+    // node's multiplier is zero up to the linear solver's round-off, which
+    // differs between one process and several).
+    double largest = 0;
+    for (const auto &face : slave_faces)
+      largest = std::max(largest, std::get<2>(face));
+    std::vector<Point<2>> active_points;
+    double                active_length = 0;
+    for (const auto &[center, length, multiplier] : slave_faces)
+      if (multiplier > 1e-8 * largest)
+        {
+          active_points.push_back(center);
+          active_length += length;
+        }
+    if (parameters.refinement.estimator ==
+          RefinementEstimator::contact_weighted &&
+        !active_points.empty())
+      {
+        const auto tree = pack_rtree(active_points);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            std::vector<Point<2>> nearest;
+            tree.query(boost::geometry::index::nearest(cell->center(), 1),
+                       std::back_inserter(nearest));
+            const double d =
+              std::max(0.0,
+                       nearest[0].distance(cell->center()) -
+                         cell->diameter() / 2);
+            indicator[cell->active_cell_index()] *=
+              Utilities::fixed_power<2>(active_length / (active_length + d));
+          }
+      }
     return indicator;
   }
 

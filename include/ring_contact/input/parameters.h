@@ -125,7 +125,10 @@ namespace RingContact
     kelly,
     /// Kelly's, plus on each slave face the residual of the contact:
     /// the body's traction against the multiplier's.
-    kelly_and_contact
+    kelly_and_contact,
+    /// Kelly's and the contact's, each cell's weighed by its distance from
+    /// the contact zone: (l / (l + d))^2, l the zone's length.
+    contact_weighted
   };
 
   /// Subsection Mesh refinement: the mesh refined where the error estimate
