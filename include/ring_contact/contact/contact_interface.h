@@ -128,6 +128,27 @@ namespace RingContact
       first_update_of_step = true;
     }
 
+    /// Whether update() moves the edges of the contact zones by the
+    /// extrapolation of their square-root profile (see
+    /// extrapolate_zone_edges()). The Newton loop allows it in the first
+    /// iterations of a step only, so that the last ones are plain
+    /// primal-dual active-set iterations.
+    void
+    allow_edge_extrapolation(const bool allow)
+    {
+      edge_extrapolation = allow;
+    }
+
+    /// Whether the contact rows are piecewise linear in the unknowns: small
+    /// strain (gaps linear in the displacement) and no friction. The Newton
+    /// iteration is then the primal-dual active-set method for a linear
+    /// complementarity problem, which needs no damping.
+    bool
+    piecewise_linear() const
+    {
+      return geometrically_linear && friction_coefficient == 0;
+    }
+
     /// The contact state of every node: closed or open, and with friction
     /// stick (0) or the sense of its slip (+-1).
     struct NodeStates
@@ -333,6 +354,13 @@ namespace RingContact
     std::vector<std::pair<double, unsigned int>>
     piece_cuts(const unsigned int s) const;
 
+    /// The primal-dual choice `closed`, with each contact zone's edges moved
+    /// to where the square-root profile of the pressure puts them (see the
+    /// definition). `indicator` is w_k lambda_k - c g~_k.
+    void
+    extrapolate_zone_edges(const std::vector<double> &indicator,
+                           std::vector<bool>         &closed) const;
+
     /// Friction: each point's old partner, the weighted slips s~_k and the
     /// nodes' stick/slip states. Returns the number of changed states.
     unsigned int
@@ -356,6 +384,11 @@ namespace RingContact
     double              segment_length; ///< smallest slave segment
     /// Set by start_step(), cleared by the update() that it concerns.
     bool first_update_of_step = false;
+    bool edge_extrapolation   = false;
+    /// The multiplier nodes' neighbours along the slave surface, and their
+    /// reference positions (the distances along the surface).
+    std::vector<std::vector<unsigned int>> node_neighbours;
+    std::vector<Point<2>>                  node_position;
 
     /// Friction: per node the tangential dof, s~_k and the state (0 stick,
     /// +1 or -1 the sign of the slip); the last converged solution and

@@ -351,6 +351,9 @@ namespace RingContact
     unsigned int
     n_changed_since(
       const std::vector<ContactInterface::NodeStates> &before) const;
+    unsigned int
+    n_closed_changed_since(
+      const std::vector<ContactInterface::NodeStates> &before) const;
     bool
     line_search(const Vector<double>  &newton_update,
                 const ResidualMeasure &before,
@@ -467,9 +470,9 @@ namespace RingContact
     /// How many times the mesh was refined adaptively (mesh_version()).
     unsigned int n_refinements = 0;
     /// The log has said that Mesh refinement/Maximum cells stops it.
-    bool said_maximum_cells = false;
-    std::vector<bool>         is_dirichlet;
-    std::vector<bool>         is_multiplier;
+    bool              said_maximum_cells = false;
+    std::vector<bool> is_dirichlet;
+    std::vector<bool> is_multiplier;
     /// The unknowns whose rows this process stores (all on one process).
     IndexSet locally_owned_dofs;
     /// The tangent, the right-hand side -R and their solver.
@@ -577,7 +580,10 @@ namespace RingContact
     /// The largest factorization's memory estimate said in the log.
     double largest_estimate_said = 0;
     /// The contact points keep their partners (pairing cycles).
-    bool           keep_partners = false;
+    bool keep_partners = false;
+    /// Whether this Newton iteration moves the contact zones' edges by
+    /// extrapolation (its first iterations, see newton.cc).
+    bool           extrapolating_edges = false;
     Vector<double> solution;
     Vector<double> previous_solution;
     double         previous_time, current_time;
