@@ -131,29 +131,29 @@ namespace RingContact
     // parameter, consecutive ones are neighbours (a vertex links the
     // segments that share it, a twin the sector's two ends).
     node_neighbours.assign(multiplier_dof_list.size(), {});
-    node_position.resize(multiplier_dof_list.size());
     std::vector<std::vector<std::pair<double, unsigned int>>> on_segment(
       slave.segments().size());
     for (const auto &[dof, sites] : node_sites)
+      for (const auto &[s, t] : sites)
+        on_segment[s].emplace_back(t, multiplier_index.at(dof));
+    for (unsigned int s = 0; s < on_segment.size(); ++s)
       {
-        const unsigned int k = multiplier_index.at(dof);
-        node_position[k] =
-          slave.reference_point(sites.front().first, sites.front().second).x;
-        for (const auto &[s, t] : sites)
-          on_segment[s].emplace_back(t, k);
-      }
-    for (auto &nodes : on_segment)
-      {
+        auto &nodes = on_segment[s];
         std::sort(nodes.begin(), nodes.end());
         for (unsigned int i = 1; i < nodes.size(); ++i)
           {
             const unsigned int a = nodes[i - 1].second, b = nodes[i].second;
+            const double       length =
+              slave.reference_point(s, nodes[i].first)
+                .x.distance(slave.reference_point(s, nodes[i - 1].first).x);
             for (const auto [from, to] :
                  {std::make_pair(a, b), std::make_pair(b, a)})
-              if (from != to && std::find(node_neighbours[from].begin(),
-                                          node_neighbours[from].end(),
-                                          to) == node_neighbours[from].end())
-                node_neighbours[from].push_back(to);
+              if (from != to && std::none_of(node_neighbours[from].begin(),
+                                             node_neighbours[from].end(),
+                                             [to = to](const auto &n) {
+                                               return n.first == to;
+                                             }))
+                node_neighbours[from].emplace_back(to, length);
           }
       }
   }
@@ -236,11 +236,12 @@ namespace RingContact
     // next update opens those that the solve puts in tension. One node: the
     // nodal scheme's gap at the touching point is zero itself, and the whole
     // load on that node alone inverted the elements around it (Hertz, d0 =
-    // 0, h = 0.005: a cut, 10 iterations instead of 3 to 5). Not when a zone
-    // is closed already: a contact zone that grows from step to step is then
-    // held, and the band would only close nodes that the load may not reach
-    // (with the load's extrapolation, Hertz in 8 steps took 20 iterations
-    // instead of 17).
+    // 0, h = 0.005: a cut, 10 iterations instead of 3 to 5); a step that
+    // starts from a one-node zone (an unloading) may so close a node or two
+    // for one iteration. Not when a zone is closed already: a contact zone that
+    // grows from step to step is then held, and the band would only close nodes
+    // that the load may not reach (with the load's extrapolation, Hertz in 8
+    // steps took 20 iterations instead of 17).
     if (first_update_of_step &&
         std::count(closed.begin(), closed.end(), true) <= 1)
       for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
@@ -281,38 +282,38 @@ namespace RingContact
   // shapes: the edge moves to twice the extent of the tension inside it, or
   // to 2/3 of the extent of the penetration outside it, each extent the
   // zero of w lambda - c g~ interpolated between the nodes. Only where the
-  // change spans several nodes (a single node in tension or penetrating is
-  // left to the plain rule, whose step is then as good), and only in the
-  // first iterations of a step (allow_edge_extrapolation()): a converged
-  // iterate is a fixed point of the plain rule, whose choice then moves no
-  // node, and so none moves here either.
+  // change spans several nodes (tension past the end node, three or more
+  // nodes penetrating; a smaller change is left to the plain rule, whose
+  // step is then as good), and only in the first iterations of a step
+  // (allow_edge_extrapolation()). The choice changes a node wherever the
+  // plain rule would: an iterate passes as converged only if the plain
+  // rule, too, moves no node.
   void
   ContactInterface::extrapolate_zone_edges(const std::vector<double> &indicator,
                                            std::vector<bool> &closed) const
   {
     const unsigned int n      = active.size();
     std::vector<bool>  result = closed;
-    // The walk from node `from` away from `previous`, while `keep` holds:
-    // the nodes and their distances along the surface from `from`.
+    // The walk from node `from` through its neighbour `first` and on, while
+    // `keep` holds: the nodes and their distances along the surface from
+    // `from`. It stops where the surface ends or branches.
     const auto walk = [&](const unsigned int from,
                           const unsigned int first,
+                          const double       first_length,
                           const auto        &keep) {
       std::vector<std::pair<unsigned int, double>> path;
       unsigned int previous = from, current = first;
-      double       distance = 0;
+      double       distance = first_length;
       while (path.size() < n && keep(current))
         {
-          distance += node_position[current].distance(node_position[previous]);
           path.emplace_back(current, distance);
-          unsigned int next = numbers::invalid_unsigned_int;
-          for (const unsigned int j : node_neighbours[current])
-            if (j != previous)
-              next = j;
-          if (next == numbers::invalid_unsigned_int ||
-              node_neighbours[current].size() != 2)
+          const auto &links = node_neighbours[current];
+          if (links.size() != 2)
             break;
-          previous = current;
-          current  = next;
+          const auto &next = links[0].first == previous ? links[1] : links[0];
+          previous         = current;
+          current          = next.first;
+          distance += next.second;
         }
       return path;
     };
@@ -329,21 +330,30 @@ namespace RingContact
         // zone that reaches the end of the surface has no edge there).
         if (!active[e] || node_neighbours[e].size() != 2)
           continue;
-        const unsigned int a = node_neighbours[e][0], b = node_neighbours[e][1];
+        const auto &[a, a_length] = node_neighbours[e][0];
+        const auto &[b, b_length] = node_neighbours[e][1];
         if (active[a] == active[b])
           continue;
-        const unsigned int inner = active[a] ? a : b, outer = active[a] ? b : a;
+        const auto inner =
+          active[a] ? std::make_pair(a, a_length) : std::make_pair(b, b_length);
+        const auto outer =
+          active[a] ? std::make_pair(b, b_length) : std::make_pair(a, a_length);
 
         // Too wide: the innermost node in tension within the zone's outer
-        // half, and the zero beyond it.
+        // half, past the end node, and the zero between it and the next
+        // node inwards, which must be pressed (else the zero is not
+        // bracketed, and the end is left to the plain rule). The plain rule
+        // opens the nodes in tension; this opens more, never fewer.
         auto zone =
-          walk(e, inner, [&](const unsigned int j) { return active[j]; });
+          walk(e, inner.first, inner.second, [&](const unsigned int j) {
+            return active[j];
+          });
         zone.insert(zone.begin(), {e, 0.0});
         int tension = -1;
         for (unsigned int i = 0; 2 * i + 1 < zone.size(); ++i)
           if (!closed[zone[i].first])
             tension = i;
-        if (tension >= 1)
+        if (tension >= 1 && indicator[zone[tension + 1].first] > 0)
           {
             const double edge =
               2 * zero_between(zone[tension], zone[tension + 1]);
@@ -353,9 +363,15 @@ namespace RingContact
           }
 
         // Too narrow: the open nodes beyond the edge that penetrate, up to
-        // the first that does not (or up to another zone: left alone).
+        // the first that does not (a walk that meets another zone first is
+        // left alone). The first of them closes whatever the extent: an
+        // iterate whose plain choice closes a node must not come out
+        // unchanged, or it could pass as converged with a node inside the
+        // master (its row w lambda = 0 does not see the gap).
         const auto beyond =
-          walk(e, outer, [&](const unsigned int j) { return !active[j]; });
+          walk(e, outer.first, outer.second, [&](const unsigned int j) {
+            return !active[j];
+          });
         unsigned int penetrating = 0;
         while (penetrating < beyond.size() && closed[beyond[penetrating].first])
           ++penetrating;
@@ -363,7 +379,7 @@ namespace RingContact
           {
             const double extent =
               zero_between(beyond[penetrating - 1], beyond[penetrating]);
-            for (unsigned int i = 0; i < penetrating; ++i)
+            for (unsigned int i = 1; i < penetrating; ++i)
               if (beyond[i].second > 2. / 3. * extent)
                 result[beyond[i].first] = false;
           }

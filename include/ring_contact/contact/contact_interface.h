@@ -385,10 +385,11 @@ namespace RingContact
     /// Set by start_step(), cleared by the update() that it concerns.
     bool first_update_of_step = false;
     bool edge_extrapolation   = false;
-    /// The multiplier nodes' neighbours along the slave surface, and their
-    /// reference positions (the distances along the surface).
-    std::vector<std::vector<unsigned int>> node_neighbours;
-    std::vector<Point<2>>                  node_position;
+    /// The multiplier nodes' neighbours along the slave surface, each with
+    /// the length of the link in the reference configuration (measured on
+    /// the segment that joins them: a twin's neighbour across the sector's
+    /// ends is a segment away, not a sector).
+    std::vector<std::vector<std::pair<unsigned int, double>>> node_neighbours;
 
     /// Friction: per node the tangential dof, s~_k and the state (0 stick,
     /// +1 or -1 the sign of the slip); the last converged solution and
