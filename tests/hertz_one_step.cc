@@ -1,17 +1,38 @@
 // The whole Hertz load (prm/hertz.prm: a cylinder on a block, a = R / 10) in
 // one step from bodies that touch, on a fine mesh (h = 0.005, 41 of 121
-// contact nodes closed at the end), with every scheme, without friction: the
-// contact zone grows from the touching point to its width within the step.
-// The plain primal-dual active-set method moved the zone's edge by a few
-// nodes per iteration (a line search of steps 1/16 to 1/2 while it grew,
-// then one or two nodes released per iteration); a steel cylinder on
-// aluminium so took 12 iterations at h = 0.005, 28 to 33 and a step cut at
-// h = 0.0025. With the edges extrapolated
+// contact nodes closed at the end), with every scheme: the contact zone
+// grows from the touching point to its width within the step.
+//
+// Without friction. The plain primal-dual active-set method moved the
+// zone's edge by a few nodes per iteration (a line search of steps 1/16 to
+// 1/2 while it grew, then one or two nodes released per iteration); a steel
+// cylinder on aluminium so took 12 iterations at h = 0.005, 28 to 33 and a
+// step cut at h = 0.0025. With the edges extrapolated
 // (ContactInterface::extrapolate_zone_edges()) and the whole update taken
 // while they move: 3 to 5 iterations here, no cut, from an exact touch (d0
 // = 0) and from the shipped overlap (d0 = 2e-4) alike; the test allows 6.
+//
+// With Coulomb friction, mu = 0.2 and 0.5, a steel cylinder (E = 2.1e11,
+// nu = 0.3) on an aluminium block (E = 7e10, nu = 0.33) from the exact
+// touch: the bodies' different Poisson ratios make the block's surface move
+// inwards against the cylinder's, so an outer part of the zone slides and
+// an inner part sticks (Goodman's problem), and Newton must find the zone's
+// width and its stick zone in the same step. Chosen together from the first
+// iteration, the stick and slip states flipped in waves over a zone that
+// grew by a node or two per damped iteration: with mu = 0.2, 69 iterations
+// and 4 cuts (nodal), and failure after 5 cuts for Gauss 2 and
+// segment-based 2 (a singular tangent, then no decrease); from the overlap
+// d0 = 2e-4: 11, 29 and a cut, 35 and a cut. Now the zone finds its width
+// with every closed node sticking (piecewise linear: its edges are
+// extrapolated), then the stick zones' edges are extrapolated the same way
+// (newton.cc, ContactInterface::update_friction()): 5 iterations here. The
+// issue asks for at most 10 and no cut, which the test asserts, with a
+// stick zone and sliding edges; bench/first-step runs h = 0.01 to 0.0025,
+// one step or the first of four (3 to 8).
+//
 // And the answer is Hertz's (the checks of prm/hertz.prm: p0 within 1.5 %,
-// a within 5 %, the reaction equal to the load).
+// a within 5 %, the reaction equal to the load; friction changes the
+// pressure little between these bodies).
 #include <ring_contact/config.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -20,54 +41,91 @@
 using namespace RingContact;
 using RingContactTests::check;
 
+namespace
+{
+  // prm/hertz.prm at h = 0.005 in one step with `entries` added: the step's
+  // iterations, cuts and closed (and sliding) nodes, and the file's checks.
+  void
+  one_step(const std::string &what,
+           const std::string &entries,
+           const unsigned int max_iterations,
+           const bool         friction)
+  {
+    auto &out = RingContactTests::deallog_file;
+    {
+      std::ofstream prm("one_step.prm");
+      prm << "include " RING_CONTACT_SOURCE_DIR "/prm/hertz.prm\n"
+          << "subsection Mesh\n set Mesh file = " RING_CONTACT_SOURCE_DIR
+             "/meshes/hertz.geo\nend\n"
+          << entries
+          << "subsection Load program\n set Number of steps = 1\nend\n"
+          << "subsection Newton\n set Verbose = false\nend\n"
+          << "subsection Output\n set VTU interval = 0\n"
+             " set Print timing = false\n set Write history = false\n"
+             "end\n";
+    }
+    Parameters parameters;
+    parameters.read("one_step.prm");
+    std::ostringstream log;
+    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    check(problem.run(), what + ": the step is solved");
+    const auto &row = problem.history().back();
+    out << what << ": " << row.newton_iterations << " Newton iterations, "
+        << row.step_cuts << " step cuts, " << row.active_nodes
+        << " nodes closed";
+    if (friction)
+      out << ", " << row.value("slipping_nodes") << " sliding";
+    out << std::endl;
+    check(row.newton_iterations <= max_iterations && row.step_cuts == 0,
+          what + ": at most " + std::to_string(max_iterations) +
+            " iterations, no cut");
+    // With friction, some of the zone slides, not all of it.
+    if (friction)
+      check(row.value("slipping_nodes") > 0 &&
+              row.value("slipping_nodes") < row.active_nodes,
+            what + ": a stick zone and sliding edges");
+    // The errors of p0 and a, the equilibrium's round-off only as a verdict
+    // (its digits are the machine's).
+    for (const auto &verdict : problem.verdicts())
+      {
+        out << "  " << verdict.quantity << ": ";
+        if (verdict.tolerance >= 1e-3)
+          out << "error " << std::setprecision(2) << std::scientific
+              << verdict.error << std::defaultfloat << std::setprecision(6)
+              << " (tolerance " << verdict.tolerance << ")" << std::endl;
+        else
+          out << (verdict.pass ? "within " : "beyond ") << verdict.tolerance
+              << std::endl;
+        check(verdict.pass, what + ": " + verdict.quantity);
+      }
+  }
+} // namespace
+
 int
 main()
 {
-  auto &out = RingContactTests::deallog_file;
   for (const std::string touch : {"d0 = 0", "d0 = 2e-4"})
     for (const std::string scheme : {"nodal", "Gauss 2", "segment-based 2"})
-      {
-        {
-          std::ofstream prm("one_step.prm");
-          prm << "include " RING_CONTACT_SOURCE_DIR "/prm/hertz.prm\n"
-              << "subsection Mesh\n set Mesh file = " RING_CONTACT_SOURCE_DIR
-                 "/meshes/hertz.geo\n set Geo parameters = h = 0.005, "
-              << touch << "\nend\n"
-              << "subsection Contact\n set Integration schemes = " << scheme
-              << "\nend\n"
-              << "subsection Load program\n set Number of steps = 1\nend\n"
-              << "subsection Newton\n set Verbose = false\nend\n"
-              << "subsection Output\n set VTU interval = 0\n"
-                 " set Print timing = false\n set Write history = false\n"
-                 "end\n";
-        }
-        Parameters parameters;
-        parameters.read("one_step.prm");
-        std::ostringstream log;
-        ContactProblem     problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
-        check(problem.run(), scheme + ", " + touch + ": the step is solved");
-        const auto &row = problem.history().back();
-        out << touch << ", " << scheme << ": " << row.newton_iterations
-            << " Newton iterations, " << row.step_cuts << " step cuts, "
-            << row.active_nodes << " nodes closed" << std::endl;
-        check(row.newton_iterations <= 6 && row.step_cuts == 0,
-              scheme + ", " + touch + ": at most 6 iterations, no cut");
-        // The errors of p0 and a, the equilibrium's round-off only as a
-        // verdict (its digits are the machine's).
-        for (const auto &verdict : problem.verdicts())
-          {
-            out << "  " << verdict.quantity << ": ";
-            if (verdict.tolerance >= 1e-3)
-              out << "error " << std::setprecision(2) << std::scientific
-                  << verdict.error << std::defaultfloat << std::setprecision(6)
-                  << " (tolerance " << verdict.tolerance << ")" << std::endl;
-            else
-              out << (verdict.pass ? "within " : "beyond ") << verdict.tolerance
-                  << std::endl;
-            check(verdict.pass,
-                  scheme + ", " + touch + ": " + verdict.quantity);
-          }
-      }
+      one_step(touch + ", " + scheme,
+               "subsection Mesh\n set Geo parameters = h = 0.005, " + touch +
+                 "\nend\nsubsection Contact\n set Integration schemes = " +
+                 scheme + "\nend\n",
+               6,
+               false);
+  for (const std::string mu : {"0.2", "0.5"})
+    for (const std::string scheme : {"nodal", "Gauss 2", "segment-based 2"})
+      one_step(
+        "steel on aluminium, d0 = 0, mu = " + mu + ", " + scheme,
+        "subsection Problem\n set Constants = R = 1, a0 = 0.1, E1 = 2.1e11, "
+        "nu1 = 0.3, E2 = 7e10, nu2 = 0.33, Es = 1 / ((1 - nu1^2) / E1 + "
+        "(1 - nu2^2) / E2), P = pi * a0^2 * Es / (4 * R), q = P / (2 * R)\n"
+        "end\n"
+        "subsection Mesh\n set Geo parameters = h = 0.005, d0 = 0\nend\n"
+        "subsection Body 1\n set Young's modulus = 2.1e11\nend\n"
+        "subsection Body 2\n set Young's modulus = 7e10\n"
+        " set Poisson's ratio = 0.33\nend\n"
+        "subsection Contact\n set Integration schemes = " +
+          scheme + "\n set Friction coefficient = " + mu + "\nend\n",
+        10,
+        true);
 }

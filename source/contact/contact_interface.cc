@@ -248,8 +248,11 @@ namespace RingContact
         if (solution(multiplier_dof_list[k]) >= 0 &&
             weighted_gap[k] <= 1e-2 * segment_length * reference_weight[k])
           closed[k] = true;
-    if (edge_extrapolation && !first_update_of_step)
-      extrapolate_zone_edges(indicator, closed);
+    if (edge_extrapolation && piecewise_linear() && !first_update_of_step)
+      extrapolate_zone_edges(active,
+                             std::vector<bool>(active.size(), true),
+                             indicator,
+                             closed);
     unsigned int n_changed = 0;
     for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
       {
@@ -288,11 +291,19 @@ namespace RingContact
   // (allow_edge_extrapolation()). The choice changes a node wherever the
   // plain rule would: an iterate passes as converged only if the plain
   // rule, too, moves no node.
+  //
+  // Written for any zone of nodes `inside` a set: the contact zones (closed
+  // nodes, indicator w lambda - c g~, walks over all nodes), and the stick
+  // zones within them (update_friction(): sticking nodes, indicator B - |T|,
+  // walks over the closed nodes only). "Closed" and "open" below read
+  // "inside" and "outside".
   void
-  ContactInterface::extrapolate_zone_edges(const std::vector<double> &indicator,
+  ContactInterface::extrapolate_zone_edges(const std::vector<bool>   &inside,
+                                           const std::vector<bool>   &linked,
+                                           const std::vector<double> &indicator,
                                            std::vector<bool> &closed) const
   {
-    const unsigned int n      = active.size();
+    const unsigned int n      = inside.size();
     std::vector<bool>  result = closed;
     // The walk from node `from` through its neighbour `first` and on, while
     // `keep` holds: the nodes and their distances along the surface from
@@ -304,7 +315,7 @@ namespace RingContact
       std::vector<std::pair<unsigned int, double>> path;
       unsigned int previous = from, current = first;
       double       distance = first_length;
-      while (path.size() < n && keep(current))
+      while (path.size() < n && linked[current] && keep(current))
         {
           path.emplace_back(current, distance);
           const auto &links = node_neighbours[current];
@@ -328,16 +339,16 @@ namespace RingContact
       {
         // An end of a zone: closed, one closed neighbour and one open one (a
         // zone that reaches the end of the surface has no edge there).
-        if (!active[e] || node_neighbours[e].size() != 2)
+        if (!inside[e] || node_neighbours[e].size() != 2)
           continue;
         const auto &[a, a_length] = node_neighbours[e][0];
         const auto &[b, b_length] = node_neighbours[e][1];
-        if (active[a] == active[b])
+        if (inside[a] == inside[b])
           continue;
         const auto inner =
-          active[a] ? std::make_pair(a, a_length) : std::make_pair(b, b_length);
+          inside[a] ? std::make_pair(a, a_length) : std::make_pair(b, b_length);
         const auto outer =
-          active[a] ? std::make_pair(b, b_length) : std::make_pair(a, a_length);
+          inside[a] ? std::make_pair(b, b_length) : std::make_pair(a, a_length);
 
         // Too wide: the innermost node in tension within the zone's outer
         // half, past the end node, and the zero between it and the next
@@ -346,7 +357,7 @@ namespace RingContact
         // opens the nodes in tension; this opens more, never fewer.
         auto zone =
           walk(e, inner.first, inner.second, [&](const unsigned int j) {
-            return active[j];
+            return inside[j];
           });
         zone.insert(zone.begin(), {e, 0.0});
         int tension = -1;
@@ -370,7 +381,7 @@ namespace RingContact
         // master (its row w lambda = 0 does not see the gap).
         const auto beyond =
           walk(e, outer.first, outer.second, [&](const unsigned int j) {
-            return !active[j];
+            return !inside[j];
           });
         unsigned int penetrating = 0;
         while (penetrating < beyond.size() && closed[beyond[penetrating].first])
@@ -458,9 +469,11 @@ namespace RingContact
     compute_weighted_slips(solution);
 
     // The states of the closed nodes from the trial tractions.
-    const double c         = complementarity_constant;
-    unsigned int n_changed = 0;
-    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+    const double        c = complementarity_constant;
+    const unsigned int  n = multiplier_dof_list.size();
+    std::vector<int>    state(n, 0);
+    std::vector<double> trial(n, 0.0), room(n, 0.0);
+    for (unsigned int k = 0; k < n; ++k)
       {
         // T_k is the tangential traction the node would carry if it stuck (the
         // trial state of a return map), B_k the Coulomb bound, mu times the
@@ -468,29 +481,60 @@ namespace RingContact
         // B_k, else slide in the direction of T_k: the active-set choice of
         // Alart and Curnier's projection, proj_[-B, B](T), evaluated at the
         // iterate.
-        int state = 0;
-        if (active[k])
+        if (active[k] && !stick_held)
           {
             const double w = reference_weight[k];
-            const double trial =
+            trial[k] =
               w * solution(tangential_dof_list[k]) + c * weighted_slip[k];
             const double bound = friction_coefficient *
                                  std::max(0.0,
                                           w * solution(multiplier_dof_list[k]) -
                                             c * weighted_gap[k]);
+            room[k] = bound - std::abs(trial[k]);
             // A sliding node at the bound stays sliding: at the start of
             // a step (s~ = 0) a node that slid has |T| = B to round-off,
             // and round-off must not decide its state (under MPI it took
             // another Newton iteration than one process).
             const double margin = 1e-9 * bound;
-            if (slip_sign[k] != 0 && slip_sign[k] * trial >= bound - margin)
-              state = slip_sign[k];
-            else if (std::abs(trial) > bound + margin)
-              state = trial > 0 ? 1 : -1;
+            if (slip_sign[k] != 0 && slip_sign[k] * trial[k] >= bound - margin)
+              state[k] = slip_sign[k];
+            else if (std::abs(trial[k]) > bound + margin)
+              state[k] = trial[k] > 0 ? 1 : -1;
           }
-        if (state != slip_sign[k])
+      }
+    // The edges of the stick zones move as the contact zones' do: within a
+    // stick zone the room B - |T| to the bound has the square-root profile
+    // of a pressure near its edge, and beyond it, in the slip zone, -c |s~|
+    // the profile of a gap (Cattaneo and Mindlin's traction is the
+    // difference of two Hertz profiles, mu (p(a) - p(c))). A stick zone
+    // that grows or shrinks by one or two nodes per iteration is moved to
+    // its extrapolated edge (extrapolate_zone_edges(), over the closed
+    // nodes), in the same first iterations of a step.
+    if (edge_extrapolation && !stick_held)
+      {
+        std::vector<bool> sticking(n), stick(n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            sticking[k] = active[k] && slip_sign[k] == 0;
+            stick[k]    = active[k] && state[k] == 0;
+          }
+        const std::vector<bool> plain = stick;
+        extrapolate_zone_edges(sticking, active, room, stick);
+        for (unsigned int k = 0; k < n; ++k)
+          if (stick[k] != plain[k])
+            // Left sliding, a node keeps its sense; a stick node beyond
+            // the extrapolated edge slides in the sense of its trial.
+            state[k] = stick[k]          ? 0 :
+                       slip_sign[k] != 0 ? slip_sign[k] :
+                       trial[k] >= 0     ? 1 :
+                                           -1;
+      }
+    unsigned int n_changed = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        if (state[k] != slip_sign[k])
           ++n_changed;
-        slip_sign[k] = state;
+        slip_sign[k] = state[k];
       }
     return n_changed;
   }

@@ -578,8 +578,12 @@ namespace RingContact
     // postprocessing, a refined mesh) chooses by the plain rule.
     const auto plain_rule_after = [this](ContactProblem *) {
       extrapolating_edges = false;
+      holding_stick       = false;
       for (const auto &contact : contacts)
-        contact->allow_edge_extrapolation(false);
+        {
+          contact->allow_edge_extrapolation(false);
+          contact->hold_stick(false);
+        }
     };
     const std::unique_ptr<ContactProblem, decltype(plain_rule_after)>
       restore_plain_rule(this, plain_rule_after);
@@ -592,7 +596,24 @@ namespace RingContact
     // No lifting update (false) when the predictor hit the target already.
     lifting = make_lifting_constraints();
     for (const auto &contact : contacts)
-      contact->start_step();
+      contact->start_step(solution);
+    // With friction, a contact zone that grows from a point (the first step
+    // of a press) first finds its width with every closed node sticking:
+    // the contact is then a linear tie with a moving edge, whose edges the
+    // extrapolation finds in a few iterations (small strain). The stick and
+    // slip states are chosen once the zone no longer moves. Chosen together
+    // from the first iteration, the states flipped in waves over a zone that
+    // grew by a node or two per damped iteration: steel on aluminium, mu =
+    // 0.2, h = 0.005, 29 iterations and a cut with Gauss 2.
+    holding_stick =
+      std::any_of(contacts.begin(),
+                  contacts.end(),
+                  [](const auto &c) { return c->has_friction(); }) &&
+      std::all_of(contacts.begin(), contacts.end(), [](const auto &c) {
+        return c->small_strain() && c->zone_grows_from_point();
+      });
+    for (const auto &contact : contacts)
+      contact->hold_stick(holding_stick);
     unsigned int n_changed = assemble_newton_system();
     // The update that led to the current iterate: none yet, or whether it
     // imposed the boundary increment and the residual it started from.
@@ -604,6 +625,25 @@ namespace RingContact
           {
             final_residual = std::numeric_limits<double>::infinity();
             return false;
+          }
+        // The zone has found its width, to a node (or the iterations for
+        // finding it are over): the stick and slip states from here on,
+        // chosen at this iterate, which is assembled again with them. Before
+        // the test of convergence: an iterate converged under held stick is
+        // not one under friction. To a node: with segment-based 2 an edge
+        // node can open and close in turn under whole updates (steel on
+        // aluminium, the first of four steps, h = 0.0025: 41, 40, 41, 40
+        // closed), and waiting for no change held the stick to the 8th
+        // iteration (12 iterations in all). And at the latest halfway
+        // through Newton/Maximum iterations, whatever it is set to.
+        if (holding_stick && !lifting && it > 0 &&
+            (last_closed_changes <= 1 || it >= extrapolate_edges_until ||
+             2 * it >= newton.max_iterations))
+          {
+            holding_stick = false;
+            for (const auto &contact : contacts)
+              contact->hold_stick(false);
+            n_changed += assemble_newton_system(accepted_pairing());
           }
         ResidualMeasure measure = residual_measure();
         // An iterate assembled without its tangent: the tangent now, at the
@@ -618,8 +658,8 @@ namespace RingContact
           }
         // The iterate before the lifting update is the last load state's
         // equilibrium, its boundary not yet moved: never converged.
-        const bool converged =
-          !lifting && n_changed == 0 && measure.converged(newton.tolerance);
+        const bool converged = !lifting && !holding_stick && n_changed == 0 &&
+                               measure.converged(newton.tolerance);
         // One number for the step's report and for the rate of the update
         // that led here: the worse of the two groups.
         final_residual = std::max(measure.force, measure.gap);
@@ -658,23 +698,32 @@ namespace RingContact
         if (it + 1 == hold_pairing_after)
           keep_partners = true;
         // The zones' edges extrapolated in the iterates of the first
-        // iterations (see ContactInterface::extrapolate_zone_edges()), where
-        // every contact is piecewise linear: small strain, no friction.
-        // Measured beyond: shallow ironing (finite strain, friction 0.3,
-        // 40 steps) went from 181 iterations to 365 and 4 cuts, the zone
-        // moving by a node or two a step on a sliding, turning surface; a
-        // steel cylinder on aluminium from touching, whole load in one step,
-        // friction 0.5 at h = 0.0025 went from 54-73 iterations and 2 cuts
-        // to 10-11, but friction 0.2 from 32-44 and a cut to 56 and 2 cuts
-        // (Gauss 2, segment-based 2): the stick and slip states, not the
-        // edges, are then what the iteration spends on.
-        extrapolating_edges =
+        // iterations (see ContactInterface::extrapolate_zone_edges()), at
+        // small strain: the contact zones' while the contact is piecewise
+        // linear (no friction, or every closed node held in stick), and the
+        // stick zones' once the stick and slip states are free. Where the
+        // contact is piecewise linear, updates that open or close nodes are
+        // also taken whole (line_search()). Not at finite strain: shallow
+        // ironing (friction 0.3, 40 steps) went from 181 iterations to 365
+        // and 4 cuts, its zone moving by a node or two a step on a sliding,
+        // turning surface.
+        const bool move_edges =
           it < extrapolate_edges_until &&
+          std::all_of(contacts.begin(), contacts.end(), [](const auto &c) {
+            return c->small_strain();
+          });
+        extrapolating_edges =
+          move_edges &&
           std::all_of(contacts.begin(), contacts.end(), [](const auto &c) {
             return c->piecewise_linear();
           });
+        // Per pair: the contact zones' edges only where every pair is
+        // piecewise linear (their updates are then taken whole), the stick
+        // zones' wherever the states are free.
         for (const auto &contact : contacts)
-          contact->allow_edge_extrapolation(extrapolating_edges);
+          contact->allow_edge_extrapolation(
+            extrapolating_edges ||
+            (move_edges && !contact->piecewise_linear()));
 
         if (!solve_linear_system(newton_update))
           {
@@ -752,12 +801,14 @@ namespace RingContact
     // The solve leaves the boundary at its target up to round-off; the
     // homogeneous updates after it would keep that error for the whole
     // step, so the imposed values are written again, exactly.
+    const auto states_before = contact_states();
     if (lifting)
       {
         solution += newton_update;
         set_boundary_target(); // exactly, not up to round-off
-        lifting   = false;
-        n_changed = assemble_newton_system(accepted_pairing(), next);
+        lifting             = false;
+        n_changed           = assemble_newton_system(accepted_pairing(), next);
+        last_closed_changes = n_closed_changed_since(states_before);
         return true;
       }
     // The changes are counted from here: each trial of the line search is
@@ -765,10 +816,10 @@ namespace RingContact
     // "changed 0" while the active set grew by three nodes per iteration
     // (and an iterate could pass as converged with a set it was not solved
     // with).
-    const auto states_before = contact_states();
     double     step_length   = 1;
     const auto count_changes = [&]() {
-      n_changed = n_changed_since(states_before);
+      n_changed           = n_changed_since(states_before);
+      last_closed_changes = n_closed_changed_since(states_before);
     };
     // No decrease along the update: with a free pairing the residual may
     // jump between pairings at every trial, so the pairing is held and the

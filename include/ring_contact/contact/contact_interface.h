@@ -44,6 +44,7 @@
 #include <ring_contact/contact/cyclic_symmetry.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -123,9 +124,45 @@ namespace RingContact
     /// The next update() chooses the first active set of a load step (or of
     /// a retry after a cut): nodes that touch close as well (see update()).
     void
-    start_step()
+    start_step(const Vector<double> &solution)
     {
       first_update_of_step = true;
+      pressed_at_step_start =
+        std::any_of(multiplier_dof_list.begin(),
+                    multiplier_dof_list.end(),
+                    [&](const auto dof) { return solution(dof) > 0; });
+    }
+
+    /// Whether the step began with no pressure on the pair: a contact zone
+    /// that grows from nothing, a point or an initial overlap (see
+    /// hold_stick()).
+    bool
+    zone_grows_from_point() const
+    {
+      return !pressed_at_step_start;
+    }
+
+    /// Friction: whether every closed node sticks, whatever its trial
+    /// traction (update_friction()). The Newton loop holds the stick while a
+    /// zone that grows from a point finds its width, so that the contact is
+    /// piecewise linear meanwhile and its edges can be extrapolated.
+    void
+    hold_stick(const bool hold)
+    {
+      stick_held = hold;
+    }
+
+    /// Small strain: gaps linear in the displacement.
+    bool
+    small_strain() const
+    {
+      return geometrically_linear;
+    }
+
+    bool
+    has_friction() const
+    {
+      return friction_coefficient > 0;
     }
 
     /// Whether update() moves the edges of the contact zones by the
@@ -140,13 +177,14 @@ namespace RingContact
     }
 
     /// Whether the contact rows are piecewise linear in the unknowns: small
-    /// strain (gaps linear in the displacement) and no friction. The Newton
+    /// strain (gaps linear in the displacement) and no friction, or friction
+    /// with every closed node held in stick (a linear tie). The Newton
     /// iteration is then the primal-dual active-set method for a linear
     /// complementarity problem, which needs no damping.
     bool
     piecewise_linear() const
     {
-      return geometrically_linear && friction_coefficient == 0;
+      return geometrically_linear && (friction_coefficient == 0 || stick_held);
     }
 
     /// The contact state of every node: closed or open, and with friction
@@ -354,11 +392,16 @@ namespace RingContact
     std::vector<std::pair<double, unsigned int>>
     piece_cuts(const unsigned int s) const;
 
-    /// The primal-dual choice `closed`, with each contact zone's edges moved
-    /// to where the square-root profile of the pressure puts them (see the
-    /// definition). `indicator` is w_k lambda_k - c g~_k.
+    /// The primal-dual choice `closed`, with the edges of each zone of
+    /// nodes `inside` (the current choice) moved to where the square-root
+    /// profile of the indicator puts them (see the definition); the walks
+    /// along the surface go through `linked` nodes only. For the contact
+    /// zones the indicator is w_k lambda_k - c g~_k; for the stick zones the
+    /// room B_k - |T_k| to the Coulomb bound.
     void
-    extrapolate_zone_edges(const std::vector<double> &indicator,
+    extrapolate_zone_edges(const std::vector<bool>   &inside,
+                           const std::vector<bool>   &linked,
+                           const std::vector<double> &indicator,
                            std::vector<bool>         &closed) const;
 
     /// Friction: each point's old partner, the weighted slips s~_k and the
@@ -385,6 +428,9 @@ namespace RingContact
     /// Set by start_step(), cleared by the update() that it concerns.
     bool first_update_of_step = false;
     bool edge_extrapolation   = false;
+    bool stick_held           = false;
+    /// Whether a node carried pressure when the step began (start_step()).
+    bool pressed_at_step_start = false;
     /// The multiplier nodes' neighbours along the slave surface, each with
     /// the length of the link in the reference configuration (measured on
     /// the segment that joins them: a twin's neighbour across the sector's

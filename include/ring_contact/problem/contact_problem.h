@@ -583,7 +583,12 @@ namespace RingContact
     bool keep_partners = false;
     /// Whether this Newton iteration moves the contact zones' edges by
     /// extrapolation (its first iterations, see newton.cc).
-    bool           extrapolating_edges = false;
+    bool extrapolating_edges = false;
+    /// Whether the closed nodes are held in stick (a zone that grows from a
+    /// point with friction, see newton.cc), and the nodes that opened or
+    /// closed in the last update taken.
+    bool           holding_stick       = false;
+    unsigned int   last_closed_changes = 0;
     Vector<double> solution;
     Vector<double> previous_solution;
     double         previous_time, current_time;
