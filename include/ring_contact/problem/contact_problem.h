@@ -360,6 +360,10 @@ namespace RingContact
                 const Assembly         assembly,
                 unsigned int          &n_changed,
                 double                &step_length);
+    /// Whether the predicted state has the imposed displacements near their
+    /// target (a program with a kink is not extrapolated across it).
+    bool
+    predictor_meets_boundary(const Vector<double> &converged) const;
     /// The predictor of a load step: the factor of the last increment to
     /// extrapolate (0: none).
     double
