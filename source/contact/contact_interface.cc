@@ -59,6 +59,7 @@ namespace RingContact
                                    largest_youngs_modulus /
                                      slave.min_segment_length())
       , friction_coefficient(parameters.friction_coefficient)
+      , small_strain_model(geometrically_linear)
       , geometrically_linear(geometrically_linear)
       , segment_based(scheme.type == ContactIntegration::segment_based)
   {

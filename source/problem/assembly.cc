@@ -483,8 +483,8 @@ namespace RingContact
               // Each body's kinematics: a body in finite (or logarithmic)
               // strain carries the pressure on its current surface.
               const bool follower =
-                bodies[body_of_fe_index[cell->active_fe_index()]]
-                  .material.kinematics != Kinematics::small_strain;
+                materials.at(cell->material_id()).kinematics !=
+                Kinematics::small_strain;
               dofs.resize(n);
               cell->get_dof_indices(dofs);
               face_matrix.reinit(n, n);

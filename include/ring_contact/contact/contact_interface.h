@@ -159,6 +159,16 @@ namespace RingContact
       return geometrically_linear;
     }
 
+    /// A pair of bodies in finite strain measured as in small strain
+    /// (reference pairing, normal and length, gaps linear in the
+    /// displacement) while the Newton loop solves a step's problem
+    /// linearised at the undeformed state (ContactProblem::linearise()).
+    void
+    linearise(const bool on)
+    {
+      geometrically_linear = small_strain_model || on;
+    }
+
     bool
     has_friction() const
     {
@@ -370,8 +380,11 @@ namespace RingContact
     /// Coulomb's coefficient (0: frictionless).
     const double friction_coefficient;
     /// Small strain: contact geometry (pairing, normal, length) of the
-    /// reference configuration, gap linear in the displacement.
-    const bool geometrically_linear;
+    /// reference configuration, gap linear in the displacement. The
+    /// model's, and the one used now (also while a finite-strain step is
+    /// solved linearised, see linearise()).
+    const bool small_strain_model;
+    bool       geometrically_linear;
 
     /// Fixed rules: every slave quadrature point paired with its closest
     /// master point. Segment-based: each slave segment cut into pieces with

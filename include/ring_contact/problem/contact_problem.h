@@ -324,6 +324,16 @@ namespace RingContact
     /// pairing is held, the held partners stopped at their segments' ends.
     ContactInterface::Pairing
     accepted_pairing() const;
+    /// Whether a step starts from the undeformed state, finite strain,
+    /// frictionless, with every contact zone to be found: its problem
+    /// linearised there is the small-strain one, solved first (newton.cc,
+    /// "A press from rest in finite strain").
+    bool
+    starts_from_rest_in_finite_strain() const;
+    /// Solve with the small-strain laws and contact geometry (on), or with
+    /// the model's own (off).
+    void
+    linearise(const bool on);
     /// A signal asked the run to stop (on any process).
     bool
     stop_requested() const;
@@ -591,12 +601,16 @@ namespace RingContact
     /// Whether the closed nodes are held in stick (a zone that grows from a
     /// point with friction, see newton.cc), and the nodes that opened or
     /// closed in the last update taken.
-    bool           holding_stick       = false;
-    unsigned int   last_closed_changes = 0;
-    Vector<double> solution;
-    Vector<double> previous_solution;
-    double         previous_time, current_time;
-    LoadState      current_load;
+    bool         holding_stick       = false;
+    unsigned int last_closed_changes = 0;
+    /// Whether the step is being solved linearised (linearise()), and the
+    /// model's own materials meanwhile.
+    bool                             linearised = false;
+    std::map<unsigned int, Material> model_materials;
+    Vector<double>                   solution;
+    Vector<double>                   previous_solution;
+    double                           previous_time, current_time;
+    LoadState                        current_load;
 
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
