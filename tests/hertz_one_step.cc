@@ -42,12 +42,13 @@
 // "A press from rest in finite strain"), then in finite strain from there:
 // at most 10 iterations and no cut, asserted. Finite strain has no closed
 // form here (p0 moves by about 1 % from Hertz's), so the answer is checked
-// against the same problem in 8 steps, a path that never linearises: the
-// closed nodes within one, the largest pressure within 1e-4 (the linearised
-// step's is 1 % off). Within one: the discrete problem has two solutions
-// there, the zone's edge node closed with a small pressure or open, both
-// fixed points of the plain rule (Saint Venant-Kirchhoff, Gauss 2: 42 nodes
-// and p_max 2.865634e9 in one step, 41 and 2.865444e9 in 8 steps).
+// against the same problem in 8 steps, whose last seven start pressed (only
+// the first, an eighth of the load, is linearised): the
+// same closed nodes and the largest pressure within 1e-6 (the linearised
+// step's is 1 % off). Paired afresh once the model's laws take over: with
+// the partners of the linearised iterations kept, Gauss 2 converged to a
+// state with the edge node closed (42 nodes and p_max 2.865634e9, against
+// 41 and 2.865444e9).
 #include <ring_contact/config.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -128,14 +129,13 @@ namespace
     out << what << ": " << row.newton_iterations << " Newton iterations, "
         << row.step_cuts << " step cuts, " << row.active_nodes
         << " nodes closed (in 8 steps " << last.active_nodes
-        << "), largest pressure " << (difference < 1e-4 ? "within" : "beyond")
-        << " 1e-4 of the 8 steps'" << std::endl;
+        << "), largest pressure " << (difference < 1e-6 ? "within" : "beyond")
+        << " 1e-6 of the 8 steps'" << std::endl;
     check(row.newton_iterations <= 10 && row.step_cuts == 0,
           what + ": at most 10 iterations, no cut");
-    check(std::abs(static_cast<int>(row.active_nodes) -
-                   static_cast<int>(last.active_nodes)) <= 1,
-          what + ": the closed nodes of the 8 steps, to one");
-    check(difference < 1e-4, what + ": the largest pressure of the 8 steps");
+    check(row.active_nodes == last.active_nodes,
+          what + ": the closed nodes of the 8 steps");
+    check(difference < 1e-6, what + ": the largest pressure of the 8 steps");
   }
 
   // prm/hertz.prm at h = 0.005 in one step with `entries` added: the step's

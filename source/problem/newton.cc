@@ -721,6 +721,7 @@ namespace RingContact
     for (const auto &contact : contacts)
       contact->start_step(solution);
     linearise(starts_from_rest_in_finite_strain());
+    unsigned int hold_pairing_at = hold_pairing_after;
     // With friction, a contact zone that grows from a point (the first step
     // of a press) first finds its width with every closed node sticking:
     // the contact is then a linear tie with a moving edge, whose edges the
@@ -793,10 +794,18 @@ namespace RingContact
             if (newton.verbose)
               log << "    the linearised step has converged: the model's "
                      "laws from here\n";
+            // Paired afresh in the current configuration (the partners
+            // held in the linearised iterations are the reference
+            // configuration's), and held again only after as many
+            // iterations as at the start. Not converged with an inverted
+            // element: the law was not evaluated there.
             linearise(false);
-            n_changed = assemble_newton_system(accepted_pairing());
-            measure   = residual_measure();
-            converged = n_changed == 0 && measure.converged(newton.tolerance);
+            keep_partners   = false;
+            hold_pairing_at = it + hold_pairing_after;
+            n_changed       = assemble_newton_system();
+            measure         = residual_measure();
+            converged       = n_changed == 0 && n_inverted == 0 &&
+                        measure.converged(newton.tolerance);
           }
         // One number for the step's report and for the rate of the update
         // that led here: the worse of the two groups.
@@ -833,7 +842,7 @@ namespace RingContact
         // keeps its partner (on the segment's extension if need be): the
         // residual is smooth, and the step converges to the state with that
         // pairing. The next step pairs afresh.
-        if (it + 1 == hold_pairing_after)
+        if (it + 1 == hold_pairing_at)
           keep_partners = true;
         // The zones' edges extrapolated in the iterates of the first
         // iterations (see ContactInterface::extrapolate_zone_edges()), at
