@@ -695,12 +695,16 @@ namespace RingContact
     // Every load step pairs afresh; the pairing is held only within the
     // step whose Newton iteration cycled.
     keep_partners = false;
+    visited_states.clear();
+    stalled_on_kink = false;
     // The edges' extrapolation belongs to this solve's first iterations:
     // every update after it (a state restored after a failure, the
     // postprocessing, a refined mesh) chooses by the plain rule.
     const auto plain_rule_after = [this](ContactProblem *) {
-      extrapolating_edges = false;
-      holding_stick       = false;
+      extrapolating_edges        = false;
+      taking_state_changes_whole = false;
+      stalled_on_kink            = false;
+      holding_stick              = false;
       for (const auto &contact : contacts)
         {
           contact->allow_edge_extrapolation(false);
@@ -739,7 +743,8 @@ namespace RingContact
       });
     for (const auto &contact : contacts)
       contact->hold_stick(holding_stick);
-    unsigned int n_changed = assemble_newton_system();
+    const bool   zone_grows_with_friction = holding_stick;
+    unsigned int n_changed                = assemble_newton_system();
     // The update that led to the current iterate: none yet, or whether it
     // imposed the boundary increment and the residual it started from.
     bool   updated = false, update_lifted = false;
@@ -871,6 +876,22 @@ namespace RingContact
           contact->allow_edge_extrapolation(
             extrapolating_edges ||
             (move_edges && !contact->piecewise_linear()));
+        // With the stick and slip states free, the contact at small strain
+        // is piecewise linear still: linear once the closed nodes and their
+        // states are chosen, and an update that changes a state is the
+        // primal-dual active-set step. In a zone that grows from a point,
+        // whose states start from the held stick, such updates are taken
+        // whole in the same first iterations (line_search()). Damped, they
+        // stalled: steel on aluminium, mu = 0.2, h = 0.01, the first of four
+        // steps from touching, Gauss 2, where a sticking node beside the
+        // zone's centre slides at the whole update and sticks again at any
+        // fraction of it; the line search took 1/16, 1/32, 1/64 of it and
+        // gave up (33 iterations and 2 cuts; now 9). Not in the steps after
+        // it, which start from their own last states: there whole updates
+        // wandered through sets of 14 to 21 closed nodes (mu = 0.5, the
+        // fourth step: 7 iterations -> 30 and a cut).
+        taking_state_changes_whole =
+          zone_grows_with_friction && move_edges && !extrapolating_edges;
 
         if (!solve_linear_system(newton_update))
           {
@@ -986,6 +1007,13 @@ namespace RingContact
       }
     if (parameters.newton.verbose && step_length < 1)
       log << "      line search: step length " << step_length << '\n';
+    // A damped update with friction at small strain that changed no state
+    // (see line_search()).
+    stalled_on_kink =
+      step_length < 1 && n_changed_since(states_before) == 0 &&
+      std::all_of(contacts.begin(), contacts.end(), [](const auto &c) {
+        return c->small_strain() && c->has_friction();
+      });
     // The trials followed held partners onto their extensions.
     if (keep_partners)
       assemble_newton_system(accepted_pairing(), next);
@@ -1000,6 +1028,19 @@ namespace RingContact
     for (const auto &contact : contacts)
       states.push_back(contact->node_states());
     return states;
+  }
+
+  std::vector<int>
+  ContactProblem::state_key() const
+  {
+    std::vector<int> key;
+    for (const auto &contact : contacts)
+      {
+        const auto states = contact->node_states();
+        for (unsigned int k = 0; k < states.active.size(); ++k)
+          key.push_back(states.active[k] ? 2 + states.slip_sign[k] : 0);
+      }
+    return key;
   }
 
   // The nodes that opened or closed (friction's states aside).
@@ -1049,6 +1090,7 @@ namespace RingContact
     constexpr double       armijo        = 1e-4;
     const Vector<double>   start         = solution;
     const auto             states_before = contact_states();
+    visited_states.insert(state_key());
     // Each trial is paired and assembled as an iterate would be (the
     // active set is chosen anew): the merit must be that of the state the
     // loop would continue from. A held pairing follows the segments'
@@ -1073,6 +1115,19 @@ namespace RingContact
         // set, friction's stick and slip, faceted masters.
         if (halving == 0 && extrapolating_edges && n_inverted == 0 &&
             n_closed_changed_since(states_before) > 0)
+          return true;
+        // Likewise an update that changes friction's states, in those first
+        // iterations of a growing zone, or in any step right after a damped
+        // update that changed no state (a stall on the kink between stick
+        // and slip: the fraction taken keeps the states, and the next
+        // update aims at the same state again; the residual halved at each
+        // iteration, 8e-8, 4e-8, 2e-8, ...). Never back to states this
+        // step has met: the method can cycle (with every such update whole,
+        // the second step of the problem above alternated between two sets
+        // of 14 and 15 closed nodes).
+        if (halving == 0 && (taking_state_changes_whole || stalled_on_kink) &&
+            n_inverted == 0 && n_changed_since(states_before) > 0 &&
+            visited_states.insert(state_key()).second)
           return true;
         // A trial with an inverted element is never accepted, whatever its
         // merit: the stress there was not evaluated.

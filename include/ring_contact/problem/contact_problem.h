@@ -358,6 +358,10 @@ namespace RingContact
     /// it came from, not against the last line-search trial.
     std::vector<ContactInterface::NodeStates>
     contact_states() const;
+    /// The states of every contact node of every pair as one key: 0 open;
+    /// 1, 2, 3 closed and sliding backwards, sticking, sliding forwards.
+    std::vector<int>
+    state_key() const;
     unsigned int
     n_changed_since(
       const std::vector<ContactInterface::NodeStates> &before) const;
@@ -598,6 +602,13 @@ namespace RingContact
     /// Whether this Newton iteration moves the contact zones' edges by
     /// extrapolation (its first iterations, see newton.cc).
     bool extrapolating_edges = false;
+    /// Whether an update that changes friction's stick and slip states is
+    /// taken whole: in the first iterations of a zone that grows from a
+    /// point, or after a damped update that changed no state (see
+    /// newton.cc). Never to states this step's iterates have met.
+    bool                       taking_state_changes_whole = false;
+    bool                       stalled_on_kink            = false;
+    std::set<std::vector<int>> visited_states;
     /// Whether the closed nodes are held in stick (a zone that grows from a
     /// point with friction, see newton.cc), and the nodes that opened or
     /// closed in the last update taken.
