@@ -602,10 +602,12 @@ namespace RingContact
     /// Whether this Newton iteration moves the contact zones' edges by
     /// extrapolation (its first iterations, see newton.cc).
     bool extrapolating_edges = false;
-    /// Whether an update that changes friction's stick and slip states is
-    /// taken whole: in the first iterations of a zone that grows from a
-    /// point, or after a damped update that changed no state (see
-    /// newton.cc). Never to states this step's iterates have met.
+    /// Whether an update that changes the contact states is taken whole
+    /// (the first iterations of a frictional zone that grows from a point,
+    /// see newton.cc); whether the last update was damped and changed no
+    /// state (friction at small strain: the next update is taken whole if
+    /// it changes friction's states only); and the states this step's
+    /// iterates have met, to which no whole update goes back.
     bool                       taking_state_changes_whole = false;
     bool                       stalled_on_kink            = false;
     std::set<std::vector<int>> visited_states;
