@@ -5,6 +5,7 @@
 // exact derivative to the Newton system (assemble()), its forces alone
 // (add_forces()), or the weighted slips of friction
 // (compute_weighted_slips()).
+#include <deal.II/base/mpi.h>
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -50,10 +51,12 @@ namespace RingContact
     const auto is_active = [this](const types::global_dof_index dof) {
       return static_cast<bool>(active[multiplier_index.at(dof)]);
     };
-    // 0 sticking, +1 or -1 sliding, 2 open.
+    // 0 sticking, +1 or -1 sliding, 2 open or sticking where held on both
+    // sides (no tangential row from the points, see find_tangential_ties()).
     const auto friction_state = [this](const types::global_dof_index dof) {
-      const unsigned int k = multiplier_index.at(dof);
-      return active[k] ? slip_sign[k] : 2;
+      const unsigned int k    = multiplier_index.at(dof);
+      const bool         held = k < tied.size() && tied[k] && slip_sign[k] == 0;
+      return active[k] && !held ? slip_sign[k] : 2;
     };
     // (Before the first assembly there is no converged state yet: only
     // add_forces() can come that early, and the tangential rows, which
@@ -62,7 +65,8 @@ namespace RingContact
       friction_coefficient > 0 && converged_slave ?
         std::optional<ConvergedState>(ConvergedState{converged_solution,
                                                      *converged_slave,
-                                                     *converged_master}) :
+                                                     *converged_master,
+                                                     dual_basis}) :
         std::nullopt;
     for (const auto &point : points)
       {
@@ -116,6 +120,7 @@ namespace RingContact
                              const AffineConstraints<double> &constraints,
                              LinearSystem                    &system) const
   {
+    find_tangential_ties(constraints, system.get_communicator());
     const bool friction = friction_coefficient > 0;
     visit_points(solution,
                  true,
@@ -144,7 +149,7 @@ namespace RingContact
         const double w = reference_weight[k];
         if (!system.owned_rows().is_element(t))
           continue;
-        if (!active[k])
+        if (!active[k] || (tied[k] && slip_sign[k] == 0))
           system.add_diagonal(t, w, -w * solution(t));
         else if (slip_sign[k] == 0)
           // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. A
@@ -174,6 +179,87 @@ namespace RingContact
       }
   }
 
+  // A node whose tangential motion is held on both sides: the slave's
+  // displacement along the surface at the node fixed by a support, and the
+  // master's at a master vertex across from it (a symmetry plane, rollers at
+  // the ends of both surfaces). Its slip depends on no unknown (zero, or
+  // the two supports' imposed motions), and so its stick row c s~_k is zero
+  // up to round-off and the surfaces' mismatch: with the dual basis a row of
+  // tiny entries, which gave its traction any value (two blocks on rollers,
+  // Hertz's symmetry node: linear convergence at fixed states). Sticking,
+  // its traction has no equation of its own: it is set to zero, as an open
+  // node's, and the supports take the force. Sliding (supports that move
+  // against each other, as in the frictional patch test), its row is the
+  // Coulomb law's as anywhere. Along the
+  // surface: the support's axis within 10 degrees of the tangent (a faceted
+  // curve's segment is inclined at its end node by half its angle). Held
+  // means constrained without entries (a support, not a hanging node or a
+  // twin). Each process sees the constraints of its own dofs: the largest
+  // over the processes, so that every process decides alike.
+  void
+  ContactInterface::find_tangential_ties(
+    const AffineConstraints<double> &constraints,
+    const MPI_Comm                   communicator) const
+  {
+    const unsigned int n = multiplier_dof_list.size();
+    tied.assign(n, false);
+    if (friction_coefficient == 0)
+      return;
+    const double along = std::cos(10 * numbers::PI / 180);
+    // The axis (0: x, 1: y) along which `surface` is held at (segment s,
+    // parameter t), a displacement node, if the tangent there is within 10
+    // degrees of it; else -1.
+    const auto held_axis =
+      [&](const ContactSurface &surface, const unsigned int s, const double t) {
+        const auto         &segment = surface.segments()[s];
+        std::vector<double> N;
+        surface.displacement_basis().evaluate(t, N);
+        const Tensor<1, 2> dx = surface.reference_point(s, t).dx;
+        for (unsigned int j = 0; j < N.size(); ++j)
+          if (std::abs(N[j] - 1) < 1e-12)
+            for (unsigned int axis = 0; axis < 2; ++axis)
+              {
+                const auto *entries = constraints.get_constraint_entries(
+                  axis == 0 ? segment.dofs_x[j] : segment.dofs_y[j]);
+                if (entries != nullptr && entries->empty() &&
+                    std::abs(dx[axis]) >= along * dx.norm())
+                  return static_cast<int>(axis);
+              }
+        return -1;
+      };
+    // Per node: 1 + the slave's held axis, and the same for a held master
+    // vertex across from it (its coordinate along that axis the node's).
+    std::vector<unsigned int> slave_axis(n, 0), master_axis(n, 0);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto &[s, t] = node_sites.at(multiplier_dof_list[k]).front();
+        const int axis     = held_axis(slave, s, t);
+        if (axis < 0)
+          continue;
+        slave_axis[k]    = 1 + axis;
+        const Point<2> x = slave.reference_point(s, t).x;
+        for (unsigned int m = 0; m < master.segments().size(); ++m)
+          for (const double end : {0.0, 1.0})
+            {
+              const Point<2> xm = master.reference_point(m, end).x;
+              if (std::abs(xm[axis] - x[axis]) <=
+                    1e-6 * segment_length +
+                      SurfaceKernel::position_round_off(x) &&
+                  xm.distance(x) < segment_length &&
+                  held_axis(master, m, end) == axis)
+                master_axis[k] = 1 + axis;
+            }
+      }
+    if (Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        Utilities::MPI::max(slave_axis, communicator, slave_axis);
+        Utilities::MPI::max(master_axis, communicator, master_axis);
+      }
+    for (unsigned int k = 0; k < n; ++k)
+      tied[k] = slave_axis[k] != 0 && slave_axis[k] == master_axis[k];
+  }
+
   // The contact force on every node at `solution`, with the sign of an internal
   // force, whatever process owns the slave point: the boundary resultants leave
   // it out of the reactions (postprocessing.cc).
@@ -189,7 +275,7 @@ namespace RingContact
                  });
   }
 
-  // s~_k = sum Phi_k s ds over the slave points, from the same contact
+  // s~_k = sum Psi_k s ds over the slave points, from the same contact
   // element as the residual (its values only).
   // Values only (AD constants: no derivative arrays at every slave point and
   // Newton iteration), and every slave point on every process: each process
@@ -202,7 +288,8 @@ namespace RingContact
     std::fill(weighted_slip.begin(), weighted_slip.end(), 0.0);
     const ConvergedState converged{converged_solution,
                                    *converged_slave,
-                                   *converged_master};
+                                   *converged_master,
+                                   dual_basis};
     for (const auto &point : points)
       {
         const ElementLayout layout(slave,
@@ -220,7 +307,7 @@ namespace RingContact
           const auto  &seg = slave.segments()[point.slave_segment];
           for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
             weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
-              element.multiplier_basis(k).val() * s * ds;
+              element.tangential_basis(k).val() * s * ds;
         };
         if (layout.n_unknowns() <= small_capacity)
           add_slip(ContactElement<SmallAD>(layout));

@@ -23,6 +23,9 @@
 // projection parameter, the ends of a piece) are written as one Newton
 // correction in AD numbers around their converged value: its value is zero, its
 // derivative that of the implicit function theorem.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+
 #include <ring_contact/contact/contact_element.h>
 
 #include <algorithm>
@@ -378,9 +381,55 @@ namespace RingContact
         {
           Phi_eta[k] = Phi[k] + dPhi[k] * d_eta;
           lambda += Phi_eta[k] * lambda_k[k];
-          if (converged)
-            lambda_t += Phi_eta[k] * u[tangential_offset + k];
         }
+      // Friction: the tangential traction lambda_t = sum_k Psi_k lambda_t,k in
+      // the dual basis Psi_k = sum_j a_kj Phi_j, A = D M^-1 with M_jk = int
+      // Phi_j Phi_k dS and D_kk = int Phi_k dS over the slave segment
+      // (reference length, the rule of the weights w_k). The weighted slip
+      // s~_k = int Psi_k s dS is then D_k s_k wherever s lies in the span of
+      // the Phi_j: the stick of node k constrains its own slip only, as the
+      // nodal scheme's does. Weighted by Phi_k, it tied each node's stick to
+      // its neighbours' slips: beside a sliding node the sticking nodes'
+      // rows M s = 0 grow the slip and the traction away from it by 2 + sqrt
+      // 3 per node (two blocks, 7 nodes, Gauss 3, mu = 0.37: tangential
+      // tractions of +9e4, -4.8e4, +1.3e4, ... against a bound of 150, no
+      // step solved), and a node beside the Hertz zone's centre slid at the
+      // whole update and stuck at any fraction of it. The force the
+      // traction puts on slave node j is then D_j lambda_t,j, and the
+      // Coulomb law per node (ContactInterface::update_friction()) is that
+      // of the nodal scheme. (Psi_k is not positive: a traction field, not
+      // a pressure, can be anything.)
+      Psi_eta = Phi_eta;
+      if (converged && converged->dual_basis)
+        {
+          const QGauss<1>     exact(slave.geometry_basis().size() + nl);
+          FullMatrix<double>  M(nl, nl);
+          std::vector<double> D(nl, 0.0), P;
+          for (unsigned int q = 0; q < exact.size(); ++q)
+            {
+              slave.multiplier_basis().evaluate(exact.point(q)[0], P);
+              const double dS =
+                slave.reference_point(point.slave_segment, exact.point(q)[0])
+                  .dx.norm() *
+                exact.weight(q);
+              for (unsigned int j = 0; j < nl; ++j)
+                {
+                  D[j] += P[j] * dS;
+                  for (unsigned int k = 0; k < nl; ++k)
+                    M(j, k) += P[j] * P[k] * dS;
+                }
+            }
+          M.gauss_jordan();
+          for (unsigned int k = 0; k < nl; ++k)
+            {
+              Psi_eta[k] = 0;
+              for (unsigned int j = 0; j < nl; ++j)
+                Psi_eta[k] += D[k] * M(k, j) * Phi_eta[j];
+            }
+        }
+      if (converged)
+        for (unsigned int k = 0; k < nl; ++k)
+          lambda_t += Psi_eta[k] * u[tangential_offset + k];
     }
 
     // Friction: the slip of the slave point in the step, the tangential
@@ -410,6 +459,32 @@ namespace RingContact
       // reference one.
       const Projection &old   = point.old_projection;
       AD                dxi_n = 0;
+      // Finite strain: the old separation d_n = x_s,n - x_m,n(xi_n) (along
+      // the old normal, the gap the point had) is added to the relative
+      // increment, so that the slip is tau . (x_s - x_m(xi_n)), the distance
+      // along the current tangent from the old partner's material point: zero
+      // for a point that lands on that point, whatever the normal has turned
+      // by meanwhile. The increment alone measured -g_n tau . n_n for a point
+      // that closes a gap g_n while the master turns: a cylinder pressed
+      // from touching (steel on aluminium, mu = 0.2) got slips of 1e-7 to
+      // 1e-6 on nodes that stick, which turned their states from slip one
+      // way to slip the other at every iteration (68 to 85 iterations and two
+      // cuts; 9 to 12 and none now, bench/first-step). Small strain keeps the
+      // reference tangent, normal to d_n.
+      // Only where the old partner is a closest point (d_n along the old
+      // normal): at a vertex or a clamped end d_n has a tangential part of its
+      // own, which would read as a slip of an unmoved point (two blocks
+      // turned against each other: no step could be solved).
+      ADVector separation;
+      if (current && !old.clamped && !old.at_vertex)
+        {
+          const CurvePoint xs =
+            converged->slave.current_point(point.slave_segment, point.eta);
+          const CurvePoint xm =
+            converged->master.current_point(old.segment, old.t);
+          separation[0] = xs.x[0] - xm.x[0];
+          separation[1] = xs.x[1] - xm.x[1];
+        }
       if (current && !old.clamped && !old.at_vertex)
         {
           const CurvePoint xs =
@@ -436,10 +511,14 @@ namespace RingContact
               along = xs.dx * xm.dx;
             }
           dxi_n = -along * d_eta / slope;
+          // d_n of the moving point eta0 + d eta, to first order.
+          for (unsigned int c = 0; c < 2; ++c)
+            separation[c] += xs.dx[c] * d_eta - xm.dx[c] * dxi_n;
         }
       // Minus the old partner's increment u_m(xi_n) - u_m,n(xi_n). The
       // converged solution is read as it is, unturned: the old partner is never
-      // a rotated copy, since friction with a sector is refused (by the rings' scenario).
+      // a rotated copy, since friction with a sector is refused (by the rings'
+      // scenario).
       const auto         &seg = master.segments()[old.segment];
       const unsigned int  nm  = seg.dofs_x.size();
       const unsigned int  o   = offset_of.at(old.segment);
@@ -454,6 +533,8 @@ namespace RingContact
       // tau . relative, tau = e_z x n = (-n_y, n_x) along the current master
       // normal: the slip is measured along the tangent on which the tangential
       // traction acts.
+      for (unsigned int c = 0; c < 2; ++c)
+        relative[c] += separation[c];
       return -normal[1] * relative[0] + normal[0] * relative[1];
     }
 
@@ -609,7 +690,7 @@ namespace RingContact
             {
               const int state = friction_state(s_seg.multiplier_dofs[k]);
               if (state == 0)
-                r[tangential_offset + k] = c * Phi_eta[k] * s * ds;
+                r[tangential_offset + k] = c * Psi_eta[k] * s * ds;
               else if (state == 1 || state == -1)
                 r[tangential_offset + k] =
                   state * mu * c * Phi_eta[k] * gap * ds;

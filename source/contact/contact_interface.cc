@@ -120,6 +120,19 @@ namespace RingContact
                 Phi[k] * dS;
           }
       }
+    // The tangential traction's basis (contact_element.h): the dual one,
+    // unless the scheme's points are the multiplier nodes themselves (the
+    // nodal scheme, whose weights are diagonal: there Psi = Phi).
+    if (friction_coefficient > 0)
+      {
+        const auto &nodes = slave.multiplier_nodes();
+        bool at_nodes     = !segment_based && quadrature.size() == nodes.size();
+        for (unsigned int q = 0; at_nodes && q < quadrature.size(); ++q)
+          at_nodes = std::any_of(nodes.begin(), nodes.end(), [&](double t) {
+            return std::abs(t - quadrature.point(q)[0]) < 1e-12;
+          });
+        dual_basis = !at_nodes;
+      }
     // update() decides every node before the first assembly: the initial values
     // only set what the first update() counts as a change.
     weighted_gap.assign(multiplier_dof_list.size(), 0.0);

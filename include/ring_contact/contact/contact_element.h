@@ -49,11 +49,19 @@ namespace RingContact
     // (ContactInterface::accept_state()). The slip of an iterate is its motion
     // relative to that state: the element reads it, but never differentiates
     // it.
+    //
+    // And the basis of the tangential traction: Psi_k biorthogonal to the
+    // multiplier basis Phi_k, int Psi_k Phi_j dS = delta_kj int Phi_k dS on
+    // each slave segment (the dual basis of Wohlmuth), wherever the
+    // scheme's points are not the nodes themselves (dual_basis); the nodal
+    // scheme's weights are diagonal already, and its Psi is Phi. See
+    // ContactElement::evaluate_slave_point().
     struct ConvergedState
     {
       const Vector<double> &solution;
       const ContactSurface &slave;
       const ContactSurface &master;
+      const bool            dual_basis;
     };
 
     // @sect4{The layout of a contact element}
@@ -144,6 +152,13 @@ namespace RingContact
       {
         return Phi_eta[k];
       }
+      /// Psi_k at the slave point (for the weighted slips s~_k = int Psi_k s
+      /// dS).
+      AD
+      tangential_basis(const unsigned int k) const
+      {
+        return Psi_eta[k];
+      }
       AD
       length_element() const
       {
@@ -178,6 +193,8 @@ namespace RingContact
       /// Its reference position and its displacement, apart (see the gap).
       ADVector        xs_reference, us;
       std::vector<AD> Phi_eta, N_eta;
+      /// The tangential traction's basis Psi_k (see evaluate_slave_point()).
+      std::vector<AD> Psi_eta;
 
       // The partner and the normal.
       std::vector<double> Nm, dNm, ddNm;

@@ -426,6 +426,17 @@ namespace RingContact
     compute_weighted_slips(const Vector<double> &solution);
 
     const bool segment_based;
+    /// Friction: the tangential traction in the dual basis of the
+    /// multiplier basis (see ConvergedState), wherever the scheme's points
+    /// are not the multiplier nodes.
+    bool dual_basis = false;
+
+    /// Friction: the nodes whose tangential motion is held on both sides
+    /// (find_tangential_ties()), found at every assembly.
+    mutable std::vector<bool> tied;
+    void
+    find_tangential_ties(const AffineConstraints<double> &constraints,
+                         const MPI_Comm                   communicator) const;
 
     std::vector<types::global_dof_index>            multiplier_dof_list;
     std::map<types::global_dof_index, unsigned int> multiplier_index;
