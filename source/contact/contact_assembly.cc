@@ -120,7 +120,7 @@ namespace RingContact
                              const AffineConstraints<double> &constraints,
                              LinearSystem                    &system) const
   {
-    find_tangential_ties(constraints, system.get_communicator());
+    find_tangential_ties(solution, constraints, system.get_communicator());
     const bool friction = friction_coefficient > 0;
     visit_points(solution,
                  true,
@@ -152,12 +152,13 @@ namespace RingContact
         if (!active[k] || (tied[k] && slip_sign[k] == 0))
           system.add_diagonal(t, w, -w * solution(t));
         else if (slip_sign[k] == 0)
-          // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. A
-          // node whose tangential motion is held on both sides (on a
-          // symmetry plane) has s~_k = 0 whatever the unknowns, and its
-          // lambda_t no equation; eps = 1e-12 gives it lambda_t = 0 and
-          // elsewhere allows a slip of 1e-12 w lambda_t / c (measured:
-          // Hertz with mu = 0.2 was singular at its first step).
+          // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. The
+          // nodes whose slip depends on no unknown are tied (above); eps =
+          // 1e-12 allows a slip of 1e-12 w lambda_t / c, and gives a node
+          // whose supports move against each other by less than the bound
+          // allows a traction -c s~_k / (eps w), far past it, so that it
+          // slides at the next update (measured before the ties: Hertz with
+          // mu = 0.2 was singular at its first step without it).
           system.add_diagonal(t,
                               stick_regularisation * w,
                               -stick_regularisation * w * solution(t));
@@ -179,25 +180,28 @@ namespace RingContact
       }
   }
 
-  // A node whose tangential motion is held on both sides: the slave's
+  // A node whose tangential motion is held alike on both sides: the slave's
   // displacement along the surface at the node fixed by a support, and the
-  // master's at a master vertex across from it (a symmetry plane, rollers at
-  // the ends of both surfaces). Its slip depends on no unknown (zero, or
-  // the two supports' imposed motions), and so its stick row c s~_k is zero
-  // up to round-off and the surfaces' mismatch: with the dual basis a row of
+  // master's at a master vertex across from it, moved by the same increment
+  // in the step (a symmetry plane, rollers at the ends of both surfaces).
+  // Its slip is zero whatever the unknowns, and its stick row c s~_k zero up
+  // to round-off and the surfaces' mismatch: with the dual basis a row of
   // tiny entries, which gave its traction any value (two blocks on rollers,
-  // Hertz's symmetry node: linear convergence at fixed states). Sticking,
-  // its traction has no equation of its own: it is set to zero, as an open
-  // node's, and the supports take the force. Sliding (supports that move
-  // against each other, as in the frictional patch test), its row is the
-  // Coulomb law's as anywhere. Along the
-  // surface: the support's axis within 10 degrees of the tangent (a faceted
-  // curve's segment is inclined at its end node by half its angle). Held
-  // means constrained without entries (a support, not a hanging node or a
-  // twin). Each process sees the constraints of its own dofs: the largest
-  // over the processes, so that every process decides alike.
+  // Hertz's symmetry node: linear convergence at fixed states). Sticking, its
+  // traction has no equation of its own: it is set to zero, as an open
+  // node's, and the supports take the force. Supports that move against each
+  // other (the frictional patch test) are not a tie: the node slides, and
+  // its row is the Coulomb law's. Along the surface: the support's axis
+  // within 10 degrees of the tangent (a faceted curve's segment is inclined
+  // at its end node by half its angle). Held means constrained without
+  // entries (a support, not a hanging node or a twin). Across from it: a
+  // master vertex at the node's coordinate along the axis, less than the
+  // shortest slave segment away (a symmetry plane whose gap is wider is not
+  // found). The largest over the processes, so that every process decides
+  // alike whatever constraints it holds.
   void
   ContactInterface::find_tangential_ties(
+    const Vector<double>            &solution,
     const AffineConstraints<double> &constraints,
     const MPI_Comm                   communicator) const
   {
@@ -209,31 +213,45 @@ namespace RingContact
     // The axis (0: x, 1: y) along which `surface` is held at (segment s,
     // parameter t), a displacement node, if the tangent there is within 10
     // degrees of it; else -1.
-    const auto held_axis =
-      [&](const ContactSurface &surface, const unsigned int s, const double t) {
-        const auto         &segment = surface.segments()[s];
-        std::vector<double> N;
-        surface.displacement_basis().evaluate(t, N);
-        const Tensor<1, 2> dx = surface.reference_point(s, t).dx;
-        for (unsigned int j = 0; j < N.size(); ++j)
-          if (std::abs(N[j] - 1) < 1e-12)
-            for (unsigned int axis = 0; axis < 2; ++axis)
-              {
-                const auto *entries = constraints.get_constraint_entries(
-                  axis == 0 ? segment.dofs_x[j] : segment.dofs_y[j]);
-                if (entries != nullptr && entries->empty() &&
-                    std::abs(dx[axis]) >= along * dx.norm())
+    // The increment of a displacement dof in the step (its value before the
+    // first converged state).
+    const bool from_converged = converged_solution.size() == solution.size();
+    const auto increment      = [&](const types::global_dof_index dof) {
+      return solution(dof) - (from_converged ? converged_solution(dof) : 0.0);
+    };
+    // And its increment in `moved`.
+    const auto held_axis = [&](const ContactSurface &surface,
+                               const unsigned int    s,
+                               const double          t,
+                               double               &moved) {
+      const auto         &segment = surface.segments()[s];
+      std::vector<double> N;
+      surface.displacement_basis().evaluate(t, N);
+      const Tensor<1, 2> dx = surface.reference_point(s, t).dx;
+      for (unsigned int j = 0; j < N.size(); ++j)
+        if (std::abs(N[j] - 1) < 1e-12)
+          for (unsigned int axis = 0; axis < 2; ++axis)
+            {
+              const auto dof =
+                axis == 0 ? segment.dofs_x[j] : segment.dofs_y[j];
+              const auto *entries = constraints.get_constraint_entries(dof);
+              if (entries != nullptr && entries->empty() &&
+                  std::abs(dx[axis]) >= along * dx.norm())
+                {
+                  moved = increment(dof);
                   return static_cast<int>(axis);
-              }
-        return -1;
-      };
+                }
+            }
+      return -1;
+    };
     // Per node: 1 + the slave's held axis, and the same for a held master
     // vertex across from it (its coordinate along that axis the node's).
     std::vector<unsigned int> slave_axis(n, 0), master_axis(n, 0);
     for (unsigned int k = 0; k < n; ++k)
       {
         const auto &[s, t] = node_sites.at(multiplier_dof_list[k]).front();
-        const int axis     = held_axis(slave, s, t);
+        double    moved    = 0;
+        const int axis     = held_axis(slave, s, t, moved);
         if (axis < 0)
           continue;
         slave_axis[k]    = 1 + axis;
@@ -241,12 +259,16 @@ namespace RingContact
         for (unsigned int m = 0; m < master.segments().size(); ++m)
           for (const double end : {0.0, 1.0})
             {
-              const Point<2> xm = master.reference_point(m, end).x;
+              const Point<2> xm           = master.reference_point(m, end).x;
+              double         master_moved = 0;
               if (std::abs(xm[axis] - x[axis]) <=
                     1e-6 * segment_length +
                       SurfaceKernel::position_round_off(x) &&
                   xm.distance(x) < segment_length &&
-                  held_axis(master, m, end) == axis)
+                  held_axis(master, m, end, master_moved) == axis &&
+                  std::abs(master_moved - moved) <=
+                    1e-12 * (std::abs(moved) + std::abs(master_moved)) +
+                      1e-12 * segment_length)
                 master_axis[k] = 1 + axis;
             }
       }

@@ -394,11 +394,16 @@ namespace RingContact
       // 3 per node (two blocks, 7 nodes, Gauss 3, mu = 0.37: tangential
       // tractions of +9e4, -4.8e4, +1.3e4, ... against a bound of 150, no
       // step solved), and a node beside the Hertz zone's centre slid at the
-      // whole update and stuck at any fraction of it. The force the
-      // traction puts on slave node j is then D_j lambda_t,j, and the
-      // Coulomb law per node (ContactInterface::update_friction()) is that
-      // of the nodal scheme. (Psi_k is not positive: a traction field, not
-      // a pressure, can be anything.)
+      // whole update and stuck at any fraction of it. With multipliers of
+      // the displacement's degree the force the traction puts on slave node
+      // j is then D_j lambda_t,j, and the Coulomb law per node
+      // (ContactInterface::update_friction()) is that of the nodal scheme.
+      // The decoupling is exact where the scheme integrates Psi_k Phi_j
+      // exactly in the reference configuration; an under-integrating rule,
+      // the current length of finite strain and a partly covered
+      // segment-based segment leave a coupling of the order of their error.
+      // (Psi_k is not positive: a traction field, not a pressure, can be
+      // anything.)
       Psi_eta = Phi_eta;
       if (converged && converged->dual_basis)
         {
@@ -482,17 +487,10 @@ namespace RingContact
             converged->slave.current_point(point.slave_segment, point.eta);
           const CurvePoint xm =
             converged->master.current_point(old.segment, old.t);
-          separation[0] = xs.x[0] - xm.x[0];
-          separation[1] = xs.x[1] - xm.x[1];
-        }
-      if (current && !old.clamped && !old.at_vertex)
-        {
-          const CurvePoint xs =
-            converged->slave.current_point(point.slave_segment, point.eta);
-          const CurvePoint xm =
-            converged->master.current_point(old.segment, old.t);
           const Tensor<1, 2> d = xs.x - xm.x;
-          double             slope, along;
+          separation[0]        = d[0];
+          separation[1]        = d[1];
+          double slope, along;
           if (smooth)
             {
               const Tensor<1, 2> n0 =

@@ -195,11 +195,13 @@ namespace RingContact
 
   // @sect4{With friction}
   //
-  // The tangential traction at the probe node is the multiplier itself, read
-  // from the solution: a Cauchy traction on the unit tangent tau = e_z x n of
-  // the master's normal, whatever Contact/Reported pressure says of the normal
-  // pressure. The sliding nodes are counted over every pair: the state of the
-  // stick-slip active set at the converged step.
+  // The tangential traction at the probe node is the multiplier's coefficient
+  // there, read from the solution: a Cauchy traction on the unit tangent tau
+  // = e_z x n of the master's normal (with the dual basis of Gauss and
+  // segment-based schemes, its weighted mean about the node), whatever
+  // Contact/Reported pressure says of the normal pressure. The sliding nodes
+  // are counted over every pair: the state of the stick-slip active set at the
+  // converged step.
   namespace Friction
   {
     std::vector<std::string>

@@ -53,8 +53,9 @@ namespace RingContact
     // And the basis of the tangential traction: Psi_k biorthogonal to the
     // multiplier basis Phi_k, int Psi_k Phi_j dS = delta_kj int Phi_k dS on
     // each slave segment (the dual basis of Wohlmuth), wherever the
-    // scheme's points are not the nodes themselves (dual_basis); the nodal
-    // scheme's weights are diagonal already, and its Psi is Phi. See
+    // scheme's points are not the multiplier nodes themselves (dual_basis);
+    // where they are (the nodal scheme with multipliers of the slave's
+    // degree) the weights are diagonal already, and Psi is Phi. See
     // ContactElement::evaluate_slave_point().
     struct ConvergedState
     {

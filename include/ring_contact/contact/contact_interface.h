@@ -431,11 +431,12 @@ namespace RingContact
     /// are not the multiplier nodes.
     bool dual_basis = false;
 
-    /// Friction: the nodes whose tangential motion is held on both sides
-    /// (find_tangential_ties()), found at every assembly.
+    /// Friction: the nodes whose tangential motion is held alike on both
+    /// sides (find_tangential_ties()), found at every assembly.
     mutable std::vector<bool> tied;
     void
-    find_tangential_ties(const AffineConstraints<double> &constraints,
+    find_tangential_ties(const Vector<double>            &solution,
+                         const AffineConstraints<double> &constraints,
                          const MPI_Comm                   communicator) const;
 
     std::vector<types::global_dof_index>            multiplier_dof_list;
