@@ -187,10 +187,10 @@ namespace
   // The first of four steps from touching at h = 0.01, mu = 0.2: once the
   // stick is freed, a node beside the zone's centre slid at the whole update
   // and stuck again at any fraction of it, and the line search stalled (33
-  // iterations and 2 cuts with Gauss 2 and segment-based 2). Updates that
-  // change the states are taken whole in a growing zone's first iterations
-  // (newton.cc): 4, 9 and 10 iterations; with the tangential traction in the
-  // dual basis (contact_element.h) 4, 5 and 5. In finite strain (Saint
+  // iterations and 2 cuts with Gauss 2 and segment-based 2; 9 and 10 with
+  // every update that changes a state taken whole in a growing zone's first
+  // iterations). With the tangential traction in the dual basis
+  // (contact_element.h), and that rule dropped (newton.cc): 4, 5 and 5. In finite strain (Saint
   // Venant-Kirchhoff), linearised first, mu = 0.2 and 0.5: 7, 8, 8 and 8,
   // 9, 8, where it took 12 to 113 iterations and up to four cuts, or failed.
   void
