@@ -1103,9 +1103,7 @@ namespace RingContact
         if (halving == 0 && extrapolating_edges && n_inverted == 0 &&
             n_closed_changed_since(states_before) > 0)
           return true;
-        // Likewise an update that changes the states (closed or open, and
-        // friction's stick and slip) in those first iterations of a growing
-        // zone; and in any step, right after a damped update that changed
+        // Likewise, in any step, right after a damped update that changed
         // no state, one that changes only friction's states (a stall on the
         // kink between stick and slip: the fraction taken keeps the states,
         // and the next update aims at the same states again; the residual
@@ -1113,6 +1111,8 @@ namespace RingContact
         // states this step has met: the method can cycle (with every such
         // update whole, the second step of the problem above alternated
         // between two sets of 14 and 15 closed nodes).
+        // (taking_state_changes_whole is always false since the dual basis:
+        // the member goes with the next change of contact_problem.h.)
         const bool whole_state_change =
           taking_state_changes_whole ||
           (stalled_on_kink && n_closed_changed_since(states_before) == 0);
