@@ -602,14 +602,11 @@ namespace RingContact
     /// Whether this Newton iteration moves the contact zones' edges by
     /// extrapolation (its first iterations, see newton.cc).
     bool extrapolating_edges = false;
-    /// Whether an update that changes the contact states is taken whole
-    /// (the first iterations of a frictional zone that grows from a point,
-    /// see newton.cc); whether the last update was damped and changed no
-    /// state (friction at small strain: the next update is taken whole if
-    /// it changes friction's states only); and the states this step's
-    /// iterates have met, to which no whole update goes back.
-    bool                       taking_state_changes_whole = false;
-    bool                       stalled_on_kink            = false;
+    /// Whether the last update was damped and changed no state (friction
+    /// at small strain: the next update is taken whole if it changes
+    /// friction's states only), and the states this step's iterates have
+    /// met, to which no whole update goes back.
+    bool                       stalled_on_kink = false;
     std::set<std::vector<int>> visited_states;
     /// Whether the closed nodes are held in stick (a zone that grows from a
     /// point with friction, see newton.cc), and the nodes that opened or
