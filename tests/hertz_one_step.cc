@@ -219,6 +219,19 @@ namespace
         << std::endl;
     check(row.newton_iterations <= 10 && row.step_cuts == 0,
           what + ": at most 10 iterations, no cut");
+    // In finite strain the four steps too: a sliding node whose trial turns
+    // past the opposite bound sticks first (ContactInterface::
+    // update_friction()); without that rule Gauss 2 took 58 (mu = 0.2) and
+    // 39 (mu = 0.5) iterations in all, with it 28 and 29.
+    if (kinematics != "small strain")
+      {
+        unsigned int total = 0;
+        for (const auto &step : problem->history())
+          total += step.newton_iterations;
+        out << "  the four steps: " << total << " Newton iterations"
+            << std::endl;
+        check(total <= 35, what + ": at most 35 iterations in the four steps");
+      }
   }
 
   // The whole load in one frictional step from touching in finite strain
@@ -228,7 +241,7 @@ namespace
   // zone is three nodes short of the finite-strain one here (the bodies
   // strain by 5 %): found first in small strain and then moved node by node
   // in finite strain, the step took 42 or 43 iterations and a cut with every
-  // scheme at mu = 0.2 (13 with room for them); now 8 or 9. Asserted: at
+  // scheme at mu = 0.2 (13 with room for them); now 7 or 8. Asserted: at
   // most 10 and no cut, a stick zone and sliding edges, the reaction equal to
   // the load. (Hertz's p0 is 1 % off in finite strain; the same step solved
   // with the old path and room for its iterations gives the same closed and

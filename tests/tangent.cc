@@ -195,8 +195,10 @@ namespace
     // the other way (ContactInterface::update_friction()), so that a second
     // update at the same iterate may change them; the checks below assemble
     // at this iterate again and expect its states.
-    for (unsigned int i = 0; i < 3 && problem.assemble_newton_system() > 0; ++i)
-      ;
+    bool settled = false;
+    for (unsigned int i = 0; i < 3 && !settled; ++i)
+      settled = problem.assemble_newton_system() == 0;
+    check(settled, "the contact states settle at the iterate");
     const auto           &Kref        = problem.tangent_matrix();
     const Vector<double>  rhs0        = problem.residual_rhs();
     const auto           &constraints = problem.newton_constraints();
