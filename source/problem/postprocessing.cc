@@ -65,6 +65,8 @@ namespace RingContact
     for (unsigned int i = 0; i < contacts.size(); ++i)
       {
         const auto &[slave, master] = pairs[i];
+        Diagnostics::report_coarse_slave(
+          *contacts[i], solution, scheme, slave, master, log);
         // A body of the pair held by the contact only absorbs an overlap
         // by its motion: a way to start in contact (the Hertz problem's
         // cylinder), not said.
@@ -296,7 +298,8 @@ namespace RingContact
           for (const auto &line : hanging_node_constraints.get_lines())
             {
               for (const auto &[j, c] : line.entries)
-                forces.round_off(j) += std::abs(c) * forces.round_off(line.index);
+                forces.round_off(j) +=
+                  std::abs(c) * forces.round_off(line.index);
               forces.round_off(line.index) = 0;
             }
       }

@@ -16,6 +16,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact/contact_interface.h>
+#include <ring_contact/contact/contact_quadrature.h>
 
 #include <ostream>
 
@@ -41,6 +42,21 @@ namespace RingContact
     report_coarse_geometry(ContactInterface     &contact,
                            const Vector<double> &solution,
                            std::ostream         &log);
+
+    /// Warn in `log` when `scheme` evaluates the contact at points (nodal,
+    /// Gauss, Simpson, Newton-Cotes: not segment-based) and the slave
+    /// surface of `contact` is coarser than its master where the two face
+    /// each other at `solution` (the reference state): when the median ratio
+    /// of a slave segment's length to that of the master segment facing it
+    /// exceeds 1.1. `slave_id` and
+    /// `master_id` name the surfaces in the message. True if it warned.
+    bool
+    report_coarse_slave(ContactInterface        &contact,
+                        const Vector<double>    &solution,
+                        const IntegrationScheme &scheme,
+                        const types::boundary_id slave_id,
+                        const types::boundary_id master_id,
+                        std::ostream            &log);
   } // namespace Diagnostics
 } // namespace RingContact
 

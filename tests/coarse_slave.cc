@@ -1,0 +1,133 @@
+// A slave surface coarser than its master is named in the log when the
+// scheme evaluates the contact at points (nodal, Gauss n), and not when it
+// is segment-based or when the slave is the finer surface. The shrink fit
+// of prm/shrink_fit.prm (curved, Q1, 40 against 57 segments per quarter,
+// Lame's pressure p): with the roles swapped, the 40 segments the slave,
+// the nodal scheme's pressure swings by about 20 % from node to node (the
+// warning says so, and the test asserts that it does, more than 10 %) while
+// the segment-based scheme keeps every node within 0.5 % of p. The right
+// way round nothing is said. Modelisation E (a linear slave against a
+// quadratic master on the same segments, the LBB-stable choice) is not a
+// coarse slave: nothing is said.
+#include <ring_contact/config.h>
+#include <ring_contact/problem/contact_problem.h>
+
+#include "tests.h"
+
+#include <cmath>
+
+using namespace RingContact;
+using RingContactTests::check;
+using RingContactTests::deallog_file;
+
+namespace
+{
+  const std::string warning = "Warning: the slave surface (boundary ";
+
+  struct Outcome
+  {
+    std::string log;
+    double      smallest, largest; // nodal pressures / Lame's
+  };
+
+  // Run `prm_text` (its first scheme) quietly; the log and the extremes of
+  // the nodal pressure relative to `reference`.
+  Outcome
+  run(const std::string &prm_text, const double reference)
+  {
+    {
+      std::ofstream prm("case.prm");
+      prm << prm_text << "subsection Newton\n set Verbose = false\nend\n"
+          << "subsection Output\n set VTU interval = 0\n"
+          << " set Print timing = false\n set Write history = false\nend\n";
+    }
+    Parameters parameters;
+    parameters.read("case.prm");
+    std::ostringstream log;
+    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    check(problem.run(), "the step is solved");
+    const auto &row = problem.history().back();
+    return {log.str(),
+            row.value("pressure_min") / reference,
+            row.value("pressure_max") / reference};
+  }
+
+  std::string
+  shrink_fit(const bool swapped, const std::string &scheme)
+  {
+    const std::string root = RING_CONTACT_SOURCE_DIR;
+    return "include " + root + "/prm/shrink_fit.prm\n" +
+           "subsection Mesh\n set Mesh file = " + root +
+           "/meshes/concentric_rings.geo\nend\n"
+           "subsection Body 1\n set Displacement degree = 1\nend\n"
+           "subsection Body 2\n set Displacement degree = 1\nend\n"
+           "subsection Contact\n set Integration schemes = " +
+           scheme + "\n set Slave boundary = " + (swapped ? "10" : "20") +
+           "\n set Master boundary = " + (swapped ? "20" : "10") + "\nend\n";
+  }
+} // namespace
+
+int
+main()
+{
+  // Lame's pressure of the fit (prm/shrink_fit.prm's constants).
+  const double Ei = 2.1e11, nui = 0.3, Eo = 7e10, nuo = 0.33, a = 0.2, b = 1,
+               c = 1.6, delta = 1e-3, d = b - delta;
+  const double li = Ei * nui / ((1 + nui) * (1 - 2 * nui)),
+               mi = Ei / (2 * (1 + nui)),
+               lo = Eo * nuo / ((1 + nuo) * (1 - 2 * nuo)),
+               mo = Eo / (2 * (1 + nuo));
+  const double fi = (b + (li + mi) * a * a / (mi * b)) /
+                    (2 * (li + mi) * (1 - a * a / (b * b))),
+               fo = (d + (lo + mo) * c * c / (mo * d)) /
+                    (2 * (lo + mo) * (c * c / (d * d) - 1));
+  const double p = delta / (fi + fo);
+
+  for (const std::string scheme : {"nodal", "Gauss 2", "segment-based 2"})
+    for (const bool swapped : {true, false})
+      {
+        const Outcome outcome  = run(shrink_fit(swapped, scheme), p);
+        const auto    at       = outcome.log.find(warning);
+        const bool    warned   = at != std::string::npos;
+        const bool    expected = swapped && scheme != "segment-based 2";
+        check(warned == expected,
+              scheme + (swapped ? ", coarser slave: " : ", finer slave: ") +
+                (expected ? "named" : "not named") + "; the log:\n" +
+                outcome.log);
+        const double swing =
+          std::max(1 - outcome.smallest, outcome.largest - 1);
+        if (swapped && scheme == "nodal")
+          check(swing > 0.1, "the nodal swing the warning names is real");
+        if (scheme == "segment-based 2")
+          check(swing < 0.005, "segment-based: every node within 0.5 %");
+        deallog_file << std::left << std::setw(16) << scheme
+                     << (swapped ? " slave 40 against 57: " :
+                                   " slave 57 against 40: ")
+                     << (warned ? "warned" : "no warning") << ", swing "
+                     << (swing > 0.1   ? "over 10 %" :
+                         swing < 0.005 ? "under 0.5 %" :
+                                         "0.5 to 10 %")
+                     << std::endl;
+        if (warned)
+          {
+            const auto   times = outcome.log.find("its segments are ", at);
+            const double ratio = std::stod(outcome.log.substr(times + 17));
+            check(std::abs(ratio - 57.0 / 40.0) < 0.01,
+                  "the ratio named is 57 / 40");
+          }
+      }
+
+  // Modelisation E: the outer ring Q1 (slave) against the inner ring Q2 on
+  // the same segments.
+  const Outcome e = run(std::string("include ") + RING_CONTACT_SOURCE_DIR +
+                          "/prm/ssnp152e.prm\n"
+                          "subsection Contact\n"
+                          " set Integration schemes = nodal\nend\n"
+                          "subsection Load program\n"
+                          " set Program = ramp\n set Ramp steps = 1\n"
+                          "end\nsubsection Checks\n set Steps = none\nend\n",
+                        1);
+  check(e.log.find(warning) == std::string::npos,
+        "E (a linear slave on a quadratic master's segments): not named");
+  deallog_file << "E, nodal: no warning" << std::endl;
+}
