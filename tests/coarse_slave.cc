@@ -117,6 +117,32 @@ main()
           }
       }
 
+  // Bodies that start apart are judged too: the closing gap of
+  // prm/closing_gap.prm with its slave (the inner ring's outer arc) at 10
+  // segments per quarter against 20, and a gap of 0.12, more than the
+  // slave's segments are long (0.094), that the imposed displacement does
+  // not close (its checks fail; the warning is what is read).
+  {
+    std::ofstream prm("gap.prm");
+    prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/closing_gap.prm\n"
+        << "subsection Mesh\n set Mesh file = " << RING_CONTACT_SOURCE_DIR
+        << "/meshes/concentric_rings.geo\n set Geo parameters = a = 0.5, "
+           "b = 0.6, c = 0.9, ni = 10, no = 20, g = 0.12\nend\n";
+  }
+  const Outcome gap = run("include gap.prm\n", 1);
+  const auto    at  = gap.log.find(warning);
+  check(at != std::string::npos,
+        "a coarse slave 0.12 away from its master is named; the log:\n" +
+          gap.log);
+  const auto   times = gap.log.find("its segments are ", at);
+  const double ratio = std::stod(gap.log.substr(times + 17));
+  // The slave's segments on the circle of radius 0.6 against the master's
+  // on 0.72 (0.6 + 0.12), 10 against 20 per quarter.
+  check(std::abs(ratio - 2 * 0.6 / 0.72) < 0.01,
+        "the ratio named is 2 x 0.6 / 0.72");
+  deallog_file << "a gap of 0.12, slave 10 against 20: warned, ratio "
+               << std::setprecision(3) << ratio << std::endl;
+
   // Modelisation E: the outer ring Q1 (slave) against the inner ring Q2 on
   // the same segments.
   const Outcome e = run(std::string("include ") + RING_CONTACT_SOURCE_DIR +

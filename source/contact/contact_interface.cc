@@ -413,7 +413,7 @@ namespace RingContact
   }
 
   // The deepest mean gap g~_k / w_k below zero, for the warning before any load
-  // (diagnostics/initial_interpenetration.cc): a curved slave facing a faceted
+  // (diagnostics/surfaces_at_rest.cc): a curved slave facing a faceted
   // master overlaps it by 2/3 of the sagitta in g~_k / w_k, and modelisation H
   // so set up once gave 0 of 63 checks with no word of why. The test w_k > 0
   // guards the division.

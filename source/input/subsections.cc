@@ -383,7 +383,7 @@ namespace RingContact
     // 1 by default: the original's linear meshes are faceted circles. 0 is the
     // original's isoparametric choice, curved quadratic rings; with rings of
     // different degrees it puts a curved surface against a faceted one, and the
-    // two overlap before any load (diagnostics/initial_interpenetration.cc
+    // two overlap before any load (diagnostics/surfaces_at_rest.cc
     // warns of it).
     s.add("Mapping degree",
           mapping_degree,

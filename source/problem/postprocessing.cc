@@ -8,8 +8,8 @@
 // forces.
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/contact/surface_arc_length.h>
-#include <ring_contact/diagnostics/initial_interpenetration.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
+#include <ring_contact/diagnostics/surfaces_at_rest.h>
 #include <ring_contact/problem/contact_problem.h>
 
 #include <algorithm>

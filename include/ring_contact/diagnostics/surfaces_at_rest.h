@@ -1,17 +1,23 @@
-// @sect3{Diagnostics: surfaces that interpenetrate before any load}
+// @sect3{Diagnostics: the contact surfaces at rest}
 //
-// The contact pushes them apart in the first step, a load that the problem
-// does not state (a curved slave against a faceted master starts inside it
-// by up to the sagitta, which is 2 % of the element size at 40 elements
-// around a circle; at E / p = 100 that is several times the pressure
-// sought). Measured by each node's mean gap g~_k / w_k in the reference
-// state; said when deeper than 1e-4 of the slave's shortest segment
-// (round-off of touching surfaces is 1e-16 of it). The caller leaves out
-// the pairs with a body held by the contact only (rigid_body_modes.h): its
-// motion absorbs the overlap, which is then a way to start in contact (the
-// Hertz problem's cylinder).
-#ifndef ring_contact_diagnostics_initial_interpenetration_h
-#define ring_contact_diagnostics_initial_interpenetration_h
+// Three warnings read off the surfaces before the first step, each a wrong
+// result once given without a word:
+//
+// - Surfaces that interpenetrate before any load. The contact pushes them
+//   apart in the first step, a load that the problem does not state (a
+//   curved slave against a faceted master starts inside it by up to the
+//   sagitta, which is 2 % of the element size at 40 elements around a
+//   circle; at E / p = 100 that is several times the pressure sought).
+//   Measured by each node's mean gap g~_k / w_k in the reference state; said
+//   when deeper than 1e-4 of the slave's shortest segment (round-off of
+//   touching surfaces is 1e-16 of it). The caller leaves out the pairs with
+//   a body held by the contact only (rigid_body_modes.h): its motion absorbs
+//   the overlap, which is then a way to start in contact (the Hertz
+//   problem's cylinder).
+// - Surfaces too coarse for the curves they follow.
+// - A slave coarser than its master under a point-wise scheme.
+#ifndef ring_contact_diagnostics_surfaces_at_rest_h
+#define ring_contact_diagnostics_surfaces_at_rest_h
 
 #include <deal.II/lac/vector.h>
 
@@ -48,8 +54,10 @@ namespace RingContact
     /// surface of `contact` is coarser than its master where the two face
     /// each other at `solution` (the reference state): when the median ratio
     /// of a slave segment's length to that of the master segment facing it
-    /// exceeds 1.1. `slave_id` and
-    /// `master_id` name the surfaces in the message. True if it warned.
+    /// exceeds 1.1, over the slave segments that face the master (normals
+    /// opposed) and are nearest to it (within two of their lengths of the
+    /// smallest gap). `slave_id` and `master_id` name the surfaces in the
+    /// message. True if it warned.
     bool
     report_coarse_slave(ContactInterface        &contact,
                         const Vector<double>    &solution,
