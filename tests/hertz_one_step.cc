@@ -222,7 +222,10 @@ namespace
     // In finite strain the four steps too: a sliding node whose trial turns
     // past the opposite bound sticks first (ContactInterface::
     // update_friction()); without that rule Gauss 2 took 58 (mu = 0.2) and
-    // 39 (mu = 0.5) iterations in all, with it 28 and 29.
+    // 39 (mu = 0.5) iterations in all, with it 28 and 29; and the second
+    // step, after one from rest, starts from the first's state scaled as the
+    // square root of the load (ContactProblem::extrapolation_factor()):
+    // 22 to 24 in all (28 to 31 linearly extrapolated).
     if (kinematics != "small strain")
       {
         unsigned int total = 0;
@@ -230,7 +233,7 @@ namespace
           total += step.newton_iterations;
         out << "  the four steps: " << total << " Newton iterations"
             << std::endl;
-        check(total <= 35, what + ": at most 35 iterations in the four steps");
+        check(total <= 26, what + ": at most 26 iterations in the four steps");
       }
   }
 
