@@ -225,7 +225,7 @@ namespace
     // 39 (mu = 0.5) iterations in all, with it 28 and 29; and the second
     // step, after one from rest, starts from the first's state scaled as the
     // square root of the load (ContactProblem::extrapolation_factor()):
-    // 22 to 24 in all (28 to 31 linearly extrapolated).
+    // 22 to 24 in all (25 to 31 linearly extrapolated).
     if (kinematics != "small strain")
       {
         unsigned int total = 0;
