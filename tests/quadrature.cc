@@ -1,13 +1,15 @@
 // The contact quadrature rules on a slave segment (t in [0, 1]): the points
 // and weights of each scheme, and the polynomial degree each integrates
 // exactly.
-#include <ring_contact/contact/contact_surface.h>
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/contact/contact_surface.h>
 
 #include "tests.h"
 
 #include <cmath>
 #include <iomanip>
+#include <tuple>
+#include <vector>
 
 using namespace RingContact;
 using RingContactTests::check;
@@ -38,7 +40,7 @@ main()
 
   const auto show = [&](const std::string &text, const unsigned int degree) {
     const IntegrationScheme scheme = IntegrationScheme::parse(text);
-    const Quadrature<1>     q      = contact_quadrature(scheme, degree);
+    const Quadrature<1>     q      = contact_quadrature(scheme, degree, 1);
     out << std::left << std::setw(16) << scheme.name() << " on Q" << degree
         << ": " << q.size() << " points, exact to degree " << exactness(q)
         << "; points";
@@ -69,11 +71,9 @@ main()
        {"Gauss 1", "segment-based 1", "Newton-Cotes 1"})
     {
       const IntegrationScheme scheme = IntegrationScheme::parse(first_order);
-      check(contact_quadrature(scheme, 1).size() > 0,
-            first_order + " is accepted when both surfaces are linear");
       try
         {
-          contact_quadrature(scheme, 2);
+          contact_quadrature(scheme, 2, 1);
           check(false, first_order + " must be refused on a quadratic surface");
         }
       catch (const std::exception &e)
@@ -81,8 +81,43 @@ main()
           out << "refused on Q2: " << one_line_message(e) << std::endl;
         }
     }
+  // A rule needs at least as many points on a segment as the multiplier has
+  // nodes there, on linear surfaces too: one point per segment cannot see a
+  // pressure that alternates from node to node (a uniform 1 MPa came out 0,
+  // 2, 0, 2 MPa with Gauss 1 on Q1). Two points suffice for a linear
+  // multiplier; a quadratic one needs three, so Gauss 2 and Newton-Cotes 1
+  // are refused with it.
+  for (const auto &[text, multiplier_degree, accepted] :
+       std::vector<std::tuple<std::string, unsigned int, bool>>{
+         {"Gauss 1", 1, false},
+         {"segment-based 1", 1, false},
+         {"Gauss 2", 1, true},
+         {"Newton-Cotes 1", 1, true},
+         {"Gauss 2", 2, false},
+         {"segment-based 2", 2, false},
+         {"Gauss 3", 2, true},
+         {"nodal", 2, true},
+         {"Simpson 1", 2, true}})
+    {
+      const IntegrationScheme scheme = IntegrationScheme::parse(text);
+      bool                    taken  = true;
+      try
+        {
+          contact_quadrature(scheme, multiplier_degree, multiplier_degree);
+        }
+      catch (const std::exception &e)
+        {
+          taken = false;
+          out << "refused with a multiplier of degree " << multiplier_degree
+              << ": " << one_line_message(e) << std::endl;
+        }
+      check(taken == accepted,
+            text + (accepted ? " must be accepted" : " must be refused") +
+              " with a multiplier of degree " +
+              std::to_string(multiplier_degree));
+    }
 
-  for (unsigned int n = 1; n <= 10; ++n)
+  for (unsigned int n = 2; n <= 10; ++n)
     {
       const auto q = show("Gauss " + std::to_string(n), 1);
       check(q.size() == n && exactness(q) == 2 * n - 1,
@@ -108,7 +143,6 @@ main()
   // patch test by 3.4 %).
   for (unsigned int degree = 1; degree <= 4; ++degree)
     for (const std::string text : {"nodal",
-                                   "Gauss 1",
                                    "Gauss 2",
                                    "Gauss 3",
                                    "segment-based 2",
@@ -124,7 +158,7 @@ main()
         const unsigned int      declared = exactness_degree(scheme, degree);
         try
           {
-            const Quadrature<1> q = contact_quadrature(scheme, degree);
+            const Quadrature<1> q = contact_quadrature(scheme, degree, 1);
             check(declared >= degree,
                   text + " must be refused on degree " +
                     std::to_string(degree));
@@ -151,7 +185,10 @@ main()
                                 "Gauss 21",
                                 "Lobatto 3",
                                 "Newton-Cotes 3",
-                                "Gauss 2 3"})
+                                "Gauss 2 3",
+                                "nodal 3",
+                                "nodal junk",
+                                "segment-based x"})
     {
       try
         {
@@ -163,4 +200,11 @@ main()
           out << "refused: " << e.what() << std::endl;
         }
     }
+
+  // 'segment-based' alone: the points are chosen once the elements are
+  // known (ContactParameters::choose_schemes()).
+  const IntegrationScheme automatic = IntegrationScheme::parse("segment-based");
+  check(automatic.type == ContactIntegration::segment_based &&
+          automatic.n_points == 0,
+        "'segment-based' alone waits for its number of points");
 }

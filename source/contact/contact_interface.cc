@@ -47,7 +47,8 @@ namespace RingContact
           contact_quadrature(scheme,
                              std::max(slave.displacement_basis().size(),
                                       master.displacement_basis().size()) -
-                               1))
+                               1,
+                             slave.multiplier_basis().size() - 1))
       // Automatic complementarity constant: E / h of the slave surface, the
       // stiffness of a layer one element thick (closing a gap g against it
       // takes a pressure E g / h). c only chooses the active set (at the
@@ -1057,6 +1058,28 @@ namespace RingContact
     for (const auto &[dof, k] : multiplier_index)
       dofs.push_back(dof);
     return dofs;
+  }
+
+  // The points as paired by the last update(): the master's shape functions
+  // at each partner, weighted by the point's length element. A rotated copy
+  // of a sector's segment carries the original's unknowns, so its weights
+  // land on them.
+  std::map<types::global_dof_index, double>
+  ContactInterface::master_load_weights() const
+  {
+    std::map<types::global_dof_index, double> weights;
+    std::vector<double> psi(master.displacement_basis().size());
+    for (const auto &point : points)
+      {
+        if (point.projection.segment == numbers::invalid_unsigned_int)
+          continue;
+        const SurfaceSegment &segment =
+          master.segments()[point.projection.segment];
+        master.displacement_basis().evaluate(point.projection.t, psi);
+        for (unsigned int j = 0; j < psi.size(); ++j)
+          weights[segment.dofs_x[j]] += psi[j] * point.current_length;
+      }
+    return weights;
   }
 
   // Cauchy to nominal: lambda is a force per current length, the nominal

@@ -71,13 +71,31 @@ namespace RingContact
       c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     IntegrationScheme scheme{ContactIntegration::nodal, 0};
     int               n = -1;
+    std::string       rest;
     // nodal takes no number: its points follow from the surfaces' degree.
+    // Anything after it is refused ('nodal 3' is not a nodal scheme with 3
+    // points, and was once run as plain nodal).
     if (lower == "nodal")
-      return scheme;
+      {
+        if (in >> rest)
+          throw std::runtime_error("contact integration scheme '" + text +
+                                   "': nodal takes no number or other "
+                                   "word (its points are the nodes)");
+        return scheme;
+      }
+    // segment-based alone: the points its surfaces need, chosen once the
+    // elements are known (ContactParameters::choose_schemes()); 0 until then.
+    if (lower == "segment-based" && !(in >> rest))
+      {
+        scheme.type = ContactIntegration::segment_based;
+        return scheme;
+      }
+    in.clear();
+    in.str(text);
+    in >> word;
     if (!(in >> n))
       throw std::runtime_error("contact integration scheme '" + text +
                                "' needs a number of points, e.g. 'Gauss 2'");
-    std::string rest;
     if (in >> rest)
       throw std::runtime_error("contact integration scheme '" + text +
                                "' has trailing text '" + rest + "'");
@@ -117,7 +135,7 @@ namespace RingContact
       throw std::runtime_error(
         "unknown contact integration scheme '" + text +
         "' (known: nodal, Gauss n, Simpson n, Newton-Cotes n, "
-        "segment-based n)");
+        "segment-based [n])");
     scheme.n_points = static_cast<unsigned int>(n);
     return scheme;
   }
@@ -148,6 +166,41 @@ namespace RingContact
     return 0;
   }
 
+  // The multiplier has q + 1 nodes on a segment. A rule with fewer points
+  // on a segment (or, segment-based, on a piece, which on facing meshes is
+  // the whole segment) leaves a pressure that vanishes at all its points,
+  // and so exerts no force and meets no gap: with Gauss 1 on linear
+  // surfaces the pressure alternating from node to node, which the solver
+  // then adds in any amount. The Gauss-Lobatto rule of the nodal scheme,
+  // Simpson and the Newton-Cotes rules of order q or more have enough
+  // points.
+  void
+  require_points_for_multiplier(const IntegrationScheme &scheme,
+                                const unsigned int       degree,
+                                const unsigned int       multiplier_degree)
+  {
+    const unsigned int points_per_segment =
+      (scheme.type == ContactIntegration::gauss ||
+       scheme.type == ContactIntegration::segment_based) ?
+        scheme.n_points :
+      scheme.type == ContactIntegration::newton_cotes ? scheme.n_points + 1 :
+      scheme.type == ContactIntegration::simpson ? 2 * scheme.n_points + 1 :
+                                                   degree + 1;
+    if (points_per_segment < multiplier_degree + 1)
+      throw std::runtime_error(
+        "contact integration scheme '" + scheme.name() + "' has " +
+        std::to_string(points_per_segment) + " point" +
+        (points_per_segment == 1 ? "" : "s") +
+        " on a slave segment, fewer than the " +
+        std::to_string(multiplier_degree + 1) +
+        " nodes of the contact pressure there (Multiplier degree " +
+        std::to_string(multiplier_degree) +
+        "): a pressure that vanishes at its points (alternating from node "
+        "to node) is invisible to it, and the pressure is not unique; use "
+        "segment-based (the default) or Gauss " +
+        std::to_string(multiplier_degree + 1) + " or more");
+  }
+
   // @sect4{The rule of a scheme}
   //
   // `degree` is the higher displacement degree of the two surfaces
@@ -158,7 +211,9 @@ namespace RingContact
   // vertices alone left the master's mid-side nodes without contact force and
   // the pressure 10 % low at 40 elements around, first order.
   Quadrature<1>
-  contact_quadrature(const IntegrationScheme &scheme, const unsigned int degree)
+  contact_quadrature(const IntegrationScheme &scheme,
+                     const unsigned int       degree,
+                     const unsigned int       multiplier_degree)
   {
     // A quadratic segment's vertex functions vanish at its midpoint and its
     // mid-side function at its ends: a single point (Gauss 1, or one per
@@ -186,6 +241,7 @@ namespace RingContact
                            "); use nodal, Gauss 2 or more, Simpson, "
                            "Newton-Cotes 2 or more, or segment-based 2 or "
                            "more"));
+    require_points_for_multiplier(scheme, degree, multiplier_degree);
     // More generally, the contact patch test (a uniform pressure across
     // flat surfaces transmitted exactly) needs the nodal forces int lambda
     // phi_i ds of a constant pressure exact: the rule must integrate the
@@ -204,8 +260,10 @@ namespace RingContact
           " exactly, less than the degree " + std::to_string(degree) +
           " of the contact surfaces' shape functions: a uniform pressure "
           "would not be transmitted exactly (the contact patch test fails); "
-          "use nodal, Gauss " +
-          std::to_string(gauss_points) + " or more, segment-based " +
+          "use segment-based (without a number: " +
+          std::to_string(degree + 1) +
+          " points, the default), or on surfaces whose nodes face each "
+          "other nodal, Gauss " +
           std::to_string(gauss_points) + " or more" +
           (degree <= 3 ? std::string(", Simpson") : std::string()) +
           ", or Newton-Cotes " +

@@ -337,9 +337,10 @@ namespace RingContact
           }
     AssertThrow(displacement_nodes.size() <= LagrangeBasis1D::max_size,
                 ExcMessage("displacement degree above 4 is not supported"));
-    displacement               = LagrangeBasis1D(displacement_nodes);
-    multiplier                 = LagrangeBasis1D(multiplier_nodes);
-    multiplier_node_parameters = multiplier_nodes;
+    displacement                 = LagrangeBasis1D(displacement_nodes);
+    multiplier                   = LagrangeBasis1D(multiplier_nodes);
+    multiplier_node_parameters   = multiplier_nodes;
+    displacement_node_parameters = displacement_nodes;
     // Copies before neighbours: the neighbours of the continued surface join
     // the copies to each other and to the sector.
     if (sector_angle > 0)
@@ -543,6 +544,35 @@ namespace RingContact
     return SurfaceKernel::unit(
       SurfaceKernel::scaled_normal(point.dx,
                                    segment_list[segment].orientation));
+  }
+
+  // The turn at each shared vertex, from the two segments' own normals there
+  // (not the vertex normal, their average). Rotated copies are left out:
+  // they repeat the sector's own vertices.
+  std::pair<double, Point<2>>
+  ContactSurface::sharpest_turn() const
+  {
+    std::pair<double, Point<2>> sharpest{0.0, Point<2>()};
+    for (unsigned int s = 0; s < segment_list.size(); ++s)
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const SurfaceSegment &segment   = segment_list[s];
+          const unsigned int    neighbour = segment.neighbours[end];
+          if (segment.is_copy || neighbour == numbers::invalid_unsigned_int ||
+              segment_list[neighbour].is_copy)
+            continue;
+          const CurvePoint   here = reference_point(s, end);
+          const Tensor<1, 2> a =
+            SurfaceKernel::scaled_normal(here.dx, segment.orientation);
+          const Tensor<1, 2> b = SurfaceKernel::scaled_normal(
+            reference_point(neighbour, segment.neighbour_t[end]).dx,
+            segment_list[neighbour].orientation);
+          const double angle =
+            std::atan2(std::abs(a[0] * b[1] - a[1] * b[0]), a * b);
+          if (angle > sharpest.first)
+            sharpest = {angle, here.x};
+        }
+    return sharpest;
   }
 
   // Not normalised, |x'| n: the weight of the segment in a vertex normal.

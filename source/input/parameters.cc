@@ -15,14 +15,15 @@
 // The documentation strings are the program's reference manual (printed by
 // `ring_contact --print-parameters`, kept in doc/parameters.prm); the comments
 // say why the defaults and limits are what they are. Where an entry is the
-// rings', its default is the rings' modelisation A: plane stress, finite strain,
-// Q1 rings, nodal integration, the 21-step ramp checked at every step to 2 %.
+// rings', its default is the rings' modelisation A: plane stress, finite
+// strain, Q1 rings, nodal integration, the 21-step ramp checked at every step
+// to 2 %.
+#include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/scenarios/scenario.h>
-#include <ring_contact/base/utilities.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -248,6 +249,10 @@ namespace RingContact
         load.finish();
         output.finish(name);
         scenario_parameters.at(scenario)->finish(*this);
+        contact.choose_schemes(
+          scenario_parameters.at(scenario)->default_integration_schemes(),
+          scenario_parameters.at(scenario)->highest_displacement_degree(),
+          finite_elements.multiplier_degree);
       }
     catch (const ParameterError &e)
       {

@@ -407,31 +407,38 @@ namespace RingContact
 
   namespace
   {
-    // 'nodal' by default, the original's default scheme. The schemes of a list
-    // are run one after the other on the same mesh and load program, each with
-    // its own output files, so that one file compares them.
-    // Each name is parsed by IntegrationScheme::parse(); the list is the
-    // member `schemes` of ContactParameters.
+    // 'automatic' by default: the scenario's choice, made once the file is
+    // read (ContactParameters::choose_schemes()), since it depends on the
+    // scenario and the elements. The schemes of a list are run one after the
+    // other on the same mesh and load program, each with its own output
+    // files, so that one file compares them. Each name is parsed by
+    // IntegrationScheme::parse(); the list is the member `schemes` of
+    // ContactParameters, empty for 'automatic'.
     void
     add_integration_schemes(Subsection                     &s,
                             std::vector<IntegrationScheme> &schemes)
     {
       s.add("Integration schemes",
-            "nodal",
+            "automatic",
             Patterns::List(Patterns::Anything(), 1),
             "Comma-separated list; one analysis is run per scheme. "
-            "nodal: at the slave nodes; Gauss n: n Gauss points "
-            "per slave segment (1-20); Simpson n: composite "
-            "Simpson with n sub-intervals; Newton-Cotes n: closed "
-            "Newton-Cotes of order 1, 2, 4 or 6; segment-based "
-            "n: each slave segment cut where the lines through "
-            "the master vertices along their normals cross it, "
-            "n Gauss points on each piece (mortar "
-            "integration).",
+            "automatic: segment-based at the degree the surfaces need "
+            "(nodal for the rings of SSNP152, the original's). "
+            "segment-based n: each slave segment cut where the lines "
+            "through the master vertices along their normals cross it, "
+            "n Gauss points on each piece (mortar integration; without "
+            "n: the surfaces' displacement degree + 1); it passes the "
+            "contact patch test on any meshes. The point-wise schemes, "
+            "exact only where the surfaces' nodes face each other: "
+            "nodal: at the slave nodes; Gauss n: n Gauss points per "
+            "slave segment (1-20); Simpson n: composite Simpson with n "
+            "sub-intervals; Newton-Cotes n: closed Newton-Cotes of "
+            "order 1, 2, 4 or 6.",
             [&schemes](const std::string &text) {
-              // The action runs on the default first, then on the file's value:
-              // without the clear, 'nodal' would head every list.
+              // The action runs on the default first, then on the file's value.
               schemes.clear();
+              if (Utilities::trim(text) == "automatic")
+                return;
               for (const auto &entry : Utilities::split_string_list(text))
                 {
                   // parse() knows the schemes but not the file: its message
@@ -448,13 +455,6 @@ namespace RingContact
                               "Integration schemes",
                               e.what());
                     }
-                  // One run per scheme: a scheme listed twice would run twice
-                  // and write its files over its own.
-                  for (unsigned int k = 0; k + 1 < schemes.size(); ++k)
-                    require(schemes[k].name() != schemes.back().name(),
-                            "Contact",
-                            "Integration schemes",
-                            "lists '" + schemes.back().name() + "' twice");
                 }
             });
     }
@@ -567,6 +567,51 @@ namespace RingContact
             "Slave boundary",
             "must differ from 'Master boundary' (both are " +
               std::to_string(slave_boundary_id) + ")");
+  }
+
+  // The schemes that run: the scenario's default where the file names none,
+  // and 'segment-based' without a number given the points its surfaces need.
+  // p + 1 Gauss points on each piece, as the bulk's rule has per direction:
+  // exact to degree 2 p + 1, above the degree p + q of the mortar integrand
+  // Phi_k psi_i on a straight piece (q <= p, the multiplier's degree), with
+  // a margin for the curved surfaces' length element and normal, and more
+  // points than the multiplier has nodes on a piece (see contact_quadrature()).
+  void
+  ContactParameters::choose_schemes(const std::string &scenario_default,
+                                    const unsigned int displacement_degree,
+                                    const unsigned int multiplier_degree)
+  {
+    if (schemes.empty())
+      for (const auto &entry : Utilities::split_string_list(scenario_default))
+        schemes.push_back(IntegrationScheme::parse(entry));
+    for (IntegrationScheme &scheme : schemes)
+      if (scheme.type == ContactIntegration::segment_based &&
+          scheme.n_points == 0)
+        scheme.n_points = displacement_degree + 1;
+    // A rule too poor for the multiplier is refused here, at the entry's
+    // line, before any scheme of the list has run.
+    for (const IntegrationScheme &scheme : schemes)
+      try
+        {
+          require_points_for_multiplier(scheme,
+                                        displacement_degree,
+                                        multiplier_degree);
+        }
+      catch (const std::exception &e)
+        {
+          require(false, "Contact", "Integration schemes", e.what());
+        }
+    // One run per scheme: a scheme listed twice would run twice and write
+    // its files over its own.
+    for (unsigned int k = 0; k < schemes.size(); ++k)
+      for (unsigned int j = 0; j < k; ++j)
+        require(schemes[j].name() != schemes[k].name(),
+                "Contact",
+                "Integration schemes",
+                "lists '" + schemes[k].name() + "' twice" +
+                  " ('segment-based' is segment-based " +
+                  std::to_string(displacement_degree + 1) +
+                  " on these elements)");
   }
 
   // @sect4{Subsection Load program}

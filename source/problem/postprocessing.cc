@@ -57,6 +57,23 @@ namespace RingContact
                                     contact_interfaces(),
                                     parameters.contact.friction_coefficient > 0,
                                     log);
+    // Coulomb friction's discrete problem is proved to have one solution
+    // only for small coefficients; past about 1 a second one can appear, as
+    // it does in the frictional patch test (tests/friction_two_solutions:
+    // its uniform state and one with an end node open both solve it), and
+    // Newton's method converges to either without a sign. Said, not refused:
+    // the coefficient is the user's, and the answer is often the sought one.
+    if (parameters.contact.friction_coefficient > 1)
+      log << "Warning: the friction coefficient "
+          << parameters.contact.friction_coefficient
+          << " is above 1, where Coulomb friction's discrete problem may have "
+             "more than one solution (uniqueness is proved for small "
+             "coefficients only; Hassani, Hild, Ionescu and Sakki 2003 "
+             "compute where it is lost), and Newton's method finds one of "
+             "them, not necessarily the one sought: the frictional patch test "
+             "at 2 has its uniform state and a second one with an end node "
+             "open (doc/validation.md). Check the answer along another path "
+             "(more load steps, another mesh).\n";
     log << "Scheme " << scheme.name() << progress->scheme_label() << ": "
         << triangulation.n_active_cells() << " cells, " << dof_handler.n_dofs()
         << " unknowns, " << n_contact_nodes() << " contact pressure nodes, "
@@ -65,8 +82,7 @@ namespace RingContact
     for (unsigned int i = 0; i < contacts.size(); ++i)
       {
         const auto &[slave, master] = pairs[i];
-        Diagnostics::report_coarse_slave(
-          *contacts[i], solution, scheme, slave, master, log);
+        report_non_matching_surfaces(i);
         // A body of the pair held by the contact only absorbs an overlap
         // by its motion: a way to start in contact (the Hertz problem's
         // cylinder), not said.
@@ -82,6 +98,37 @@ namespace RingContact
     // thrown away: a quantity that cannot be evaluated throws now.
     HistoryRow at_rest;
     scenario->report(*this, at_rest);
+  }
+
+  // A point-wise scheme (nodal, Gauss, Simpson, Newton-Cotes) on a pair
+  // whose surfaces do not match fails the contact patch test there: its load
+  // transfer is measured against the mortar one on fresh interfaces of the
+  // same pair (the problem's own are left as they are), and a departure is
+  // said with its figures (diagnostics/surfaces_at_rest.h).
+  void
+  ContactProblem::report_non_matching_surfaces(const unsigned int pair) const
+  {
+    if (scheme.type == ContactIntegration::segment_based)
+      return;
+    const auto [slave, master] = parameters.contact_pairs()[pair];
+    const bool linear          = contacts[pair]->small_strain();
+    const auto pointwise =
+      make_contact_interface(slave, master, scheme, linear);
+    const auto mortar = make_contact_interface(
+      slave,
+      master,
+      IntegrationScheme{ContactIntegration::segment_based, 6},
+      linear);
+    const Diagnostics::LoadTransfer transfer =
+      Diagnostics::measure_load_transfer(*pointwise, *mortar, solution);
+    Diagnostics::report_non_matching(
+      transfer,
+      Diagnostics::facing_length_ratio(*pointwise, solution),
+      Diagnostics::vertices_conform(*pointwise, solution),
+      scheme,
+      slave,
+      master,
+      log);
   }
 
   // @sect4{The contact nodes}

@@ -402,27 +402,9 @@ namespace RingContact
     pair_of_node.clear();
     for (const auto &[slave, master] : parameters.contact_pairs())
       {
-        // Every pair shares subsection Contact's schemes and constants;
-        // only its surfaces are its own. The automatic complementarity
-        // constant c = E / h takes the stiffer body's modulus; c decides
-        // the active set only, not the converged solution.
-        ContactParameters pair_parameters  = parameters.contact;
-        pair_parameters.slave_boundary_id  = slave;
-        pair_parameters.master_boundary_id = master;
-        const Body &slave_body =
-          bodies[fe_index_of.at(body_of_boundary.at(slave))];
-        const Body &master_body =
-          bodies[fe_index_of.at(body_of_boundary.at(master))];
-        contacts.push_back(std::make_unique<ContactInterface>(
-          dof_handler,
-          pair_parameters,
-          scheme,
-          slave_body.mapping_degree,
-          master_body.mapping_degree,
-          std::max(slave_body.material.youngs_modulus,
-                   master_body.material.youngs_modulus),
-          geometrically_linear,
-          sector));
+        contacts.push_back(
+          make_contact_interface(slave, master, scheme, geometrically_linear));
+        refuse_slave_corners(contacts.back()->slave_surface(), slave);
         // Every scheme of the file suits this pair's surfaces: known now,
         // not after the schemes listed before it have run. A rule must
         // integrate the surfaces' shape functions exactly (the contact
@@ -437,7 +419,9 @@ namespace RingContact
         for (const auto &other : parameters.contact.schemes)
           try
             {
-              contact_quadrature(other, surface_degree);
+              contact_quadrature(other,
+                                 surface_degree,
+                                 parameters.finite_elements.multiplier_degree);
             }
           catch (const std::exception &e)
             {
@@ -456,6 +440,66 @@ namespace RingContact
         for (const auto node : contacts.back()->tangential_dofs())
           pair_of_node[node] = contacts.size() - 1;
       }
+  }
+
+  // A slave surface that turns sharply at a node: that node's pressure is one
+  // unknown for both faces, and its weighted gap the mean of the gaps along
+  // both. Where one face is pressed and the other turns away (a block's base
+  // and its side tagged together), the side's gaps open the node while the
+  // corner penetrates, and the pressure beside it is wrong without a word
+  // (doc/validation.md, "Silent wrong answers"). A curved surface turns by
+  // its segments' angle, 360 / n degrees for n segments around a circle:
+  // the limit of 30 degrees is met at 12.
+  void
+  ContactProblem::refuse_slave_corners(const ContactSurface    &slave,
+                                       const types::boundary_id slave_id) const
+  {
+    const auto [turn, corner] = slave.sharpest_turn();
+    const double degrees      = turn * 180 / numbers::PI;
+    if (degrees <= 30)
+      return;
+    std::ostringstream message;
+    message << std::setprecision(3) << "the slave surface (boundary "
+            << slave_id << ") has a corner: it turns by " << degrees
+            << " degrees at (" << corner[0] << ", " << corner[1]
+            << "), where the node's one contact pressure would hold both "
+               "faces and average their gaps, so that it could penetrate "
+               "while open; give the faces on either side of the corner "
+               "tags of their own and make only the face that meets the "
+               "master the slave (or one contact pair per face), or mesh a "
+               "rounded corner with segments that turn by at most 30 degrees";
+    throw std::runtime_error(message.str());
+  }
+
+  // One pair's interface under `scheme`. Every pair shares subsection
+  // Contact's schemes and constants; only its surfaces are its own. The
+  // automatic complementarity constant c = E / h takes the stiffer body's
+  // modulus; c decides the active set only, not the converged solution.
+  // Also called for the diagnostics before the first step, which compare a
+  // point-wise scheme's load transfer with the mortar one's on the same
+  // surfaces (diagnostics/surfaces_at_rest.h).
+  std::unique_ptr<ContactInterface>
+  ContactProblem::make_contact_interface(const types::boundary_id slave,
+                                         const types::boundary_id master,
+                                         const IntegrationScheme &scheme,
+                                         const bool geometrically_linear) const
+  {
+    ContactParameters pair_parameters  = parameters.contact;
+    pair_parameters.slave_boundary_id  = slave;
+    pair_parameters.master_boundary_id = master;
+    const Body &slave_body = bodies[fe_index_of.at(body_of_boundary.at(slave))];
+    const Body &master_body =
+      bodies[fe_index_of.at(body_of_boundary.at(master))];
+    return std::make_unique<ContactInterface>(
+      dof_handler,
+      pair_parameters,
+      scheme,
+      slave_body.mapping_degree,
+      master_body.mapping_degree,
+      std::max(slave_body.material.youngs_modulus,
+               master_body.material.youngs_modulus),
+      geometrically_linear,
+      sector);
   }
 
   // The bulk couplings, and those of the current contact pairs.

@@ -329,6 +329,14 @@ namespace RingContact
                       const double          reference_pressure,
                       const PressureMeasure measure) const;
 
+    /// The weight a unit pressure on the slave puts on each master node
+    /// under this interface's scheme and its last update(): the sum over the
+    /// slave points of the node's shape function at the partner times the
+    /// point's length element, keyed by the node's x unknown (the load
+    /// transfer of the contact patch test, diagnostics/surfaces_at_rest.h).
+    std::map<types::global_dof_index, double>
+    master_load_weights() const;
+
     const ContactSurface &
     slave_surface() const
     {

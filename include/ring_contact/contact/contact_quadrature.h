@@ -29,7 +29,9 @@ namespace RingContact
   struct IntegrationScheme
   {
     ContactIntegration type;
-    unsigned int       n_points; ///< n (meaning depends on the type)
+    unsigned int       n_points; ///< n (meaning depends on the type; 0 for
+                                 ///< segment-based until the elements
+                                 ///< choose it)
 
     /// "nodal", "Gauss 3", "Simpson 2", "Newton-Cotes 4", "segment-based 3".
     std::string
@@ -52,9 +54,21 @@ namespace RingContact
   /// one point per segment or piece, and the trapezoid rule.
   /// Also throws for a rule that does not integrate the shape functions of
   /// a surface of that degree exactly (see exactness_degree()).
+  /// Throws too for a rule with fewer points on a segment than the
+  /// multiplier of degree `multiplier_degree` has nodes there: a pressure
+  /// vanishing at every point would be free.
   Quadrature<1>
   contact_quadrature(const IntegrationScheme &scheme,
-                     const unsigned int       degree);
+                     const unsigned int       degree,
+                     const unsigned int       multiplier_degree);
+
+  /// Throw, with the reason, when the scheme's rule has fewer points on a
+  /// slave segment (on surfaces of displacement degree `degree`) than the
+  /// multiplier of degree `multiplier_degree` has nodes there.
+  void
+  require_points_for_multiplier(const IntegrationScheme &scheme,
+                                const unsigned int       degree,
+                                const unsigned int       multiplier_degree);
 
   /// The highest polynomial degree the scheme's rule integrates exactly on
   /// a segment (on each piece, for segment-based integration) whose

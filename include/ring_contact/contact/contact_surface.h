@@ -17,8 +17,8 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
-#include <ring_contact/input/parameters.h>
 #include <ring_contact/contact/surface_kernel.h>
+#include <ring_contact/input/parameters.h>
 
 #include <array>
 #include <map>
@@ -70,8 +70,8 @@ namespace RingContact
     static constexpr unsigned int max_size = 5;
 
   private:
-    unsigned int                    n_nodes = 0;
-    std::array<double, max_size>    nodes{};
+    unsigned int                 n_nodes = 0;
+    std::array<double, max_size> nodes{};
     /// 1 / (t_i - t_j) for j != i.
     std::array<std::array<double, max_size>, max_size> inverse_differences{};
   };
@@ -180,6 +180,14 @@ namespace RingContact
       return multiplier_node_parameters;
     }
 
+    /// Parameters t of the displacement nodes, in the order of
+    /// SurfaceSegment::dofs_x and dofs_y.
+    const std::vector<double> &
+    displacement_nodes() const
+    {
+      return displacement_node_parameters;
+    }
+
     /// Read the current nodal displacements from the solution and rebuild
     /// the search tree of the current segments.
     void
@@ -260,6 +268,13 @@ namespace RingContact
     double
     min_segment_length() const;
 
+    /// The largest angle by which the surface turns at a vertex between two
+    /// of its segments (the angle between their outward normals there, in
+    /// the reference configuration, in radians), and that vertex; 0 on a
+    /// surface without shared vertices.
+    std::pair<double, Point<2>>
+    sharpest_turn() const;
+
   private:
     /// Add the rotated copies of the sector's segments that lie in the
     /// window, and give every vertex of the continued surface one index
@@ -300,6 +315,7 @@ namespace RingContact
     LagrangeBasis1D             displacement;
     LagrangeBasis1D             multiplier;
     std::vector<double>         multiplier_node_parameters;
+    std::vector<double>         displacement_node_parameters;
     /// Vertex normals at both ends of each segment (set by update()).
     std::vector<std::array<Tensor<1, 2>, 2>> vertex_normals;
 

@@ -15,7 +15,9 @@
 //   the overlap, which is then a way to start in contact (the Hertz
 //   problem's cylinder).
 // - Surfaces too coarse for the curves they follow.
-// - A slave coarser than its master under a point-wise scheme.
+// - A point-wise scheme on surfaces whose nodes do not face each other: it
+//   fails the contact patch test there, and the pressure swings from node to
+//   node whatever the mesh size.
 #ifndef ring_contact_diagnostics_surfaces_at_rest_h
 #define ring_contact_diagnostics_surfaces_at_rest_h
 
@@ -49,18 +51,55 @@ namespace RingContact
                            const Vector<double> &solution,
                            std::ostream         &log);
 
-    /// Warn in `log` when `scheme` evaluates the contact at points (nodal,
-    /// Gauss, Simpson, Newton-Cotes: not segment-based) and the slave
-    /// surface of `contact` is coarser than its master where the two face
-    /// each other at `solution` (the reference state): when the median ratio
-    /// of a slave segment's length to that of the master segment facing it
-    /// exceeds 1.1, over the slave segments that face the master (normals
-    /// opposed) and are nearest to it (within two of their lengths of the
-    /// smallest gap). `slave_id` and `master_id` name the surfaces in the
-    /// message. True if it warned.
+    /// What a uniform pressure on the slave surface gives the master's
+    /// nodes under a point-wise scheme, as a ratio to what the mortar
+    /// (segment-based) transfer gives them, over the master nodes that the
+    /// slave covers whole (the contact patch test; exact: 1).
+    struct LoadTransfer
+    {
+      double       lowest  = 1;           ///< smallest ratio
+      double       highest = 1;           ///< largest ratio
+      Point<2>     lowest_at, highest_at; ///< where (reference position)
+      unsigned int n_nodes = 0;           ///< master nodes compared
+    };
+
+    /// Measure the load transfer of `pointwise` (an interface under a
+    /// point-wise scheme) against `mortar` (one of the same pair under
+    /// segment-based integration) in the state `solution` (the reference
+    /// state), with a unit pressure on every slave node. Both are paired
+    /// anew in that state.
+    LoadTransfer
+    measure_load_transfer(ContactInterface     &pointwise,
+                          ContactInterface     &mortar,
+                          const Vector<double> &solution);
+
+    /// The median ratio of a slave segment's length to that of the master
+    /// segment facing it, over the slave segments that face the master
+    /// (normals opposed) and are nearest to it (within two of their lengths
+    /// of the smallest gap); 0 if none faces it. Above 1: the slave is the
+    /// coarser surface.
+    double
+    facing_length_ratio(ContactInterface     &contact,
+                        const Vector<double> &solution);
+
+    /// True if the vertices of each surface of `contact` that face the
+    /// other surface land on its vertices in the state `solution` (the
+    /// meshes conform along the contact, whatever their degrees).
     bool
-    report_coarse_slave(ContactInterface        &contact,
-                        const Vector<double>    &solution,
+    vertices_conform(ContactInterface &contact, const Vector<double> &solution);
+
+    /// Warn in `log` when the point-wise `scheme` fails the contact patch
+    /// test on the surfaces of a pair (`transfer` departs from 1 by more
+    /// than 1e-3) and the surfaces are not `conforming` (vertices_conform():
+    /// there a departure is the rule's error on curved segments, which
+    /// refinement removes, not a failed patch test), with the measured
+    /// figures, what to expect, and the way out; `length_ratio`
+    /// (facing_length_ratio()) adds that the slave is the coarser surface.
+    /// `slave_id` and `master_id` name the surfaces. True if it warned.
+    bool
+    report_non_matching(const LoadTransfer      &transfer,
+                        const double             length_ratio,
+                        const bool               conforming,
                         const IntegrationScheme &scheme,
                         const types::boundary_id slave_id,
                         const types::boundary_id master_id,

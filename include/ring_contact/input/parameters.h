@@ -102,8 +102,8 @@ namespace RingContact
 
   struct MeshParameters
   {
-    MeshSource  source;
-    std::string mesh_file; ///< absolute, resolved against the .prm's folder
+    MeshSource   source;
+    std::string  mesh_file; ///< absolute, resolved against the .prm's folder
     unsigned int global_refinements;
     /// Numbers handed to a .geo mesh file (gmsh's -setnumber), in order.
     std::vector<std::pair<std::string, double>> geo_numbers;
@@ -170,8 +170,10 @@ namespace RingContact
 
   struct ContactParameters
   {
-    unsigned int                   slave_boundary_id;
-    unsigned int                   master_boundary_id;
+    unsigned int slave_boundary_id;
+    unsigned int master_boundary_id;
+    /// The schemes to run, in order (empty until choose_schemes() when the
+    /// file names none).
     std::vector<IntegrationScheme> schemes;
     bool                           smooth_master_normals;
     double                         complementarity_constant; ///< 0: automatic
@@ -184,6 +186,16 @@ namespace RingContact
     /// Slave and master differ.
     void
     finish() const;
+    /// Once the scenario is known: the scenario's default schemes
+    /// (`scenario_default`, a list as the entry takes) where the file names
+    /// none ('automatic'), and the number of points of a 'segment-based'
+    /// without one, for surfaces of displacement degree up to
+    /// `displacement_degree`. Refuses a scheme listed twice, and one with
+    /// too few points for a multiplier of degree `multiplier_degree`.
+    void
+    choose_schemes(const std::string &scenario_default,
+                   const unsigned int displacement_degree,
+                   const unsigned int multiplier_degree);
   };
 
   struct LoadParameters
@@ -285,6 +297,20 @@ namespace RingContact
       return {};
     }
 
+    /// The contact integration schemes a file that names none runs, as the
+    /// entry Contact/Integration schemes writes them: segment-based at the
+    /// degree the surfaces need by default, which passes the contact patch
+    /// test on any meshes.
+    virtual std::string
+    default_integration_schemes() const
+    {
+      return "segment-based";
+    }
+
+    /// The highest displacement degree of the bodies (after finish()).
+    virtual unsigned int
+    highest_displacement_degree() const = 0;
+
     /// The contact pairs after the one of subsection Contact (none by
     /// default): slave and master boundary tags.
     virtual std::vector<std::pair<unsigned int, unsigned int>>
@@ -307,7 +333,7 @@ namespace RingContact
     /// Every scenario's entries, declared (see ScenarioParameters).
     Parameters();
 
-    std::string             prm_file;
+    std::string prm_file;
     /// Problem/Scenario: the name of a registered scenario (scenario.h).
     std::string             scenario;
     MeshParameters          mesh;

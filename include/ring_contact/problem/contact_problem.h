@@ -249,6 +249,16 @@ namespace RingContact
     make_linear_system();
     void
     make_contact_interfaces();
+    /// Refuse a slave surface with a corner (a turn above 30 degrees).
+    void
+    refuse_slave_corners(const ContactSurface    &slave,
+                         const types::boundary_id slave_id) const;
+    /// One pair's interface (slave and master boundary tags) under `scheme`.
+    std::unique_ptr<ContactInterface>
+    make_contact_interface(const types::boundary_id slave,
+                           const types::boundary_id master,
+                           const IntegrationScheme &scheme,
+                           const bool               geometrically_linear) const;
     void
     make_sparsity_pattern();
     /// @}
@@ -434,6 +444,10 @@ namespace RingContact
     /// motions that only the contact holds, surfaces that interpenetrate.
     void
     diagnose_start();
+    /// Warn when the scheme is point-wise and fails the contact patch test
+    /// on the surfaces of contact pair `pair` (surfaces_at_rest.h).
+    void
+    report_non_matching_surfaces(const unsigned int pair) const;
     /// @}
 
     // @sect4{The data}

@@ -77,6 +77,12 @@ namespace RingContact
       double       youngs_modulus_upper, poissons_ratio_upper;
       unsigned int degree_lower, degree_upper;
 
+      unsigned int
+      highest_displacement_degree() const override
+      {
+        return std::max(degree_lower, degree_upper);
+      }
+
       void
       add_parameters(ParameterHandler &prm) override
       {

@@ -36,6 +36,7 @@
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameters.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -208,6 +209,15 @@ namespace RingContact
     more_contact_pairs() const override
     {
       return contact_pairs;
+    }
+
+    unsigned int
+    highest_displacement_degree() const override
+    {
+      unsigned int degree = 1;
+      for (const BodyParameters &body : bodies)
+        degree = std::max(degree, body.degree);
+      return degree;
     }
 
   private:

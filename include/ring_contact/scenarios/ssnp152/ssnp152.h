@@ -17,6 +17,8 @@
 
 #include <ring_contact/input/parameters.h>
 
+#include <algorithm>
+
 namespace RingContact
 {
   namespace Ssnp152
@@ -86,13 +88,28 @@ namespace RingContact
       /// The mapping degree of a ring (material id 100 or 101): the
       /// common Mapping degree, or (0) its displacement degree.
       unsigned int
-      mapping_degree_of(const unsigned int              ring,
+      mapping_degree_of(const unsigned int             ring,
                         const FiniteElementParameters &fe) const;
 
       void
       add_parameters(ParameterHandler &prm) override;
       void
       finish(Parameters &parameters) override;
+
+      /// The original's default, the nodal scheme (its modelisations name
+      /// their schemes in prm/), which Code_Aster's values are reproduced
+      /// with.
+      std::string
+      default_integration_schemes() const override
+      {
+        return "nodal";
+      }
+
+      unsigned int
+      highest_displacement_degree() const override
+      {
+        return std::max(degree_outer, degree_inner);
+      }
 
     private:
       /// The entries of subsection Mesh.
