@@ -7,17 +7,22 @@
 // meshes on the contact arcs, ni = no matching ones whose slave nodes face
 // the master's vertices.
 // Tags (physical curves): 10 the inner ring's outer arc (r = b), 11 its inner
-// arc (r = a), 12 its side on y = 0, 13 its side on x = 0; 20 the outer
-// ring's inner arc (r = d), 21 its outer arc (r = c), 22 its side on y = 0,
-// 23 its side on x = 0.
+// arc (r = a), 12 its side on y = 0, 13 its other side (x = 0 for the
+// quarter); 20 the outer ring's inner arc (r = d), 21 its outer arc (r = c),
+// 22 its side on y = 0, 23 its other side. `angle` (degrees, below 180) is
+// the sector's: 90 by default, the quarter.
 DefineConstant[ a = 0.5, b = 0.6, g = 1e-3, c = 0.7, ni = 20, no = 20,
-                nr = 4 ];
+                nr = 4, angle = 90 ];
 d = b + g;
+ca = Cos(angle * Pi / 180); sa = Sin(angle * Pi / 180);
+If (angle == 90) // exactly on x = 0, as before the angle was a parameter
+  ca = 0; sa = 1;
+EndIf
 
 Point(1) = {0, 0, 0};
 // The inner ring
 Point(2) = {a, 0, 0}; Point(3) = {b, 0, 0};
-Point(4) = {0, b, 0}; Point(5) = {0, a, 0};
+Point(4) = {b * ca, b * sa, 0}; Point(5) = {a * ca, a * sa, 0};
 Line(1) = {2, 3};
 Circle(2) = {3, 1, 4};
 Line(3) = {4, 5};
@@ -31,7 +36,7 @@ Recombine Surface{1};
 
 // The outer ring
 Point(6) = {d, 0, 0}; Point(7) = {c, 0, 0};
-Point(8) = {0, c, 0}; Point(9) = {0, d, 0};
+Point(8) = {c * ca, c * sa, 0}; Point(9) = {d * ca, d * sa, 0};
 Line(5) = {6, 7};
 Circle(6) = {7, 1, 8};
 Line(7) = {8, 9};
