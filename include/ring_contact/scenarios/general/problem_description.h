@@ -198,6 +198,10 @@ namespace RingContact
     /// The entries set in a Body or Contact pair slot beyond the numbers.
     void
     refuse_unread_slots(const Parameters &parameters) const;
+    /// The entries set in a Boundary condition or Check slot whose Type or
+    /// Quantity the file leaves at none.
+    void
+    refuse_idle_slots(const Parameters &parameters) const;
     /// The boundary conditions against the contact surfaces and each other.
     void
     check_boundary_conditions(
