@@ -306,5 +306,33 @@ main()
           "a slot switched off by the file is not refused");
     deallog_file << "switched off: read, no condition and no check"
                  << std::endl;
+
+    // Problem/Constants is split at the commas outside parentheses: a
+    // function of two arguments is one value; bad input keeps its messages.
+    write("two_argument_constants.prm",
+          head + "subsection Problem\n  set Constants = a = 2, b = 3, "
+                 "m = min(a, b), th = atan2(b, a),\nend\n");
+    Parameters p;
+    p.read("two_argument_constants.prm");
+    const auto &constants = p.scenario_entries<ProblemParameters>().constants;
+    check(constants.size() == 4 && constants.at("m") == 2 &&
+            constants.at("th") == std::atan2(3., 2.),
+          "min(a, b) and atan2(b, a) as constants");
+    deallog_file << "constants with commas inside parentheses: m = "
+                 << constants.at("m") << ", th = " << constants.at("th")
+                 << std::endl;
+    for (const std::string constants :
+         {"a = min(1, 2", "a = 1, 2", "a = 1), b = 2", "a = max(1, 2)) + 1"})
+      {
+        write("bad_constants.prm",
+              head + "subsection Problem\n  set Constants = " + constants +
+                "\nend\n");
+        const std::string error = error_of("bad_constants.prm");
+        check(error.find("parameter 'Constants' in subsection 'Problem'") !=
+                std::string::npos,
+              "'" + constants + "' refused: " + error);
+        deallog_file << "constants '" << constants << "': " << error
+                     << std::endl;
+      }
   }
 }

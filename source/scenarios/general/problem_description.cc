@@ -161,9 +161,8 @@ namespace RingContact
   } // namespace
 
   // 'name = value, name = value' of the entry Problem/Constants. The
-  // items are split at every comma (get_assignments()), so a value is a
-  // number or an expression without one: max(a, b) belongs in the
-  // expressions that use it, not here.
+  // items are split at the commas outside parentheses (get_assignments()),
+  // so that a value may be min(a, b) or atan2(y, x).
   std::map<std::string, double>
   parse_constants(const std::string &text)
   {

@@ -70,7 +70,8 @@ namespace RingContact
             "Named constants for every expression: 'name = "
             "value' pairs separated by commas, each value a "
             "number or an expression of the constants before "
-            "it, e.g. 'R = 1, E = 2e11, q = 1e6'.",
+            "it, e.g. 'R = 1, E = 2e11, q = 1e6, a = min(R, 2)' "
+            "(a comma inside parentheses is the expression's).",
             // Parsed at its own line: a bad constant is refused where it
             // is written, and the expressions, checked in finish(), see
             // the values.
