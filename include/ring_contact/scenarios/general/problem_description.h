@@ -116,7 +116,9 @@ namespace RingContact
     /// of the pressure against the reference expression, a function of x,
     /// y and t, ||p_h - p_ref|| / ||p_ref||.
     contact_pressure_l2_error,
-    resultant_force_x, ///< sum of the nodal forces of a boundary
+    /// The resultant of the traction on a boundary: its load, or its part
+    /// of the reactions (BoundaryResultants).
+    resultant_force_x,
     resultant_force_y,
     displacement_x, ///< at the point (reference coordinates)
     displacement_y
