@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace RingContact
 {
@@ -169,8 +170,9 @@ namespace RingContact
     residual_magnitude = 0;
     // Counted afresh: the Newton loop and the line search judge the state
     // just assembled, and reject it if any point is inverted.
-    n_inverted = 0;
-    min_det_F  = std::numeric_limits<double>::max();
+    n_inverted        = 0;
+    n_undefined_det_F = 0;
+    min_det_F         = std::numeric_limits<double>::max();
 
     assemble_contact_terms();
     // At the first assembly: the partition and the mappings are known, and
@@ -202,7 +204,9 @@ namespace RingContact
              {&internal_force, &external_force, &residual_magnitude})
           sum_over_processes(*v, communicator);
         n_inverted = Utilities::MPI::sum(n_inverted, communicator);
-        min_det_F  = Utilities::MPI::min(min_det_F, communicator);
+        n_undefined_det_F =
+          Utilities::MPI::sum(n_undefined_det_F, communicator);
+        min_det_F = Utilities::MPI::min(min_det_F, communicator);
         for (const BoundaryLoad &load : boundary_loads)
           for (unsigned int d = 0; d < 2; ++d)
             applied_resultant[load.boundary_id][d] =
@@ -319,13 +323,16 @@ namespace RingContact
             // evaluated there (the neo-Hookean and logarithmic laws take
             // ln J), and the Newton loop rejects the state; a line search
             // trial halves its step instead. The negated test also counts a
-            // NaN det F.
+            // NaN det F (a gradient whose products overflow), apart:
+            // std::min() skips a NaN, and min_det_F, still its initial
+            // max(), would have been reported as "det F = 1.79769e+308 <= 0".
             const double det_F =
               determinant(unit_symmetric_tensor<2>() + grad_u[q]);
             min_det_F = std::min(min_det_F, det_F);
             if (!(det_F > 0))
               {
                 ++n_inverted;
+                n_undefined_det_F += std::isnan(det_F) ? 1 : 0;
                 continue;
               }
             // Without the tangent the law gives the stress alone, and no
@@ -380,6 +387,28 @@ namespace RingContact
                          internal_force,
                          cell->active_cell_index());
       }
+  }
+
+  // The reason a state with points of det F <= 0 is rejected, for the
+  // Newton log and the step's failure: the inverted points with the
+  // smallest det F, and apart those where det F is not a number, whose
+  // det F has no value to give (the displacement is finite, which the
+  // assembly checked first, but its gradient's products overflow: inf -
+  // inf).
+  std::string
+  ContactProblem::inverted_state_reason() const
+  {
+    std::ostringstream reason;
+    const unsigned int n_negative = n_inverted - n_undefined_det_F;
+    if (n_negative > 0)
+      reason << "inverted elements: det F = " << min_det_F << " <= 0 at "
+             << n_negative << " quadrature points";
+    if (n_undefined_det_F > 0)
+      reason << (n_negative > 0 ? "; " : "") << "det F is not a number at "
+             << n_undefined_det_F << " quadrature points (the displacement "
+             << "gradient overflows in it: an iterate far beyond any "
+             << "physical state)";
+    return reason.str();
   }
 
   // Add a cell's (or face's) matrix and right-hand side -R to the system,

@@ -1010,10 +1010,7 @@ namespace RingContact
       }
     if (n_inverted > 0)
       {
-        std::ostringstream reason;
-        reason << "inverted elements: det F = " << min_det_F << " <= 0 at "
-               << n_inverted << " quadrature points";
-        failure_reason = reason.str();
+        failure_reason = inverted_state_reason();
         if (parameters.newton.verbose)
           log << "    Newton " << std::setw(2) << it << "  " << failure_reason
               << '\n';

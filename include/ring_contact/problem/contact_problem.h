@@ -342,6 +342,10 @@ namespace RingContact
     /// A signal, or inverted elements: the iteration must not go on.
     bool
     must_stop(const unsigned int it);
+    /// Why the state last assembled is rejected: its inverted points (det
+    /// F <= 0, the smallest given) and those where det F is not a number.
+    std::string
+    inverted_state_reason() const;
     /// The update applied (whole, or through the line search); false when
     /// the step fails.
     bool
@@ -529,8 +533,12 @@ namespace RingContact
     Vector<double> residual_magnitude;
     /// residual_magnitude at the last assembly with the tangent.
     Vector<double> tangent_magnitude;
-    unsigned int   n_inverted = 0;
-    double         min_det_F  = 1;
+    /// Quadrature points where det F is not positive at the last
+    /// assembly, those where it is not a number among them, and the
+    /// smallest of the numbers (see inverted_state_reason()).
+    unsigned int n_inverted        = 0;
+    unsigned int n_undefined_det_F = 0;
+    double       min_det_F         = 1;
     /// Whether the system last assembled has its tangent (see Assembly).
     bool tangent_assembled = false;
     /// The reference geometry of this process's cells for the assembly
