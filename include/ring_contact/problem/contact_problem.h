@@ -343,9 +343,16 @@ namespace RingContact
     bool
     must_stop(const unsigned int it);
     /// Why the state last assembled is rejected: its inverted points (det
-    /// F <= 0, the smallest given) and those where det F is not a number.
+    /// F <= 0, the smallest given), those where det F is not a number, and
+    /// those outside the material law.
     std::string
     inverted_state_reason() const;
+    /// Whether `material` has no state at `grad_u` (MaterialLaw::
+    /// in_range()): the point is then counted as rejected.
+    bool
+    outside_law(const Material          &material,
+                const Tensor<2, 2>      &grad_u,
+                const types::material_id body);
     /// The update applied (whole, or through the line search); false when
     /// the step fails.
     bool
@@ -533,12 +540,16 @@ namespace RingContact
     Vector<double> residual_magnitude;
     /// residual_magnitude at the last assembly with the tangent.
     Vector<double> tangent_magnitude;
-    /// Quadrature points where det F is not positive at the last
-    /// assembly, those where it is not a number among them, and the
-    /// smallest of the numbers (see inverted_state_reason()).
-    unsigned int n_inverted        = 0;
-    unsigned int n_undefined_det_F = 0;
-    double       min_det_F         = 1;
+    /// Quadrature points where the state is rejected at the last
+    /// assembly: det F not positive, and among them those where it is not
+    /// a number, and the smallest of the numbers; or outside the material
+    /// law's range (MaterialLaw::in_range()), the first such body by
+    /// material id (see inverted_state_reason()).
+    unsigned int       n_inverted        = 0;
+    unsigned int       n_undefined_det_F = 0;
+    double             min_det_F         = 1;
+    unsigned int       n_outside_law     = 0;
+    types::material_id outside_law_body  = numbers::invalid_material_id;
     /// Whether the system last assembled has its tangent (see Assembly).
     bool tangent_assembled = false;
     /// The reference geometry of this process's cells for the assembly
