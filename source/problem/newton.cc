@@ -206,8 +206,7 @@ namespace RingContact
     Assert(tangent_assembled, ExcMessage("The system has no tangent."));
     TimerOutput::Scope t(timer, "linear solver");
     const std::string  advice =
-      ": a body may be free to move rigidly (check that its supports, "
-      "and the contact, hold it in every direction)";
+      ": " + stiffness_spread.singular_tangent_advice();
     double relative_residual;
     try
       {

@@ -39,6 +39,7 @@
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/contact/cyclic_symmetry.h>
 #include <ring_contact/diagnostics/equilibrium.h>
+#include <ring_contact/diagnostics/stiffness_spread.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/materials/material.h>
@@ -481,6 +482,9 @@ namespace RingContact
     std::vector<std::unique_ptr<ContactInterface>> contacts;
     /// The bodies that some rigid motion leaves held by the contact only.
     std::set<types::material_id> held_by_contact;
+    /// How far apart the cells' stiffnesses are (diagnose_start()): a
+    /// solve that fails names it where it explains the failure.
+    Diagnostics::StiffnessSpread stiffness_spread;
     /// The pair of each contact node (multiplier dof).
     std::map<types::global_dof_index, unsigned int> pair_of_node;
     /// The body (material id) of each boundary tag.
