@@ -5,6 +5,7 @@
 #include "run_program.h"
 
 #include <fstream>
+#include <sstream>
 
 using RingContactTests::check;
 
@@ -382,6 +383,42 @@ main()
          "named; nothing holds it, no step solved"
       << std::endl;
   }
+
+  // Stiffnesses too far apart for double precision, named as such before
+  // the first step: a body 1e9 times stiffer than the other, and a body
+  // 1e-9 thick (its cells 4.3e8 times longer than thick). Both failed
+  // every step with "a body may be free to move rigidly" (the direct
+  // solve's residual, about 6 eps times the spread, above its 1e-6).
+  expect_error("stiffness_ratio_1e9",
+               "subsection Body 2\n set Young's modulus = 1e18\nend\n",
+               "the bodies' stiffnesses are too far apart for double "
+               "precision: the cells' stiffnesses (Young's modulus times a "
+               "cell's length over its thickness) differ by a factor 1.17e+09 "
+               "(Body 2 (material 2), E = 1e+18; Body 1 (material 1), E = "
+               "1e+09)");
+  {
+    std::ifstream      blocks(SOURCE_DIR "/../meshes/two_blocks.geo");
+    std::ostringstream thin;
+    thin << blocks.rdbuf();
+    std::string geo = thin.str();
+    // The upper block 1e-9 thick: its top corners at y = 1e-9.
+    for (const std::string corner :
+         {"c - 0.5 * s + gx, s + 0.5 * c + gy", "-0.5 * s + gx, 0.5 * c + gy"})
+      {
+        std::string moved = corner;
+        for (auto at = moved.find("0.5"); at != std::string::npos;
+             at      = moved.find("0.5", at + 4))
+          moved.replace(at, 3, "1e-9");
+        geo.replace(geo.find(corner), corner.size(), moved);
+      }
+    std::ofstream("thin_block.geo") << geo;
+  }
+  expect_error("body_1e_minus_9_thick",
+               "subsection Mesh\n set Mesh file = thin_block.geo\nend\n"
+               "subsection Check 2\n set Point = 0.5, 1e-9\nend\n",
+               "differ by a factor 8.57e+08 (Body 2 (material 2), E = 2e+09, "
+               "has cells 4.29e+08 times longer than thick, 0.143 by "
+               "3.33e-10; Body 1 (material 1), E = 1e+09)");
 
   // An entry of a general problem in an SSNP152 file is refused, not
   // ignored.

@@ -13,6 +13,10 @@
 // curve whose ends meet): the ellipse's chart is periodic, and refinement
 // across its seam keeps the vertices on it (a transfinite interpolation of
 // the cells beside the curves once failed here while refining).
+// And the first script with Mesh.ScalingFactor = 0.001, which gmsh applies
+// when it saves a mesh: every vertex is the unscaled one times 0.001, the
+// circle has its centre and radius scaled, and the refined vertices stay
+// on it (the factor was ignored: the mesh a thousand times too large).
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_values.h>
@@ -184,4 +188,37 @@ main()
       << (ellipse < 1e-9 ? 0 : ellipse) << std::endl;
   check(circle < 1e-12, "refined vertices on the whole circle");
   check(ellipse < 1e-9, "refined vertices on the whole ellipse");
+
+  // The script drawn in millimetres, say: Mesh.ScalingFactor = 0.001.
+  {
+    std::ofstream("scaled.geo") << "Mesh.ScalingFactor = 0.001;\n" << script;
+    Triangulation<2> unscaled, scaled;
+    Geometry::read_gmsh(unscaled, "curves.geo", {}, 1, false);
+    const Geometry::GmshMesh mesh =
+      Geometry::read_gmsh(scaled, "scaled.geo", {}, 1, false);
+    double worst_vertex = 0;
+    for (unsigned int v = 0; v < scaled.n_vertices(); ++v)
+      worst_vertex = std::max(worst_vertex,
+                              scaled.get_vertices()[v].distance(
+                                0.001 * unscaled.get_vertices()[v]));
+    out << "Mesh.ScalingFactor = 0.001: " << scaled.n_vertices()
+        << " vertices, the unscaled ones times 0.001 to "
+        << (worst_vertex < 1e-18 ? 0 : worst_vertex) << std::endl;
+    check(scaled.n_vertices() == unscaled.n_vertices() && worst_vertex < 1e-18,
+          "the scaled vertices are the unscaled ones times 0.001");
+    bool circle_scaled = false;
+    for (const auto &c : Geometry::attach_model_curves(scaled, mesh))
+      if (c.kind == Geometry::ModelCurve::Kind::circle)
+        circle_scaled = c.centre.distance(Point<2>(1e-3, 1e-3)) < 1e-15 &&
+                        std::abs(c.radius - 2e-3) < 1e-15;
+    check(circle_scaled, "the scaled circle's centre and radius");
+    scaled.refine_global(3);
+    const double off = worst(scaled, 10, [](const Point<2> &x) {
+      return std::abs(x.distance(Point<2>(1e-3, 1e-3)) - 2e-3);
+    });
+    out << "Mesh.ScalingFactor = 0.001: the circle about (0.001, 0.001) of "
+           "radius 0.002, refined vertices off it "
+        << (off < 1e-15 ? 0 : off) << std::endl;
+    check(off < 1e-15, "refined vertices on the scaled circle");
+  }
 }

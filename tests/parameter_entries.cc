@@ -9,7 +9,8 @@
 //   set twice;
 // - a value refused by its entry's check names the file and the line that
 //   set it, an included file's own;
-// - a general problem keeps only the slots it uses;
+// - a general problem keeps only the slots it uses, and refuses a slot
+//   whose entries are set but whose Type or Quantity is left at none;
 // - a UTF-8 byte order mark is skipped.
 #include <deal.II/base/parameter_handler.h>
 
@@ -256,12 +257,82 @@ main()
             problem.boundary_conditions[0].expressions.size() == 1 &&
             problem.boundary_conditions[1].boundary_id == 6,
           "boundary conditions");
-    check(problem.checks.size() == 1 &&
-            problem.checks[0].name == "Check 4" &&
+    check(problem.checks.size() == 1 && problem.checks[0].name == "Check 4" &&
             problem.checks[0].reference == "-q",
           "checks");
     check(problem.more_contact_pairs().empty(), "contact pairs");
     check(problem.constants.at("q") == 2, "constants");
     deallog_file << "general: the slots in use, in order" << std::endl;
+  }
+
+  // A Boundary condition or Check slot whose entries are set but whose
+  // Type or Quantity is left at none was dropped without a word: refused,
+  // at the first entry set, naming them all. Set to none by the file
+  // itself, the slot is switched off on purpose, and kept quiet.
+  {
+    const std::string head =
+      "subsection Problem\n  set Scenario = general\nend\n"
+      "subsection Mesh\n  set Mesh source = gmsh file\n"
+      "  set Mesh file = " RING_CONTACT_SOURCE_DIR
+      "/meshes/two_blocks.geo\nend\n"
+      "subsection Load program\n  set Program = steps\nend\n"
+      "subsection Body 1\n  set Material id = 1\nend\n"
+      "subsection Body 2\n  set Material id = 2\nend\n"
+      "subsection Contact\n  set Slave boundary = 10\n"
+      "  set Master boundary = 20\nend\n";
+    write("idle_condition.prm",
+          head + "subsection Boundary condition 4\n  set Boundary id = 21\n"
+                 "  set Value = 0; 0\nend\n");
+    const std::string condition = error_of("idle_condition.prm");
+    check(condition.find("idle_condition.prm:22: parameter 'Boundary id' in "
+                         "subsection 'Boundary condition 4' is set, but the "
+                         "slot's Type is not") != std::string::npos,
+          "an idle condition is refused at its line: " + condition);
+    deallog_file << "idle condition: " << condition << std::endl;
+    write("idle_check.prm",
+          head + "subsection Check 3\n  set Reference = 1\n"
+                 "  set Point = 0.3, 0\nend\n");
+    const std::string check_slot = error_of("idle_check.prm");
+    check(check_slot.find("subsection 'Check 3' is set, but the slot's "
+                          "Quantity is not") != std::string::npos,
+          "an idle check is refused: " + check_slot);
+    deallog_file << "idle check: " << check_slot << std::endl;
+    write("switched_off.prm",
+          head + "subsection Boundary condition 4\n  set Boundary id = 21\n"
+                 "  set Type = none\nend\n"
+                 "subsection Check 3\n  set Quantity = none\n"
+                 "  set Reference = 1\nend\n");
+    check(error_of("switched_off.prm").empty(),
+          "a slot switched off by the file is not refused");
+    deallog_file << "switched off: read, no condition and no check"
+                 << std::endl;
+
+    // Problem/Constants is split at the commas outside parentheses: a
+    // function of two arguments is one value; bad input keeps its messages.
+    write("two_argument_constants.prm",
+          head + "subsection Problem\n  set Constants = a = 2, b = 3, "
+                 "m = min(a, b), th = atan2(b, a),\nend\n");
+    Parameters p;
+    p.read("two_argument_constants.prm");
+    const auto &constants = p.scenario_entries<ProblemParameters>().constants;
+    check(constants.size() == 4 && constants.at("m") == 2 &&
+            constants.at("th") == std::atan2(3., 2.),
+          "min(a, b) and atan2(b, a) as constants");
+    deallog_file << "constants with commas inside parentheses: m = "
+                 << constants.at("m") << ", th = " << constants.at("th")
+                 << std::endl;
+    for (const std::string constants :
+         {"a = min(1, 2", "a = 1, 2", "a = 1), b = 2", "a = max(1, 2)) + 1"})
+      {
+        write("bad_constants.prm",
+              head + "subsection Problem\n  set Constants = " + constants +
+                "\nend\n");
+        const std::string error = error_of("bad_constants.prm");
+        check(error.find("parameter 'Constants' in subsection 'Problem'") !=
+                std::string::npos,
+              "'" + constants + "' refused: " + error);
+        deallog_file << "constants '" << constants << "': " << error
+                     << std::endl;
+      }
   }
 }

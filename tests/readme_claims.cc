@@ -243,11 +243,37 @@ main()
         "the first line names the program and its version");
   check(rings.printed("Done: 2 steps in ") && rings.printed("Results in "),
         "the summary and the results folder at the end");
+  // What --version prints, as the README says it: no version number of
+  // its own in that sentence (it said 0.10.0 a release after 0.10.0), or
+  // this one.
+  {
+    const auto at = readme.find("`ring_contact --version` prints");
+    check(at != std::string::npos, "the README says what --version prints");
+    // To the full stop that ends it (a dot before a space or a line's
+    // end; a version's dots are neither).
+    std::smatch stop;
+    std::regex_search(readme.begin() + at,
+                      readme.end(),
+                      stop,
+                      std::regex("\\.\\s"));
+    const std::string sentence =
+      readme.substr(at, stop.empty() ? std::string::npos : stop.position(0));
+    const std::regex version_number("[0-9]+\\.[0-9]+\\.[0-9]+");
+    for (std::sregex_iterator
+           number(sentence.begin(), sentence.end(), version_number),
+         end;
+         number != end;
+         ++number)
+      check(number->str() == RING_CONTACT_VERSION,
+            "the README's --version sentence names " + number->str() +
+              ", not the version " RING_CONTACT_VERSION);
+  }
 
   RingContactTests::deallog_file
     << "README.md: the VTU arrays of the bodies and the slave surfaces, the "
        "columns of history.csv for the rings and a general problem with and "
        "without friction, the sample's first line and table header hold; "
-       "every line within 132 columns"
+       "every line within 132 columns; the --version sentence names no "
+       "other version"
     << std::endl;
 }

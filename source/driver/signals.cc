@@ -26,6 +26,14 @@ namespace RingContact
       std::atomic<bool> announce_stop{true};
       static_assert(std::atomic<bool>::is_always_lock_free);
 
+      // Whether the handler was installed for SIGINT and SIGTERM: a signal
+      // the caller ignored (a script's background job, nohup, a service
+      // manager) is never given its default action, since that would let
+      // a later one kill a run that was meant to be deaf to it. The first
+      // SIGTERM reset an ignored SIGINT to its default before this was
+      // kept.
+      std::atomic<bool> handles_interrupt{false}, handles_termination{false};
+
       // Record the signal; a second one takes the default action at once.
       // Two signals handled at once by two threads see each other.
       // Re-raised with the default action, the process ends as killed by
@@ -40,8 +48,12 @@ namespace RingContact
             std::raise(signal);
             return;
           }
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
+        // Only the signals this handler took over: one ignored by the
+        // caller stays ignored.
+        if (handles_interrupt)
+          std::signal(SIGINT, SIG_DFL);
+        if (handles_termination)
+          std::signal(SIGTERM, SIG_DFL);
         // At once, not after the step (which may take long): write() is
         // safe in a handler, the streams are not.
         if (announce_stop)
@@ -72,7 +84,10 @@ namespace RingContact
         {
           struct sigaction inherited;
           sigaction(signal, nullptr, &inherited);
-          if (inherited.sa_handler != SIG_IGN)
+          const bool handled = inherited.sa_handler != SIG_IGN;
+          (signal == SIGINT ? handles_interrupt : handles_termination) =
+            handled;
+          if (handled)
             sigaction(signal, &action, nullptr);
         }
       // A file size limit (ulimit -f) would otherwise kill the process

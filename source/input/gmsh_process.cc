@@ -34,6 +34,7 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace RingContact
@@ -292,6 +293,20 @@ namespace RingContact
         _exit(0);
       }
 
+      // The status byte of a model (0), then a script's Mesh.ScalingFactor
+      // as the script left it (1 for a mesh file): gmsh applies it only
+      // when it saves a mesh, so the model the child sends (nodes and
+      // curves) is unscaled; the parent scales both (scale_model()).
+      void
+      begin_model(Writer &out, const bool geo)
+      {
+        double factor = 1;
+        if (geo)
+          gmsh::option::getNumber("Mesh.ScalingFactor", factor);
+        out.value<std::uint8_t>(0);
+        out.value(factor);
+      }
+
       // The child: gmsh reads (or meshes) the file and the model is
       // written to `fd`. Never returns.
       [[noreturn]] void
@@ -369,7 +384,7 @@ namespace RingContact
             // after part of the model: the parent then finds the answer
             // incomplete or inconsistent, an error still, but without
             // gmsh's words.
-            out.value<std::uint8_t>(0);
+            begin_model(out, geo);
             out.vector(node_tags);
             out.vector(coordinates);
             out.value<std::uint64_t>(entities.size());
@@ -649,6 +664,36 @@ namespace RingContact
         return answer;
       }
 
+      // Mesh.ScalingFactor of a script: `gmsh -2` saves the mesh scaled by
+      // it (a model drawn in millimetres with 0.001 is saved in metres),
+      // while the model gmsh holds, which the child sends, is not. Ignored,
+      // the program ran the unscaled model, a thousand times too large.
+      // The nodes and the sampled curves are scaled alike, so that the
+      // curves stay the geometry of the faces (model_curves.cc). A factor
+      // that is not a positive number would make no body: refused.
+      void
+      scale_model(GmshModel         &model,
+                  const double       scaling_factor,
+                  const std::string &filename)
+      {
+        if (scaling_factor == 1)
+          return;
+        if (!(scaling_factor > 0) || !std::isfinite(scaling_factor))
+          {
+            std::ostringstream value;
+            value << scaling_factor;
+            fail(filename,
+                 "its Mesh.ScalingFactor is " + value.str() +
+                   ": the mesh gmsh would save is then no body (a positive "
+                   "factor scales the model, e.g. 0.001 from millimetres "
+                   "to metres)");
+          }
+        for (double &x : model.coordinates)
+          x *= scaling_factor;
+        for (auto &curve : model.curves)
+          for (double &x : curve.second)
+            x *= scaling_factor;
+      }
     } // namespace
 
     // @sect4{The model, read back}
@@ -677,10 +722,11 @@ namespace RingContact
       if (in.value<std::uint8_t>() != 0)
         // gmsh's message (it often repeats the file name), on one line.
         fail(filename, "gmsh: " + printable(in.string(), 300));
-      GmshModel model;
-      model.node_tags       = in.vector<std::size_t>();
-      model.coordinates     = in.vector<double>();
-      const auto n_entities = in.value<std::uint64_t>();
+      GmshModel    model;
+      const double scaling_factor = in.value<double>();
+      model.node_tags             = in.vector<std::size_t>();
+      model.coordinates           = in.vector<double>();
+      const auto n_entities       = in.value<std::uint64_t>();
       for (std::uint64_t e = 0; e < n_entities; ++e)
         {
           GmshModel::Entity entity;
@@ -706,6 +752,7 @@ namespace RingContact
       if (in.value<std::uint32_t>() != end_of_answer || !in.at_end() ||
           model.coordinates.size() != 3 * model.node_tags.size())
         fail(filename, "the answer of gmsh's reader is inconsistent");
+      scale_model(model, scaling_factor, filename);
       return model;
     }
   } // namespace Geometry

@@ -235,6 +235,42 @@ namespace RingContact
     // 'name = value' lists ('Geo parameters', Problem/Constants), lists of
     // steps and points: each item checked on its own, and the message quotes
     // the item at fault rather than the whole line.
+    namespace
+    {
+      // The items of a list separated by commas, each trimmed, split only
+      // at the commas outside parentheses: min(a, b) and atan2(y, x) are
+      // one value. Otherwise as deal.II's split_string_list(), which was
+      // used before and split them: a last empty item (a trailing comma)
+      // is dropped. A parenthesis that is never closed keeps the rest of
+      // the text in its item, whose value then fails its own check with
+      // the parser's reason; one closed too often counts as none.
+      std::vector<std::string>
+      split_at_top_level_commas(const std::string &text)
+      {
+        std::vector<std::string> items;
+        std::string              item;
+        unsigned int             depth = 0;
+        for (const char c : text)
+          {
+            if (c == '(')
+              ++depth;
+            else if (c == ')' && depth > 0)
+              --depth;
+            if (c == ',' && depth == 0)
+              {
+                items.push_back(Utilities::trim(item));
+                item.clear();
+              }
+            else
+              item += c;
+          }
+        items.push_back(Utilities::trim(item));
+        if (items.size() > 1 && items.back().empty())
+          items.pop_back();
+        return items;
+      }
+    } // namespace
+
     std::vector<std::pair<std::string, std::string>>
     get_assignments(const std::string &text,
                     const std::string &subsection,
@@ -250,8 +286,9 @@ namespace RingContact
       const auto fail = [&](const std::string &what) {
         require(false, subsection, entry, what);
       };
-      // Items are split at every comma, so that a value cannot contain one.
-      for (const std::string &item : Utilities::split_string_list(text, ','))
+      // Items are split at the commas outside parentheses: a value may be
+      // an expression of a function of two arguments.
+      for (const std::string &item : split_at_top_level_commas(text))
         {
           const std::size_t equal = item.find('=');
           if (equal == std::string::npos)

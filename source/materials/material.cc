@@ -114,6 +114,20 @@ namespace RingContact
     return stress(H) * transpose(F) / (determinant(F) * thickness_stretch(H));
   }
 
+  // Every law has a state wherever det F > 0, but one: Saint Venant-
+  // Kirchhoff in plane stress (saint_venant_kirchhoff.cc) overrides these.
+  bool
+  MaterialLaw::in_range(const Tensor<2, 2> &) const
+  {
+    return true;
+  }
+
+  std::string
+  MaterialLaw::range_condition() const
+  {
+    return "";
+  }
+
   // @sect4{The von Mises stress}
   //
   // The 3d formula, sqrt(((s11 - s22)^2 + (s22 - s33)^2 + (s33 - s11)^2) / 2

@@ -19,11 +19,13 @@
 // In 3d, F = [F2 0; 0 F33]. Plane strain: F33 = 1. Plane stress: F33 is the
 // root of P33 = mu (F33 - 1/F33) + lambda ln(J2 F33) / F33 = 0, i.e.
 // mu (F33^2 - 1) + lambda ln(J2 F33) = 0, whose left side increases with
-// F33 (one root, found by Newton's method from F33 = 1), and the in-plane
+// F33 (one root, found by Newton's method from F33 = 1, kept within a
+// bracket of the root), and the in-plane
 // tangent is condensed: dP/dF2 = dP/dF2|_F33 - dP/dF33 (dP33/dF33)^-1
 // dP33/dF2.
 #include <ring_contact/materials/material.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -90,7 +92,12 @@ namespace RingContact
       // 0 with x = ln F33 (3d lambda), e^2x - 1 as expm1(2x). f is
       // increasing and convex, so Newton's method from x = 0 converges
       // (from above after its first step, monotonically); a few iterations
-      // reach round-off.
+      // reach round-off. Both terms of f vanish at x = 0 and increase, so
+      // the root lies between 0 and -ln J2, a bracket that the Newton
+      // steps shrink and never leave, whatever the stretch. It is kept
+      // anyway: under a compression so extreme that e^2x overflows at the
+      // first step (J2 below 1e-150 or so), f / f' is inf / inf, and a
+      // step out of the bracket (or not a number) is replaced by bisection.
       double
       log_plane_stress_stretch(const Tensor<2, 2> &H) const
       {
@@ -98,12 +105,16 @@ namespace RingContact
           return 0; // an inverted element: rejected by the caller
         const double lnJ2 = log_J2(H);
         const double mu = c.mu, lambda = c.lambda_3d;
-        double       x = 0; // ln F33
-        for (unsigned int it = 0; it < 100; ++it)
+        double       x   = 0; // ln F33
+        double       low = std::min(0.0, -lnJ2), high = std::max(0.0, -lnJ2);
+        for (unsigned int it = 0; it < 200; ++it)
           {
-            const double f  = mu * std::expm1(2 * x) + lambda * (lnJ2 + x);
-            const double df = 2 * mu * std::exp(2 * x) + lambda;
-            const double dx = -f / df;
+            const double f       = mu * std::expm1(2 * x) + lambda * (lnJ2 + x);
+            const double df      = 2 * mu * std::exp(2 * x) + lambda;
+            (f > 0 ? high : low) = x;
+            double dx            = -f / df;
+            if (!(x + dx >= low && x + dx <= high))
+              dx = 0.5 * (low + high) - x;
             x += dx;
             if (!(std::abs(dx) > 1e-15 * std::abs(x)))
               break;

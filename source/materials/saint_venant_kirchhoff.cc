@@ -10,10 +10,22 @@
 // angle, and a linearised rotation strains it (doc/intro.md). The law's
 // limit is compression: in uniaxial strain its stress turns back at a
 // stretch of 0.58 and Newton finds no state beyond it, which is why
-// problems pressed hard use the neo-Hookean law.
+// problems pressed hard use the neo-Hookean law. In plane stress it has a
+// second limit, in tension: S33 = 0 is linear in E33, E33 = -nu / (1 - nu)
+// tr E (3d lambda and mu), but F33^2 = 1 + 2 E33 is positive only while
+// tr E < (1 - nu) / (2 nu): an equibiaxial stretch below sqrt(1 + (1 -
+// nu) / (2 nu)), 1.47 at nu = 0.3 (2.35 at nu = 0.1, 1.27 at nu = 0.45).
+// Beyond it no thickness satisfies sigma33 = 0 (the 3d energy's minimum
+// over E33 is at the bound F33 = 0, where S33 is not zero): the state is
+// outside the law (in_range()), rejected by the Newton iteration as an
+// inverted one; F33 was its square root, a NaN in the Cauchy stress.
 #include <ring_contact/materials/material.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace RingContact
 {
@@ -87,15 +99,53 @@ namespace RingContact
       {
         if (c.plane == PlaneAssumption::plane_strain)
           return 1.0;
-        // S33 = 0: E33 = -lambda/(lambda + 2 mu) (E11 + E22),
-        // F33^2 = 1 + 2 E33.
-        const Tensor<2, 2> E = green_lagrange(H);
-        const double E33 = -c.lambda_3d / (c.lambda_3d + 2 * c.mu) * trace(E);
-        return std::sqrt(1 + 2 * E33);
+        const double F33_squared = thickness_stretch_squared(H);
+        if (!(F33_squared > 0))
+          {
+            std::ostringstream value;
+            value << F33_squared;
+            throw std::domain_error("no thickness stretch here (F33^2 = " +
+                                    value.str() + "): " + range_condition());
+          }
+        return std::sqrt(F33_squared);
+      }
+
+      bool
+      in_range(const Tensor<2, 2> &H) const override
+      {
+        return c.plane == PlaneAssumption::plane_strain ||
+               thickness_stretch_squared(H) > 0;
+      }
+
+      std::string
+      range_condition() const override
+      {
+        if (c.plane == PlaneAssumption::plane_strain)
+          return "";
+        // The equibiaxial stretch where F33 reaches zero, for the message.
+        const double       ratio = c.lambda_3d / (c.lambda_3d + 2 * c.mu);
+        std::ostringstream limit;
+        limit << std::setprecision(3) << std::sqrt(1 + 0.5 / ratio);
+        return "Saint Venant-Kirchhoff in plane stress has a thickness "
+               "stretch (sigma33 = 0) only while F33^2 = 1 - 2 nu / (1 - "
+               "nu) tr E > 0, a stretch of the plane below " +
+               limit.str() +
+               " equibiaxially; the neo-Hookean law or the logarithmic "
+               "strain has one at any stretch";
       }
 
     private:
       const ElasticConstants c;
+
+      // S33 = 0: E33 = -lambda/(lambda + 2 mu) (E11 + E22) (3d lambda),
+      // and F33^2 = 1 + 2 E33.
+      double
+      thickness_stretch_squared(const Tensor<2, 2> &H) const
+      {
+        const double E33 =
+          -c.lambda_3d / (c.lambda_3d + 2 * c.mu) * trace(green_lagrange(H));
+        return 1 + 2 * E33;
+      }
     };
   } // namespace
 

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace RingContact
 {
@@ -169,8 +170,11 @@ namespace RingContact
     residual_magnitude = 0;
     // Counted afresh: the Newton loop and the line search judge the state
     // just assembled, and reject it if any point is inverted.
-    n_inverted = 0;
-    min_det_F  = std::numeric_limits<double>::max();
+    n_inverted        = 0;
+    n_undefined_det_F = 0;
+    min_det_F         = std::numeric_limits<double>::max();
+    n_outside_law     = 0;
+    outside_law_body  = numbers::invalid_material_id;
 
     assemble_contact_terms();
     // At the first assembly: the partition and the mappings are known, and
@@ -202,7 +206,13 @@ namespace RingContact
              {&internal_force, &external_force, &residual_magnitude})
           sum_over_processes(*v, communicator);
         n_inverted = Utilities::MPI::sum(n_inverted, communicator);
-        min_det_F  = Utilities::MPI::min(min_det_F, communicator);
+        n_undefined_det_F =
+          Utilities::MPI::sum(n_undefined_det_F, communicator);
+        min_det_F     = Utilities::MPI::min(min_det_F, communicator);
+        n_outside_law = Utilities::MPI::sum(n_outside_law, communicator);
+        outside_law_body =
+          Utilities::MPI::min(static_cast<unsigned int>(outside_law_body),
+                              communicator);
         for (const BoundaryLoad &load : boundary_loads)
           for (unsigned int d = 0; d < 2; ++d)
             applied_resultant[load.boundary_id][d] =
@@ -319,15 +329,21 @@ namespace RingContact
             // evaluated there (the neo-Hookean and logarithmic laws take
             // ln J), and the Newton loop rejects the state; a line search
             // trial halves its step instead. The negated test also counts a
-            // NaN det F.
+            // NaN det F (a gradient whose products overflow), apart:
+            // std::min() skips a NaN, and min_det_F, still its initial
+            // max(), would have been reported as "det F = 1.79769e+308 <= 0".
             const double det_F =
               determinant(unit_symmetric_tensor<2>() + grad_u[q]);
             min_det_F = std::min(min_det_F, det_F);
             if (!(det_F > 0))
               {
                 ++n_inverted;
+                n_undefined_det_F += std::isnan(det_F) ? 1 : 0;
                 continue;
               }
+            // A state the law does not have is rejected alike.
+            if (outside_law(material, grad_u[q], cell->material_id()))
+              continue;
             // Without the tangent the law gives the stress alone, and no
             // cell matrix is formed.
             Tensor<2, 2> P;
@@ -380,6 +396,56 @@ namespace RingContact
                          internal_force,
                          cell->active_cell_index());
       }
+  }
+
+  // Whether the law has no state at a point (Saint Venant-Kirchhoff in
+  // plane stress past its thickness stretch's zero, whose stress would be
+  // that of an imaginary thickness), counted with the inverted points; the
+  // body of the smallest material id is named.
+  bool
+  ContactProblem::outside_law(const Material          &material,
+                              const Tensor<2, 2>      &grad_u,
+                              const types::material_id body)
+  {
+    if (material.in_range(grad_u))
+      return false;
+    ++n_inverted;
+    ++n_outside_law;
+    outside_law_body = std::min(outside_law_body, body);
+    return true;
+  }
+
+  // The reason a state with points of det F <= 0 is rejected, for the
+  // Newton log and the step's failure: the inverted points with the
+  // smallest det F, and apart those where det F is not a number, whose
+  // det F has no value to give (the displacement is finite, which the
+  // assembly checked first, but its gradient's products overflow: inf -
+  // inf), and those outside the material law's range with the law's
+  // condition.
+  std::string
+  ContactProblem::inverted_state_reason() const
+  {
+    std::ostringstream reason;
+    const unsigned int n_negative =
+      n_inverted - n_undefined_det_F - n_outside_law;
+    const auto separator = [&reason]() {
+      return reason.tellp() > 0 ? "; " : "";
+    };
+    if (n_negative > 0)
+      reason << "inverted elements: det F = " << min_det_F << " <= 0 at "
+             << n_negative << " quadrature points";
+    if (n_undefined_det_F > 0)
+      reason << separator() << "det F is not a number at " << n_undefined_det_F
+             << " quadrature points (the displacement "
+             << "gradient overflows in it: an iterate far beyond any "
+             << "physical state)";
+    if (n_outside_law > 0)
+      for (const Body &body : bodies)
+        if (body.material_id == outside_law_body)
+          reason << separator() << "outside the material law at "
+                 << n_outside_law << " quadrature points (" << body.name
+                 << " and maybe others): " << body.material.range_condition();
+    return reason.str();
   }
 
   // Add a cell's (or face's) matrix and right-hand side -R to the system,

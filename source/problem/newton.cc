@@ -206,8 +206,7 @@ namespace RingContact
     Assert(tangent_assembled, ExcMessage("The system has no tangent."));
     TimerOutput::Scope t(timer, "linear solver");
     const std::string  advice =
-      ": a body may be free to move rigidly (check that its supports, "
-      "and the contact, hold it in every direction)";
+      ": " + stiffness_spread.singular_tangent_advice();
     double relative_residual;
     try
       {
@@ -1010,10 +1009,7 @@ namespace RingContact
       }
     if (n_inverted > 0)
       {
-        std::ostringstream reason;
-        reason << "inverted elements: det F = " << min_det_F << " <= 0 at "
-               << n_inverted << " quadrature points";
-        failure_reason = reason.str();
+        failure_reason = inverted_state_reason();
         if (parameters.newton.verbose)
           log << "    Newton " << std::setw(2) << it << "  " << failure_reason
               << '\n';

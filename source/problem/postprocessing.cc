@@ -9,6 +9,7 @@
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/contact/surface_arc_length.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
+#include <ring_contact/diagnostics/stiffness_spread.h>
 #include <ring_contact/diagnostics/surfaces_at_rest.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -33,7 +34,10 @@ namespace RingContact
   // against a faceted master, passed 0 of its 63 checks with no word of
   // why), a checked point far from every contact node (the nearest node's
   // value was reported as the pressure there). Now each is an error or a
-  // warning before the first step, not after it.
+  // warning before the first step, not after it; and bodies whose
+  // stiffnesses are too far apart for double precision (a body 1e-9 thick,
+  // Young's moduli 1e9 apart), which failed as a body "free to move
+  // rigidly".
   void
   ContactProblem::diagnose_start()
   {
@@ -74,6 +78,9 @@ namespace RingContact
              "at 2 has its uniform state and a second one with an end node "
              "open (doc/validation.md). Check the answer along another path "
              "(more load steps, another mesh).\n";
+    // And throws if the bodies' stiffnesses, or a thin body's cells, are
+    // too far apart for a solve in double precision.
+    stiffness_spread = Diagnostics::stiffness_spread(triangulation, bodies);
     log << "Scheme " << scheme.name() << progress->scheme_label() << ": "
         << triangulation.n_active_cells() << " cells, " << dof_handler.n_dofs()
         << " unknowns, " << n_contact_nodes() << " contact pressure nodes, "

@@ -4,7 +4,8 @@
 // complete, or at once while it meshes or between Newton iterations (the
 // stop flag, stop_signal of utilities.h, is read there); a second signal
 // ends it at once. The handler only records the signal (a lock-free atomic:
-// safe in a handler) and gives SIGINT and SIGTERM back their default action.
+// safe in a handler) and gives SIGINT and SIGTERM back their default action,
+// each only if the caller did not ignore it (an ignored one stays ignored).
 #ifndef ring_contact_driver_signals_h
 #define ring_contact_driver_signals_h
 

@@ -58,8 +58,9 @@ namespace RingContact
 
     /// Read and check a gmsh mesh file, or run a gmsh script (a file whose
     /// name ends in ".geo": gmsh meshes it in 2d with elements of order
-    /// `element_order`, and only the entities in physical groups are kept,
-    /// as gmsh does when it saves a mesh). Throws a one-line
+    /// `element_order`, and only the entities in physical groups are kept
+    /// and the model scaled by its Mesh.ScalingFactor, as gmsh does when it
+    /// saves a mesh). Throws a one-line
     /// std::runtime_error.
     GmshMesh
     read_gmsh_file(const std::string &filename,

@@ -46,7 +46,8 @@ namespace RingContact
     /// Open `filename` with gmsh's library in a child process; if
     /// `mesh_script`, mesh it in 2d (gmsh::model::mesh::generate) with
     /// elements of order `element_order`, the `geo_numbers` given as
-    /// gmsh's `-setnumber`. The child is killed after `time_limit_seconds`
+    /// gmsh's `-setnumber`, and scale the nodes and curves by the script's
+    /// Mesh.ScalingFactor. The child is killed after `time_limit_seconds`
     /// (0: no limit). Throws a one-line std::runtime_error that names the
     /// file when gmsh refuses the file (with gmsh's message), crashes,
     /// stops or takes too long.

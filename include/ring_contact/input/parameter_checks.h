@@ -169,10 +169,11 @@ namespace RingContact
                     std::vector<unsigned int> &steps);
 
     /// The items 'name = value, name = value' of an entry (empty: none),
-    /// each name given once and made of letters, digits and _, starting
-    /// with a letter (`leading_letter`) or with anything but a digit;
-    /// `example` and `kind_of_name` make the messages ("e.g. 'Ne = 80'",
-    /// "a gmsh variable name"). Returns the names and the values' text.
+    /// split at the commas outside parentheses, each name given once and made
+    /// of letters, digits and _, starting with a letter (`leading_letter`) or
+    /// with anything but a digit; `example` and `kind_of_name` make the
+    /// messages ("e.g. 'Ne = 80'", "a gmsh variable name"). Returns the names
+    /// and the values' text.
     std::vector<std::pair<std::string, std::string>>
     get_assignments(const std::string &text,
                     const std::string &subsection,

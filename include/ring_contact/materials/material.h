@@ -25,6 +25,7 @@
 #include <ring_contact/input/parameters.h>
 
 #include <memory>
+#include <string>
 
 namespace RingContact
 {
@@ -76,8 +77,23 @@ namespace RingContact
     out_of_plane_stress(const Tensor<2, 2> &grad_u) const = 0;
 
     /// Out-of-plane stretch F33 (1 in plane strain and small strain).
+    /// Throws a one-line std::domain_error where the law has none (see
+    /// in_range()).
     virtual double
     thickness_stretch(const Tensor<2, 2> &grad_u) const = 0;
+
+    /// Whether the law has a state at grad_u, beyond det F > 0, which the
+    /// assembly checks first: Saint Venant-Kirchhoff in plane stress has
+    /// no thickness stretch past an in-plane stretch (sigma33 = 0 asks
+    /// F33^2 <= 0 there). A state with a point outside is rejected as an
+    /// inverted one is. By default every state with det F > 0.
+    virtual bool
+    in_range(const Tensor<2, 2> &grad_u) const;
+
+    /// What in_range() requires, for the message that rejects a state
+    /// ("" for a law without a bound).
+    virtual std::string
+    range_condition() const;
   };
 
   /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
@@ -146,6 +162,18 @@ namespace RingContact
     thickness_stretch(const Tensor<2, 2> &grad_u) const
     {
       return law->thickness_stretch(grad_u);
+    }
+
+    bool
+    in_range(const Tensor<2, 2> &grad_u) const
+    {
+      return law->in_range(grad_u);
+    }
+
+    std::string
+    range_condition() const
+    {
+      return law->range_condition();
     }
 
     /// The von Mises stress of the Cauchy stress, sigma_33 included.

@@ -39,6 +39,7 @@
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/contact/cyclic_symmetry.h>
 #include <ring_contact/diagnostics/equilibrium.h>
+#include <ring_contact/diagnostics/stiffness_spread.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/materials/material.h>
@@ -352,6 +353,17 @@ namespace RingContact
     /// A signal, or inverted elements: the iteration must not go on.
     bool
     must_stop(const unsigned int it);
+    /// Why the state last assembled is rejected: its inverted points (det
+    /// F <= 0, the smallest given), those where det F is not a number, and
+    /// those outside the material law.
+    std::string
+    inverted_state_reason() const;
+    /// Whether `material` has no state at `grad_u` (MaterialLaw::
+    /// in_range()): the point is then counted as rejected.
+    bool
+    outside_law(const Material          &material,
+                const Tensor<2, 2>      &grad_u,
+                const types::material_id body);
     /// The update applied (whole, or through the line search); false when
     /// the step fails.
     bool
@@ -484,6 +496,9 @@ namespace RingContact
     std::vector<std::unique_ptr<ContactInterface>> contacts;
     /// The bodies that some rigid motion leaves held by the contact only.
     std::set<types::material_id> held_by_contact;
+    /// How far apart the cells' stiffnesses are (diagnose_start()): a
+    /// solve that fails names it where it explains the failure.
+    Diagnostics::StiffnessSpread stiffness_spread;
     /// The pair of each contact node (multiplier dof).
     std::map<types::global_dof_index, unsigned int> pair_of_node;
     /// The body (material id) of each boundary tag.
@@ -543,8 +558,16 @@ namespace RingContact
     Vector<double> residual_magnitude;
     /// residual_magnitude at the last assembly with the tangent.
     Vector<double> tangent_magnitude;
-    unsigned int   n_inverted = 0;
-    double         min_det_F  = 1;
+    /// Quadrature points where the state is rejected at the last
+    /// assembly: det F not positive, and among them those where it is not
+    /// a number, and the smallest of the numbers; or outside the material
+    /// law's range (MaterialLaw::in_range()), the first such body by
+    /// material id (see inverted_state_reason()).
+    unsigned int       n_inverted        = 0;
+    unsigned int       n_undefined_det_F = 0;
+    double             min_det_F         = 1;
+    unsigned int       n_outside_law     = 0;
+    types::material_id outside_law_body  = numbers::invalid_material_id;
     /// Whether the system last assembled has its tangent (see Assembly).
     bool tangent_assembled = false;
     /// The reference geometry of this process's cells for the assembly

@@ -18,7 +18,7 @@ namespace RingContact
   {
   public:
     explicit ContactProblemInspector(ContactProblem &problem)
-      : problem(problem)
+        : problem(problem)
     {}
 
     /// The mesh, the unknowns, the constraints and the contact interfaces,
@@ -103,6 +103,16 @@ namespace RingContact
     n_inverted_points() const
     {
       return problem.n_inverted;
+    }
+
+    /// Whether a Newton iteration at the state last assembled must stop,
+    /// and why ("" if it goes on).
+    std::string
+    stop_reason()
+    {
+      problem.failure_reason.clear();
+      problem.must_stop(0);
+      return problem.failure_reason;
     }
 
   private:

@@ -142,13 +142,28 @@ namespace RingContact
     const hp::MappingCollection<2>      &mapping,
     const std::vector<SupportCondition> &supports)
   {
-    // One support per boundary is assumed: a second displacement condition
-    // on the same boundary (x in one, y in another, which
-    // problem_description.cc allows) replaces the first here, and the
-    // first one's direction is then held by no boundary.
-    std::map<types::boundary_id, const SupportCondition *> support_of;
+    // The conditions of one boundary merged into one support: x imposed by
+    // one slot and y by another (problem_parameters.cc allows two slots
+    // on disjoint components, both Cartesian or both polar, and a normal
+    // one only alone) hold both directions. Kept by boundary, the second
+    // slot replaced the first, whose direction was then held by no
+    // boundary: its reaction reached no resultant (the two blocks held
+    // at the bottom by an x and a y slot reported a force y of 0 there).
+    std::map<types::boundary_id, SupportCondition> support_of;
     for (const auto &support : supports)
-      support_of[support.boundary_id] = &support;
+      {
+        const auto [merged, first] =
+          support_of.emplace(support.boundary_id, support);
+        if (first)
+          continue;
+        Assert(merged->second.kind == support.kind &&
+                 support.kind != SupportCondition::Kind::normal,
+               ExcMessage("Two supports of one boundary must be both "
+                          "Cartesian or both polar."));
+        for (unsigned int c = 0; c < 2; ++c)
+          merged->second.components[c] =
+            merged->second.components[c] || support.components[c];
+      }
 
     // Per node: the boundaries that hold it (Holder), each with the
     // directions it holds there, the node's weight summed over the
@@ -177,10 +192,10 @@ namespace RingContact
             if (it == list.end())
               {
                 list.push_back(
-                  {id, support->second->directions(node.X, node.N), 0.0, {}});
+                  {id, support->second.directions(node.X, node.N), 0.0, {}});
                 it = list.end() - 1;
               }
-            else if (support->second->kind == SupportCondition::Kind::normal)
+            else if (support->second.kind == SupportCondition::Kind::normal)
               {
                 // Two faces of one boundary at a node: the mean normal.
                 Tensor<1, 2> mean = it->directions[0] + node.N;

@@ -161,9 +161,8 @@ namespace RingContact
   } // namespace
 
   // 'name = value, name = value' of the entry Problem/Constants. The
-  // items are split at every comma (get_assignments()), so a value is a
-  // number or an expression without one: max(a, b) belongs in the
-  // expressions that use it, not here.
+  // items are split at the commas outside parentheses (get_assignments()),
+  // so that a value may be min(a, b) or atan2(y, x).
   std::map<std::string, double>
   parse_constants(const std::string &text)
   {
@@ -589,10 +588,13 @@ namespace RingContact
       "||p_h - p_ref|| / ||p_ref|| with p_ref the 'Reference' expression "
       "as a function of x, y (reference position) and t; the check "
       "passes when it is at most 'Tolerance' [-]; "
-      "resultant force x or y: the sum of the nodal forces on 'Boundary "
-      "id' (the reaction of an imposed displacement, or the resultant of "
-      "a load) [N per unit thickness]; displacement x or y at 'Point' "
-      "(reference position) [m].");
+      "resultant force x or y: the resultant of the traction on "
+      "'Boundary id', its load where it is loaded and, where its "
+      "displacement is imposed, the reactions of its nodes (contact "
+      "forces left out), a node shared with another boundary split "
+      "between them along the directions each holds [N per unit "
+      "thickness]; displacement x or y at 'Point' (reference position) "
+      "[m].");
     // In the reference configuration, as the boundary conditions' x and
     // y: a point on a body stays the same material point at every step.
     s.add("Point",

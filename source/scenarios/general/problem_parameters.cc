@@ -70,7 +70,8 @@ namespace RingContact
             "Named constants for every expression: 'name = "
             "value' pairs separated by commas, each value a "
             "number or an expression of the constants before "
-            "it, e.g. 'R = 1, E = 2e11, q = 1e6'.",
+            "it, e.g. 'R = 1, E = 2e11, q = 1e6, a = min(R, 2)' "
+            "(a comma inside parentheses is the expression's).",
             // Parsed at its own line: a bad constant is refused where it
             // is written, and the expressions, checked in finish(), see
             // the values.
@@ -148,6 +149,10 @@ namespace RingContact
               "Slave boundary",
               "must differ from 'Master boundary' (both are " +
                 std::to_string(contact_pairs[k].first) + ")");
+    // A slot whose entries are set but whose Type or Quantity is not is
+    // refused before the unused slots go (the slot numbers are still
+    // those of the file).
+    refuse_idle_slots(parameters);
     // Unused slots (Type = none, Quantity = none) go; the others keep
     // their order, and their names keep their slot numbers.
     boundary_conditions.erase(
@@ -266,6 +271,57 @@ namespace RingContact
                     "is not read: Problem/" + count + " is " +
                       std::to_string(n));
           }
+  }
+
+
+  // A Boundary condition or Check slot is used only when its Type or
+  // Quantity says so: a slot given a boundary and a value but no Type was
+  // dropped without a word, the load or support it describes missing from
+  // the problem. Refused at the first entry the file sets in it, naming
+  // them all. A Type or Quantity set to none by the file itself is a
+  // deliberate switch-off (a file that includes another and drops one of
+  // its conditions, as tests/general_problem_input's floating body does),
+  // and is kept.
+  void
+  ProblemParameters::refuse_idle_slots(const Parameters &parameters) const
+  {
+    const auto refuse_if_set = [&](const std::string &slot,
+                                   const std::string &switch_entry,
+                                   const std::string &choices) {
+      if (parameters.origins.count(entry_key(slot, switch_entry)) != 0)
+        return;
+      // The entries set in the slot, the first (by line) named first, so
+      // that the message is located where the reader meets the slot.
+      std::vector<std::pair<unsigned int, std::string>> set;
+      for (const auto &[key, origin] : parameters.origins)
+        if (key.rfind(slot + "/", 0) == 0)
+          set.emplace_back(origin.line, key.substr(slot.size() + 1));
+      if (set.empty())
+        return;
+      std::sort(set.begin(), set.end());
+      std::string names;
+      for (const auto &entry : set)
+        names += (names.empty() ? "" : ", ") + entry.second;
+      require(false,
+              slot,
+              set.front().second,
+              "is set, but the slot's " + switch_entry +
+                " is not (none: the slot is not used, and its entries " +
+                names + " would be ignored): set " + switch_entry + " (" +
+                choices + "), or remove them");
+    };
+    for (unsigned int k = 0; k < boundary_conditions.size(); ++k)
+      if (boundary_conditions[k].type == BoundaryConditionType::none)
+        refuse_if_set(boundary_conditions[k].name,
+                      "Type",
+                      "displacement, traction or pressure");
+    for (unsigned int k = 0; k < checks.size(); ++k)
+      if (checks[k].quantity == ProblemQuantity::none)
+        refuse_if_set(
+          checks[k].name,
+          "Quantity",
+          "contact pressure, displacement y, ...: --print-parameters "
+          "lists them");
   }
 
 

@@ -117,7 +117,9 @@ namespace RingContact
     /// of the pressure against the reference expression, a function of x,
     /// y and t, ||p_h - p_ref|| / ||p_ref||.
     contact_pressure_l2_error,
-    resultant_force_x, ///< sum of the nodal forces of a boundary
+    /// The resultant of the traction on a boundary: its load, or its part
+    /// of the reactions (BoundaryResultants).
+    resultant_force_x,
     resultant_force_y,
     displacement_x, ///< at the point (reference coordinates)
     displacement_y
@@ -199,6 +201,10 @@ namespace RingContact
     /// The entries set in a Body or Contact pair slot beyond the numbers.
     void
     refuse_unread_slots(const Parameters &parameters) const;
+    /// The entries set in a Boundary condition or Check slot whose Type or
+    /// Quantity the file leaves at none.
+    void
+    refuse_idle_slots(const Parameters &parameters) const;
     /// The boundary conditions against the contact surfaces and each other.
     void
     check_boundary_conditions(
