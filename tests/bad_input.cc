@@ -169,6 +169,20 @@ main()
                "Contact/Integration schemes: contact integration scheme "
                "'segment-based 1' is first order on a quadratic contact "
                "surface");
+  // One point per segment cannot hold a linear multiplier (two nodes), on
+  // linear surfaces too (segment-based 1 on matching Q1 rings stopped as
+  // 'a body may be free to move rigidly'): refused at the entry's line,
+  // before the first scheme runs.
+  expect_error("later_scheme_one_point",
+               "subsection Finite elements\n"
+               " set Displacement degree outer ring = 1\n"
+               " set Displacement degree inner ring = 1\n"
+               " set Multiplier degree = 1\nend\n"
+               "subsection Contact\n set Integration schemes = nodal, "
+               "segment-based 1\nend\n",
+               "Contact/Integration schemes: contact integration scheme "
+               "'segment-based 1' has 1 point on a slave segment, fewer than "
+               "the 2 nodes");
 
   // A mesh without the slave group (the original mesh less its S2R2
   // segments): the error names the missing boundary.

@@ -251,8 +251,7 @@ namespace RingContact
         scenario_parameters.at(scenario)->finish(*this);
         contact.choose_schemes(
           scenario_parameters.at(scenario)->default_integration_schemes(),
-          scenario_parameters.at(scenario)->highest_displacement_degree(),
-          finite_elements.multiplier_degree);
+          scenario_parameters.at(scenario)->highest_displacement_degree());
       }
     catch (const ParameterError &e)
       {

@@ -575,11 +575,12 @@ namespace RingContact
   // exact to degree 2 p + 1, above the degree p + q of the mortar integrand
   // Phi_k psi_i on a straight piece (q <= p, the multiplier's degree), with
   // a margin for the curved surfaces' length element and normal, and more
-  // points than the multiplier has nodes on a piece (see contact_quadrature()).
+  // points than the multiplier has nodes on a piece (see contact_quadrature(),
+  // which the setup asks of every listed scheme on every pair before the
+  // first scheme runs).
   void
   ContactParameters::choose_schemes(const std::string &scenario_default,
-                                    const unsigned int displacement_degree,
-                                    const unsigned int multiplier_degree)
+                                    const unsigned int displacement_degree)
   {
     if (schemes.empty())
       for (const auto &entry : Utilities::split_string_list(scenario_default))
@@ -588,19 +589,6 @@ namespace RingContact
       if (scheme.type == ContactIntegration::segment_based &&
           scheme.n_points == 0)
         scheme.n_points = displacement_degree + 1;
-    // A rule too poor for the multiplier is refused here, at the entry's
-    // line, before any scheme of the list has run.
-    for (const IntegrationScheme &scheme : schemes)
-      try
-        {
-          require_points_for_multiplier(scheme,
-                                        displacement_degree,
-                                        multiplier_degree);
-        }
-      catch (const std::exception &e)
-        {
-          require(false, "Contact", "Integration schemes", e.what());
-        }
     // One run per scheme: a scheme listed twice would run twice and write
     // its files over its own.
     for (unsigned int k = 0; k < schemes.size(); ++k)
@@ -609,9 +597,11 @@ namespace RingContact
                 "Contact",
                 "Integration schemes",
                 "lists '" + schemes[k].name() + "' twice" +
-                  " ('segment-based' is segment-based " +
-                  std::to_string(displacement_degree + 1) +
-                  " on these elements)");
+                  (schemes[k].type == ContactIntegration::segment_based ?
+                     " ('segment-based' is segment-based " +
+                       std::to_string(displacement_degree + 1) +
+                       " on these elements)" :
+                     std::string()));
   }
 
   // @sect4{Subsection Load program}

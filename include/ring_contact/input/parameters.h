@@ -190,12 +190,12 @@ namespace RingContact
     /// (`scenario_default`, a list as the entry takes) where the file names
     /// none ('automatic'), and the number of points of a 'segment-based'
     /// without one, for surfaces of displacement degree up to
-    /// `displacement_degree`. Refuses a scheme listed twice, and one with
-    /// too few points for a multiplier of degree `multiplier_degree`.
+    /// `displacement_degree`. Refuses a scheme listed twice. (A rule too
+    /// poor for the surfaces or the multiplier is refused by the setup,
+    /// which knows each pair's surfaces, before the first scheme runs.)
     void
     choose_schemes(const std::string &scenario_default,
-                   const unsigned int displacement_degree,
-                   const unsigned int multiplier_degree);
+                   const unsigned int displacement_degree);
   };
 
   struct LoadParameters

@@ -250,7 +250,7 @@ namespace RingContact
     make_linear_system();
     void
     make_contact_interfaces();
-    /// Refuse a slave surface with a corner (a turn above 30 degrees).
+    /// Refuse a slave surface with a corner (a turn above 45 degrees).
     void
     refuse_slave_corners(const ContactSurface    &slave,
                          const types::boundary_id slave_id) const;
