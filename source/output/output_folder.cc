@@ -102,32 +102,6 @@ namespace RingContact
       .string();
   }
 
-  // For a file written by somebody else's stream (deal.II's write_vtu into
-  // an std::ofstream, in vtu_writer.cc), which gives no descriptor: the
-  // file is opened again only to fsync it. Without the fsync, a system
-  // crash shortly after the rename could leave the new name on an empty
-  // file.
-  void
-  commit_file(const std::string &temporary, const std::string &filename)
-  {
-    const int descriptor = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
-    if (descriptor < 0 || ::fsync(descriptor) != 0)
-      {
-        const int error = errno;
-        if (descriptor >= 0)
-          ::close(descriptor);
-        ::unlink(temporary.c_str());
-        fail("write", filename, error);
-      }
-    ::close(descriptor);
-    if (::rename(temporary.c_str(), filename.c_str()) != 0)
-      {
-        const int error = errno;
-        ::unlink(temporary.c_str());
-        fail("rename a temporary file to", filename, error);
-      }
-  }
-
   void
   write_file_atomically(const std::string &filename,
                         const std::string &contents)

@@ -5,14 +5,13 @@
 #ifndef ring_contact_output_vtu_writer_h
 #define ring_contact_output_vtu_writer_h
 
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <ring_contact/materials/material.h>
+#include <ring_contact/output/vtu_format.h>
 
 #include <map>
 #include <set>
@@ -26,9 +25,11 @@ namespace RingContact
 
   /// VTU of the rings (displacement, Cauchy stress, ring id, contact
   /// pressure) and of the slave surface (contact pressure and gap), and the
-  /// PVD records that list them. Every file is written under a temporary
-  /// name and renamed, the VTU files first, then the PVD file that lists
-  /// them: a PVD on disk lists only whole VTU files.
+  /// PVD records that list them. The fields are evaluated in double, and
+  /// an array is written in double precision where one of its values would
+  /// be lost in single (vtu_format.h). Every file is written under a
+  /// temporary name and renamed, the VTU files first, then the PVD file
+  /// that lists them: a PVD on disk lists only whole VTU files.
   class VtuWriter
   {
   public:
@@ -61,7 +62,9 @@ namespace RingContact
     /// The bodies' .vtu file, or this process's piece of it; the name the
     /// .pvd lists.
     std::string
-    write_bulk(const DataOut<2> &data_out, const std::string &bulk_stem);
+    write_bulk(const VtuGrid     &bulk,
+               const std::string &bulk_stem,
+               const double       time);
     void
     write_slave_surface(const DoFHandler<2>                &dof_handler,
                         const hp::MappingCollection<2>     &mapping,
@@ -69,11 +72,7 @@ namespace RingContact
                         const std::vector<SurfaceField>    &surface_fields,
                         const std::set<types::boundary_id> &slave_boundary_ids,
                         const unsigned int                  step,
-                        const DataOutBase::VtkFlags        &flags);
-    template <int patch_dim>
-    void
-    write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
-                   const std::string                    &filename) const;
+                        const double                        time);
     static void
     record(std::vector<std::pair<double, std::string>> &records,
            const double                                 time,
