@@ -34,7 +34,6 @@
 #include <ring_contact/output/vtu_writer.h>
 
 #include <memory>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -175,36 +174,30 @@ namespace RingContact
 
     // @sect4{The slave surfaces}
     //
-    // The faces of the slave boundaries, each as n straight segments (a
-    // curved face subdivided). On them the displacement, the contact
-    // pressure and the tangential traction (zero without friction), and
-    // the nodal fields the problem hands over (the gap, the arc length),
-    // stored in the multiplier component of a vector of the unknowns: they
-    // belong to the multiplier's nodes and are interpolated like the
-    // pressure. The pressure is written here only: in the bulk it would be
-    // a field falling to zero across the layer of slave cells.
-    using Face = std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>;
-
-    std::vector<Face>
-    slave_faces(const DoFHandler<2>                &dof_handler,
-                const std::set<types::boundary_id> &slave_boundary_ids)
-    {
-      std::vector<Face> faces;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              slave_boundary_ids.count(cell->face(f)->boundary_id()) > 0)
-            faces.emplace_back(cell, f);
-      return faces;
-    }
-
+    // The faces of the slave surfaces in the order the problem gives them:
+    // chain after chain, each in the order its arc length runs, so that a
+    // plot over the arc length (ParaView's Plot Data, which joins the
+    // points in the file's order) draws the curve; the faces used to come
+    // in the order of the cells, which on a gmsh mesh is no order along
+    // the surface, and the plot was a zigzag. Consecutive faces of a chain
+    // share their point; the face that closes a chain on itself ends at a
+    // point of its own, where the arc length is the chain's length.
+    //
+    // Each face is n straight segments (a curved face subdivided). On them
+    // the displacement, the contact pressure and the tangential traction
+    // (zero without friction), and the nodal fields the problem hands over
+    // (the gap, the arc length), stored in the multiplier component of a
+    // vector of the unknowns: they belong to the multiplier's nodes and are
+    // interpolated like the pressure. The pressure is written here only: in
+    // the bulk it would be a field falling to zero across the layer of
+    // slave cells.
     VtuGrid
     slave_surface_grid(
       const DoFHandler<2>                        &dof_handler,
       const hp::MappingCollection<2>             &mapping,
       const Vector<double>                       &solution,
       const std::vector<VtuWriter::SurfaceField> &surface_fields,
-      const std::vector<Face>                    &faces,
+      const std::vector<VtuWriter::SlaveFace>    &faces,
       const unsigned int                          n)
     {
       VtuGrid grid;
@@ -212,7 +205,7 @@ namespace RingContact
                          {"contact_pressure", 1},
                          {"tangential_traction", 1}};
       for (const auto &field : surface_fields)
-        grid.point_data.push_back({field.first, 1});
+        grid.point_data.push_back({field.name, 1});
 
       hp::FEFaceValues<2>              hp_values(mapping,
                                     dof_handler.get_fe_collection(),
@@ -223,21 +216,27 @@ namespace RingContact
       const FEValuesExtractors::Scalar traction(Components::tangential);
       std::vector<Tensor<1, 2>>        displacement(n + 1);
       std::vector<double>              scalar(n + 1);
-      for (const auto &[cell, f] : faces)
+      for (const auto &face : faces)
         {
-          hp_values.reinit(cell, f);
+          hp_values.reinit(face.cell, face.face_no);
           const FEFaceValues<2> &v = hp_values.get_present_fe_values();
           v[u].get_function_values(solution, displacement);
-          const std::int64_t first = grid.n_points();
-          for (unsigned int q = 0; q <= n; ++q)
+          // The face's points in the chain's direction; its first is the
+          // last of the face before, but at a chain's start.
+          const auto point = [&](const unsigned int k) {
+            return face.reversed ? n - k : k;
+          };
+          const unsigned int first_new = face.starts_chain ? 0 : 1;
+          const std::int64_t first =
+            static_cast<std::int64_t>(grid.n_points()) - first_new;
+          for (unsigned int k = first_new; k <= n; ++k)
             {
-              const Point<2> x = v.quadrature_point(q);
+              const Point<2> x = v.quadrature_point(point(k));
               grid.points.values.insert(grid.points.values.end(),
                                         {x[0], x[1], 0});
+              const Tensor<1, 2> &d = displacement[point(k)];
               grid.point_data[0].values.insert(grid.point_data[0].values.end(),
-                                               {displacement[q][0],
-                                                displacement[q][1],
-                                                0});
+                                               {d[0], d[1], 0});
             }
           // The scalars, each read from its vector's multiplier component
           // (the solution's own multiplier and tangential traction first).
@@ -245,15 +244,20 @@ namespace RingContact
                                       const Vector<double>             &vector,
                                       const FEValuesExtractors::Scalar &c) {
             v[c].get_function_values(vector, scalar);
-            grid.point_data[array].values.insert(
-              grid.point_data[array].values.end(),
-              scalar.begin(),
-              scalar.end());
+            for (unsigned int k = first_new; k <= n; ++k)
+              grid.point_data[array].values.push_back(scalar[point(k)]);
           };
           add_scalar(1, solution, pressure);
           add_scalar(2, solution, traction);
           for (unsigned int k = 0; k < surface_fields.size(); ++k)
-            add_scalar(3 + k, surface_fields[k].second, pressure);
+            {
+              const auto &field = surface_fields[k];
+              add_scalar(3 + k,
+                         face.closes_chain && field.closing_values.size() > 0 ?
+                           field.closing_values :
+                           field.values,
+                         pressure);
+            }
           for (unsigned int k = 0; k < n; ++k)
             grid.add_cell(VtuCellType::line, {first + k, first + k + 1});
         }
@@ -301,7 +305,7 @@ namespace RingContact
                    const Vector<double>                   &solution,
                    const std::vector<SurfaceField>        &surface_fields,
                    const std::map<unsigned int, Material> &materials,
-                   const std::set<types::boundary_id>     &slave_boundary_ids,
+                   const std::vector<SlaveFace>           &slave_faces,
                    const unsigned int                      step,
                    const double                            time)
   {
@@ -339,7 +343,7 @@ namespace RingContact
                           mapping,
                           solution,
                           surface_fields,
-                          slave_boundary_ids,
+                          slave_faces,
                           step,
                           time);
     };
@@ -410,21 +414,20 @@ namespace RingContact
   // length, and the .pvd that lists them.
   void
   VtuWriter::write_slave_surface(
-    const DoFHandler<2>                &dof_handler,
-    const hp::MappingCollection<2>     &mapping,
-    const Vector<double>               &solution,
-    const std::vector<SurfaceField>    &surface_fields,
-    const std::set<types::boundary_id> &slave_boundary_ids,
-    const unsigned int                  step,
-    const double                        time)
+    const DoFHandler<2>             &dof_handler,
+    const hp::MappingCollection<2>  &mapping,
+    const Vector<double>            &solution,
+    const std::vector<SurfaceField> &surface_fields,
+    const std::vector<SlaveFace>    &slave_faces,
+    const unsigned int               step,
+    const double                     time)
   {
-    VtuGrid surface =
-      slave_surface_grid(dof_handler,
-                         mapping,
-                         solution,
-                         surface_fields,
-                         slave_faces(dof_handler, slave_boundary_ids),
-                         subdivisions);
+    VtuGrid surface = slave_surface_grid(dof_handler,
+                                         mapping,
+                                         solution,
+                                         surface_fields,
+                                         slave_faces,
+                                         subdivisions);
     choose_precision(surface);
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";

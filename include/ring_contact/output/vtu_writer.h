@@ -14,7 +14,6 @@
 #include <ring_contact/output/vtu_format.h>
 
 #include <map>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,8 +44,28 @@ namespace RingContact
 
     /// A scalar of the slave surface's nodes, by name, stored in the
     /// multiplier component of a vector of the dofs (the gap, the arc
-    /// length).
-    using SurfaceField = std::pair<std::string, Vector<double>>;
+    /// length). `closing_values`, if not empty, are its values on the faces
+    /// that close a chain on itself: the arc length there runs to the
+    /// chain's length, where `values` hold the start's 0.
+    struct SurfaceField
+    {
+      std::string    name;
+      Vector<double> values;
+      Vector<double> closing_values = {};
+    };
+
+    /// A face of a slave surface, in the order the file lists them (chain
+    /// after chain, along each: ContactProblem::output_results()): whether
+    /// it is walked from its second vertex to its first, whether it starts
+    /// a chain, and whether it closes one on itself.
+    struct SlaveFace
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      unsigned int                        face_no      = 0;
+      bool                                reversed     = false;
+      bool                                starts_chain = true;
+      bool                                closes_chain = false;
+    };
 
     void
     write(const DoFHandler<2>                    &dof_handler,
@@ -54,7 +73,7 @@ namespace RingContact
           const Vector<double>                   &solution,
           const std::vector<SurfaceField>        &surface_fields,
           const std::map<unsigned int, Material> &materials,
-          const std::set<types::boundary_id>     &slave_boundary_ids,
+          const std::vector<SlaveFace>           &slave_faces,
           const unsigned int                      step,
           const double                            time);
 
@@ -66,13 +85,13 @@ namespace RingContact
                const std::string &bulk_stem,
                const double       time);
     void
-    write_slave_surface(const DoFHandler<2>                &dof_handler,
-                        const hp::MappingCollection<2>     &mapping,
-                        const Vector<double>               &solution,
-                        const std::vector<SurfaceField>    &surface_fields,
-                        const std::set<types::boundary_id> &slave_boundary_ids,
-                        const unsigned int                  step,
-                        const double                        time);
+    write_slave_surface(const DoFHandler<2>             &dof_handler,
+                        const hp::MappingCollection<2>  &mapping,
+                        const Vector<double>            &solution,
+                        const std::vector<SurfaceField> &surface_fields,
+                        const std::vector<SlaveFace>    &slave_faces,
+                        const unsigned int               step,
+                        const double                     time);
     static void
     record(std::vector<std::pair<double, std::string>> &records,
            const double                                 time,
