@@ -162,8 +162,8 @@ main()
       const auto        names = quoted_names(row);
       const std::set<std::string> claimed(names.begin(), names.end());
       check(row.find("cell data") == std::string::npos,
-            "the README claims no cell data (deal.II writes the material id "
-            "as point data)");
+            "the README claims no cell data (the material id is written as "
+            "point data)");
       const std::string file = folder + "/" + stem + "-" + scheme + "-0001.vtu";
       const auto        point_data = vtu_arrays(file, "PointData");
       check(point_data == claimed,

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -52,6 +53,10 @@ namespace RingContactTests
     int                      exit_code = -1; ///< -1 if killed by a signal
     int                      signal    = 0;  ///< the signal that killed it
     std::vector<std::string> lines;
+    double                   seconds = 0; ///< wall-clock time of the run
+    /// The program's largest resident set [bytes], measured by
+    /// run_program_measured() only (0 otherwise).
+    double peak_memory = 0;
 
     /// Number of printed lines that start with `prefix`.
     unsigned int
@@ -121,7 +126,8 @@ namespace RingContactTests
   {
     int pipe_ends[2];
     check(::pipe(pipe_ends) == 0, "pipe");
-    const pid_t pid = ::fork();
+    const auto  start = std::chrono::steady_clock::now();
+    const pid_t pid   = ::fork();
     check(pid >= 0, "fork");
     if (pid == 0)
       {
@@ -166,6 +172,9 @@ namespace RingContactTests
     std::fclose(in);
     int status = 0;
     ::waitpid(pid, &status, 0);
+    result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
     if (WIFEXITED(status))
       result.exit_code = WEXITSTATUS(status);
     else if (WIFSIGNALED(status))
@@ -183,6 +192,43 @@ namespace RingContactTests
     return run_command({RING_CONTACT_EXECUTABLE, prm_file},
                        on_line,
                        file_size_limit);
+  }
+
+  /// Run ring_contact on `prm_file` and measure its peak resident set.
+  /// Not from a process forked here: a fork starts with this test's
+  /// resident set (the libraries it links, 160 MB and more), and the
+  /// kernel's ru_maxrss of the child counts it. A small launcher
+  /// (Python, which the tests need anyway) forks the program instead and
+  /// writes the program's ru_maxrss to a file; the exit code (or 128 +
+  /// the signal) is the program's.
+  inline RunResult
+  run_program_measured(const std::string &prm_file)
+  {
+    const std::string peak_file = prm_file + ".peak";
+    const std::string launcher =
+      "import os, sys\n"
+      "pid = os.fork()\n"
+      "if pid == 0:\n"
+      "    try:\n"
+      "        os.execv(sys.argv[2], sys.argv[2:])\n"
+      "    finally:\n"
+      "        os._exit(127)\n"
+      "_, status, usage = os.wait4(pid, 0)\n"
+      "with open(sys.argv[1], 'w') as f:\n"
+      "    f.write(str(usage.ru_maxrss))\n"
+      "sys.exit(os.WEXITSTATUS(status) if os.WIFEXITED(status) else\n"
+      "         128 + os.WTERMSIG(status))\n";
+    std::remove(peak_file.c_str());
+    RunResult         result    = run_command({"/usr/bin/python3",
+                                               "-c",
+                                               launcher,
+                                               peak_file,
+                                               RING_CONTACT_EXECUTABLE,
+                                               prm_file});
+    const std::string kilobytes = file_contents(peak_file);
+    check(!kilobytes.empty(), "the launcher's measure in " + peak_file);
+    result.peak_memory = 1024.0 * std::stod(kilobytes);
+    return result;
   }
 
   /// Run ring_contact on `prm_file` under mpirun with `n` processes; the

@@ -930,8 +930,8 @@ namespace RingContact
     return true;
   }
 
-  void
-  ContactInterface::add_couplings(DynamicSparsityPattern &dsp)
+  std::vector<std::vector<types::global_dof_index>>
+  ContactInterface::coupling_blocks()
   {
     // Per slave segment, the master segments its points are paired with and
     // their neighbours (which enter through vertex and smoothed normals, and
@@ -964,13 +964,14 @@ namespace RingContact
              {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})
           dofs.insert(dofs.end(), list->begin(), list->end());
       }
+    std::vector<std::vector<types::global_dof_index>> blocks;
     for (auto &[s, dofs] : block)
       {
         std::sort(dofs.begin(), dofs.end());
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-        for (const auto row : dofs)
-          dsp.add_entries(row, dofs.begin(), dofs.end(), true);
+        blocks.push_back(std::move(dofs));
       }
+    return blocks;
   }
 
   // @sect4{Small strain: the linear gap}

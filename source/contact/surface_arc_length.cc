@@ -137,13 +137,17 @@ namespace RingContact
   } // namespace
 
 
-  std::map<types::global_dof_index, double>
-  arc_lengths(const ContactSurface &surface)
+  // The chains one after the other: those with an open end first, each
+  // walked whole from it, then the closed ones. The rotated copies of a
+  // cyclic sector are left out, and end the chains they border: their
+  // unknowns are the sector's own, and the VTU file holds the faces of the
+  // mesh only.
+  std::vector<SurfaceChain>
+  surface_chains(const ContactSurface &surface)
   {
-    const auto                &segments = surface.segments();
-    const std::vector<double> &nodes    = surface.multiplier_nodes();
-    std::map<types::global_dof_index, double> lengths;
-    std::vector<bool>                         visited(segments.size(), false);
+    const auto               &segments = surface.segments();
+    std::vector<SurfaceChain> chains;
+    std::vector<bool>         visited(segments.size(), false);
     const auto open_at = [&](const unsigned int s, const unsigned int e) {
       const unsigned int n = segments[s].neighbours[e];
       return n == numbers::invalid_unsigned_int || segments[n].is_copy;
@@ -165,15 +169,39 @@ namespace RingContact
                 }
         if (start == numbers::invalid_unsigned_int)
           break;
-        const auto chain =
+        // Oriented as a user predicts it (oriented_open(), oriented_closed()),
+        // and measured along the reference curve, which the chain's last
+        // face of a closed surface runs to in the VTU file.
+        SurfaceChain chain;
+        chain.closed = !open;
+        chain.steps =
           open ? oriented_open(surface, walk(surface, start, end, visited)) :
                  oriented_closed(surface, walk(surface, start, end, visited));
+        for (const auto &step : chain.steps)
+          chain.length += curve_length(surface, step.first, 0, 1);
+        chains.push_back(std::move(chain));
+      }
+    return chains;
+  }
+
+  // The arc length of each multiplier node along its chain. The nodes of
+  // a quadratic multiplier (three a segment) are measured to their own
+  // parameter on the segment, not interpolated, so that a curved segment's
+  // middle node lies at the true length.
+  std::map<types::global_dof_index, double>
+  arc_lengths(const ContactSurface &surface)
+  {
+    const auto                &segments = surface.segments();
+    const std::vector<double> &nodes    = surface.multiplier_nodes();
+    std::map<types::global_dof_index, double> lengths;
+    for (const auto &chain : surface_chains(surface))
+      {
         // Each node: the length up to its segment's entry, plus the length
         // within the segment from the entry to the node. A vertex shared by
         // two segments gets the same value from both, but for the start of
         // a closed chain, which keeps its 0.
         double before = 0;
-        for (const auto &[s, entry] : chain)
+        for (const auto &[s, entry] : chain.steps)
           {
             const auto &dofs = segments[s].multiplier_dofs;
             for (unsigned int i = 0; i < dofs.size(); ++i)

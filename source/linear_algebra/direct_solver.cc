@@ -11,15 +11,16 @@
 //
 // The umfpack_dl_* functions are the double/64-bit-integer variants, so
 // that the count of nonzeros of a large LU is not bounded by an int.
-#include <ring_contact/linear_algebra/direct_solver.h>
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/linear_algebra/direct_solver.h>
 
 #include <suitesparse/umfpack.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
-#include <sstream>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace RingContact
@@ -76,6 +77,21 @@ namespace RingContact
     if (numeric != nullptr)
       umfpack_dl_free_numeric(&numeric);
     numeric = nullptr;
+  }
+
+  // Before a new pattern is built (LinearSystem::release()): what the old
+  // one held goes first, so that the memory check of the new one and its
+  // peak do not count both.
+  void
+  DirectSolver::release()
+  {
+    free_numeric();
+    free_symbolic();
+    analysed = false;
+    std::vector<std::int64_t>().swap(row_start);
+    std::vector<std::int64_t>().swap(columns);
+    std::vector<std::size_t>().swap(source);
+    std::vector<double>().swap(values);
   }
 
   // @sect4{The factorization}
@@ -189,7 +205,7 @@ namespace RingContact
   void
   DirectSolver::analyse(const std::uint64_t pattern_version)
   {
-    const std::int64_t n = static_cast<std::int64_t>(row_start.size()) - 1;
+    const std::int64_t  n = static_cast<std::int64_t>(row_start.size()) - 1;
     std::vector<double> info(UMFPACK_INFO);
     const long          status = umfpack_dl_symbolic(n,
                                             n,
@@ -226,11 +242,63 @@ namespace RingContact
         analysed = false;
         std::ostringstream what;
         what << std::setprecision(3) << "the direct solver's factorization "
-             << "of the " << n << " unknowns would need about "
-             << bytes / 1e9 << " GB (UMFPACK's estimate), more than the "
-             << available / 1e9 << " GB this process can still have";
+             << "of the " << n << " unknowns would need about " << bytes / 1e9
+             << " GB (UMFPACK's estimate), more than the " << available / 1e9
+             << " GB this process can still have";
         throw FactorizationTooLarge(what.str(), bytes);
       }
+  }
+
+  // @sect4{The factorization's memory before the pattern is built}
+  //
+  // UMFPACK chooses its symmetric strategy for these matrices (their
+  // pattern is symmetric, their diagonal nearly all nonzero). It first
+  // takes out the singletons, here the constrained unknowns, whose rows
+  // and columns hold the diagonal alone (the pattern leaves their
+  // couplings out); the n rows left are ordered by AMD on A + A^T, which
+  // leaves every row with more than max(16, a sqrt(n)) entries besides the
+  // diagonal to the end of it, a being UMFPACK's control AMD_DENSE (10 by
+  // default, read from UMFPACK's own defaults so that the rule is the
+  // library's). Near that threshold a row's count decides between a
+  // sparse order and a dense block: the counts are exact for that reason.
+  //
+  // The d rows left to the end are eliminated last, where the fill of all
+  // that came before has coupled them with each other: a dense block. Its
+  // factors hold d^2 values, the last frontal matrix, which is the block
+  // itself, d^2 more while it is factorized, and UMFPACK's indices of the
+  // factors and its copy of the matrix about d^2 again: 3.1 d^2 values in
+  // all, the coefficient set a little below what UMFPACK's own estimates
+  // of its peak give (doc/validation.md, "The memory guard"). Each of the
+  // s sparse rows ordered before is coupled through the elimination with
+  // about half of the dense ones, in L and in U alike: d s values more.
+  // How much more fill a thick body under the surface brings (the sparse
+  // rows' elimination reaching further into the dense ones) is not
+  // counted: the estimate stays below UMFPACK's, so that a problem that
+  // fits is not refused for it, and UMFPACK's analysis still judges the
+  // whole before the factorization runs.
+  DirectSolver::DenseRows
+  DirectSolver::dense_rows(
+    const std::vector<types::global_dof_index> &row_lengths)
+  {
+    const double ordered =
+      std::count_if(row_lengths.begin(),
+                    row_lengths.end(),
+                    [](const types::global_dof_index l) { return l > 1; });
+    std::vector<double> defaults(UMFPACK_CONTROL);
+    umfpack_dl_defaults(defaults.data());
+    const double threshold =
+      std::min(ordered,
+               std::max(16.0,
+                        defaults[UMFPACK_AMD_DENSE] * std::sqrt(ordered)));
+    DenseRows dense;
+    dense.rows     = std::count_if(row_lengths.begin(),
+                               row_lengths.end(),
+                               [&](const types::global_dof_index l) {
+                                 return l > 1 && l - 1 > threshold;
+                               });
+    const double d = dense.rows, s = ordered - d;
+    dense.bytes = sizeof(double) * (3.1 * d * d + d * s);
+    return dense;
   }
 
   void

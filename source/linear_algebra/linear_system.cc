@@ -15,15 +15,19 @@
 // The assembly's hot path is add_cell(): a cell that needs neither the
 // constraints nor another process goes straight to the places of its
 // entries in the matrix's storage, found once per sparsity pattern.
-#include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/linear_algebra/linear_system.h>
+#include <ring_contact/linear_algebra/memory_estimate.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace RingContact
@@ -126,6 +130,101 @@ namespace RingContact
     matrix.clear();
     if (communicator != MPI_COMM_NULL)
       MPI_Comm_free(&communicator);
+  }
+
+  // @sect4{The memory, judged before the pattern is built}
+  //
+  // A coarse slave on a fine master couples each slave segment's unknowns
+  // with those of the thousands of master segments it faces: the pattern
+  // then holds the square of that per segment, and UMFPACK's ordering
+  // leaves those rows to the end, where they fill in as one dense block.
+  // The analysis after the pattern, the matrix and UMFPACK's copy of them
+  // were built (DirectSolver::analyse()) said so only after a minute and
+  // gigabytes of them. Here the pattern's rows are counted from the
+  // couplings (joined_row_lengths()), and what it, the matrix and the
+  // factorization of its dense rows will hold is compared with the memory
+  // this process can have, before any of it exists. It is an estimate from
+  // below: the factorization of the sparse rows is not counted (UMFPACK's
+  // analysis still judges the whole), so that a problem that fits is not
+  // refused here.
+  void
+  LinearSystem::check_memory(
+    const DynamicSparsityPattern                            &bulk,
+    const std::vector<std::vector<types::global_dof_index>> &blocks)
+  {
+    const types::global_dof_index              n = bulk.n_rows();
+    const std::vector<types::global_dof_index> row_lengths =
+      joined_row_lengths(bulk, blocks);
+    const double entries =
+      std::accumulate(row_lengths.begin(), row_lengths.end(), 0.0);
+    // On one process: deal.II's pattern, its matrix and UMFPACK's sorted
+    // copy. Under Trilinos every process builds the whole contact pattern
+    // in a DynamicSparsityPattern first (an index an entry), and its share
+    // of the rows as Trilinos's matrix (a value, a 32-bit column and the
+    // graph's own 32-bit column an entry).
+    const double pattern_bytes =
+      use_trilinos ? entries * (sizeof(types::global_dof_index) +
+                                16.0 / n_processes(communicator)) :
+                     entries * DirectSolver::bytes_per_entry;
+    // The dense rows matter to UMFPACK's order only: MUMPS's (METIS's
+    // nested dissection) and the iterative solver have no such rule.
+    const DirectSolver::DenseRows dense =
+      use_trilinos ? DirectSolver::DenseRows() :
+                     DirectSolver::dense_rows(row_lengths);
+    factorization_estimate = dense.bytes;
+    double needed          = pattern_bytes + dense.bytes;
+    double available       = static_cast<double>(available_memory());
+    // Every process decides alike: the largest need against the smallest
+    // memory (a process that cannot tell its memory, 0, does not count).
+    if (n_processes(communicator) > 1)
+      {
+        needed = dealii::Utilities::MPI::max(needed, communicator);
+        available =
+          -dealii::Utilities::MPI::max(available > 0 ?
+                                         -available :
+                                         -std::numeric_limits<double>::max(),
+                                       communicator);
+        if (available == std::numeric_limits<double>::max())
+          available = 0;
+      }
+    if (!(available > 0 && needed > 0.9 * available))
+      return;
+    std::ostringstream what;
+    what << std::setprecision(3);
+    if (dense.bytes > 0)
+      what << "the direct solver's factorization of the " << n
+           << " unknowns would need about " << needed / 1e9
+           << " GB (UMFPACK's factors of the " << dense.rows
+           << " unknowns whose rows are dense, " << dense.bytes / 1e9
+           << " GB, and the matrix with its pattern, " << pattern_bytes / 1e9
+           << " GB, estimated from the couplings before any is built)";
+    else
+      what << "the Newton system of the " << n << " unknowns would need about "
+           << needed / 1e9 << " GB for its matrix and pattern (" << entries
+           << " entries, estimated from the couplings before they are "
+              "built)";
+    what << ", more than the " << available / 1e9
+         << " GB this process can still have";
+    throw FactorizationTooLarge(what.str(), needed);
+  }
+
+  // The old pattern's matrix and factorization go before the new pattern
+  // is made: without this a new pairing in the middle of a run counted
+  // them against the memory left, and a problem that fits at the set-up
+  // could be refused at its first new pattern (they are freed at the
+  // reinit() that follows anyway).
+  void
+  LinearSystem::release()
+  {
+    if (!use_trilinos)
+      {
+        matrix.clear();
+        sparsity_pattern.reinit(0, 0, 0);
+        if (umfpack)
+          umfpack->release();
+      }
+    else
+      distributed_part->matrix.clear();
   }
 
   // @sect4{A new sparsity pattern}

@@ -13,6 +13,7 @@
 
 #include <ring_contact/materials/material.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace RingContact
@@ -133,15 +134,24 @@ namespace RingContact
   // The 3d formula, sqrt(((s11 - s22)^2 + (s22 - s33)^2 + (s33 - s11)^2) / 2
   // + 3 s12^2), with the law's sigma33: zero in plane stress, but not in
   // plane strain, where the plane-stress formula that every run once used
-  // misstated it.
+  // misstated it. The components are scaled by the largest of them before
+  // they are squared: at a load of 1e-200 Pa the squares underflowed, and
+  // the VTU files showed a von Mises stress of zero beside stresses of
+  // 1e-200.
   double
   Material::von_mises_stress(const Tensor<2, 2> &grad_u) const
   {
-    const Tensor<2, 2> s   = cauchy_stress(grad_u);
-    const double       s33 = out_of_plane_stress(grad_u);
-    return std::sqrt(0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
-                            (s[1][1] - s33) * (s[1][1] - s33) +
-                            (s33 - s[0][0]) * (s33 - s[0][0])) +
-                     3 * s[0][1] * s[0][1]);
+    const Tensor<2, 2> s     = cauchy_stress(grad_u);
+    const double       s33   = out_of_plane_stress(grad_u);
+    const double       scale = std::max(
+      {std::abs(s[0][0]), std::abs(s[1][1]), std::abs(s33), std::abs(s[0][1])});
+    if (!(scale > 0))
+      return scale; // zero, or not a number
+    const double s11 = s[0][0] / scale, s22 = s[1][1] / scale,
+                 s12 = s[0][1] / scale, z = s33 / scale;
+    return scale *
+           std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - z) * (s22 - z) +
+                            (z - s11) * (z - s11)) +
+                     3 * s12 * s12);
   }
 } // namespace RingContact

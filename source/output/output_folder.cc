@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -86,6 +87,48 @@ namespace RingContact
       ::fsync(descriptor);
       ::close(descriptor);
     }
+
+    // The temporary is made new (O_CREAT | O_EXCL), never opened: a
+    // symbolic link planted under its name would otherwise have its target
+    // written (or created, if it pointed nowhere yet), and a hard link would
+    // share the truncated contents with another name. A regular file there is
+    // a temporary that a killed run left: its name is removed (what another
+    // name of it holds is untouched) and the file made anew. A symbolic link
+    // is refused with its name, like the lock file's (OutputFolder): this
+    // program does not follow links in its folder, and does not remove one
+    // it did not make either.
+    int
+    open_temporary(const std::string &temporary, const std::string &filename)
+    {
+      for (int attempt = 0; attempt < 3; ++attempt)
+        {
+          const int descriptor =
+            ::open(temporary.c_str(),
+                   O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW,
+                   0644);
+          if (descriptor >= 0)
+            return descriptor;
+          if (errno != EEXIST)
+            fail("write", filename, errno);
+          struct stat status;
+          if (::lstat(temporary.c_str(), &status) != 0)
+            continue; // gone since: try again
+          if (!S_ISREG(status.st_mode))
+            throw std::runtime_error(
+              "cannot write '" + filename + "': its temporary file '" +
+              temporary + "' is " +
+              (S_ISLNK(status.st_mode) ?
+                 "a symbolic link, which this program does not follow "
+                 "(what it points to is left as it is)" :
+                 "not a regular file") +
+              ": remove it, or choose another Output/Directory");
+          if (::unlink(temporary.c_str()) != 0 && errno != ENOENT)
+            fail("remove the leftover temporary file", temporary, errno);
+        }
+      throw std::runtime_error("cannot write '" + filename +
+                               "': its temporary file '" + temporary +
+                               "' reappears as soon as it is removed");
+    }
   } // namespace
 
   // @sect4{Whole files: temporary, fsync, rename}
@@ -102,45 +145,12 @@ namespace RingContact
       .string();
   }
 
-  // For a file written by somebody else's stream (deal.II's write_vtu into
-  // an std::ofstream, in vtu_writer.cc), which gives no descriptor: the
-  // file is opened again only to fsync it. Without the fsync, a system
-  // crash shortly after the rename could leave the new name on an empty
-  // file.
-  void
-  commit_file(const std::string &temporary, const std::string &filename)
-  {
-    const int descriptor = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
-    if (descriptor < 0 || ::fsync(descriptor) != 0)
-      {
-        const int error = errno;
-        if (descriptor >= 0)
-          ::close(descriptor);
-        ::unlink(temporary.c_str());
-        fail("write", filename, error);
-      }
-    ::close(descriptor);
-    if (::rename(temporary.c_str(), filename.c_str()) != 0)
-      {
-        const int error = errno;
-        ::unlink(temporary.c_str());
-        fail("rename a temporary file to", filename, error);
-      }
-  }
-
   void
   write_file_atomically(const std::string &filename,
                         const std::string &contents)
   {
-    // O_NOFOLLOW: a symbolic link planted under the temporary's name
-    // would otherwise have its target overwritten.
-    const std::string temporary = temporary_name(filename);
-    const int         descriptor =
-      ::open(temporary.c_str(),
-             O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW,
-             0644);
-    if (descriptor < 0)
-      fail("write", filename, errno);
+    const std::string temporary  = temporary_name(filename);
+    const int         descriptor = open_temporary(temporary, filename);
     if (!write_all(descriptor, contents.data(), contents.size()) ||
         ::fsync(descriptor) != 0)
       {

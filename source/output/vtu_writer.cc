@@ -9,227 +9,290 @@
 // the gap, where the multiplier lives. A .pvd file for each lists the
 // steps with their pseudo-times, so that ParaView animates the run.
 //
+// The fields are evaluated here, in double, at the points of each cell's
+// patch (`subdivisions` intervals each way), and written by vtu_format.cc:
+// deal.II's DataOut, which the program used before, keeps its patches in
+// single precision, and a load of 1e-200 came out as zero in every file.
+// An array is written in double precision where one of its values needs
+// it, in single precision otherwise.
+//
 // Every file is written whole or not at all (output_folder.cc): a VTU
 // under a temporary name, renamed when complete, and the PVD that lists it
 // only afterwards, so that a PVD on disk never names a missing or partial
 // VTU. Under MPI each process writes its own cells as a piece, and
 // process 0 the rest.
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/data_out_faces.h>
-#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/hp/fe_values.h>
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/output/output_folder.h>
+#include <ring_contact/output/vtu_format.h>
 #include <ring_contact/output/vtu_writer.h>
 
-#include <cerrno>
-#include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <limits>
 #include <memory>
-#include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace RingContact
 {
   namespace
   {
-    // @sect4{Postprocessors}
+    // @sect4{The points of a patch}
     //
-    // The Cauchy stress as a tensor (ParaView computes its principal
-    // values and directions) and the von Mises stress, with sigma_33 in
-    // plane strain, from the displacement gradient and each body's own
-    // material. The cell's material id selects the body, so that bodies of
-    // different laws and constants are postprocessed in one pass.
-    class StressPostprocessor : public DataPostprocessor<2>
+    // A cell is written as (n + 1) x (n + 1) points, evenly spaced on the
+    // reference cell, x fastest; a face as n + 1 points from its first
+    // vertex to its second. The mapping places them, curved where the
+    // geometry is, in the cell's interior as well (the polar manifold
+    // curves every cell of a ring, not only those on its boundary).
+    Quadrature<2>
+    patch_points(const unsigned int n)
     {
-    public:
-      explicit StressPostprocessor(
-        const std::map<unsigned int, Material> &materials)
-          : materials(materials)
-      {}
+      std::vector<Point<2>> points;
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int i = 0; i <= n; ++i)
+          points.emplace_back(double(i) / n, double(j) / n);
+      return Quadrature<2>(points);
+    }
 
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>> &computed_quantities) const override
-      {
-        const auto      cell     = inputs.template get_cell<2>();
-        const Material &material = materials.at(cell->material_id());
-        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-          {
-            // The first two components of the solution are u_x and u_y:
-            // their gradients are the rows of H = Grad u.
-            Tensor<2, 2> H;
-            for (unsigned int d = 0; d < 2; ++d)
-              H[d] = inputs.solution_gradients[q][d];
-            // A law checks its range at the quadrature points of the
-            // assembly; at these points (the cell's vertices) a state near
-            // the bound may lie past it (Saint Venant-Kirchhoff in plane
-            // stress without a thickness): no stress exists there, written
-            // as NaN (ParaView's missing value), not thrown mid-file.
-            if (!material.in_range(H))
-              {
-                for (unsigned int c = 0; c < 5; ++c)
-                  computed_quantities[q][c] =
-                    std::numeric_limits<double>::quiet_NaN();
-                continue;
-              }
-            const Tensor<2, 2> s = material.cauchy_stress(H);
-            // Row by row (deal.II's unrolled order), the order in which
-            // DataOut reads the components of a tensor field.
-            for (unsigned int i = 0; i < 2; ++i)
-              for (unsigned int j = 0; j < 2; ++j)
-                computed_quantities[q]
-                                   [Tensor<2, 2>::component_to_unrolled_index(
-                                     TableIndices<2>(i, j))] = s[i][j];
-            // After the tensor's four components, as get_names() lists them.
-            computed_quantities[q][4] = material.von_mises_stress(H);
-          }
-      }
-
-      // Four components with one name, marked part of a tensor: VTK then
-      // writes one 3 x 3 tensor field (the 2d tensor padded with zeros),
-      // not four scalars.
-      std::vector<std::string>
-      get_names() const override
-      {
-        return {"cauchy_stress",
-                "cauchy_stress",
-                "cauchy_stress",
-                "cauchy_stress",
-                "von_Mises_stress"};
-      }
-
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      get_data_component_interpretation() const override
-      {
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>
-          interpretation(
-            4, DataComponentInterpretation::component_is_part_of_tensor);
-        interpretation.push_back(
-          DataComponentInterpretation::component_is_scalar);
-        return interpretation;
-      }
-
-      // The gradients alone: the laws have no internal state, so the stress
-      // is a function of Grad u at the point.
-      UpdateFlags
-      get_needed_update_flags() const override
-      {
-        return update_gradients;
-      }
-
-    private:
-      const std::map<unsigned int, Material> &materials;
-    };
-
-    // Only the faces of the slave surface. DataOutFaces, built with
-    // surface_only = true, would write every boundary face; these two
-    // overrides walk the same faces and keep those whose boundary id is a
-    // slave surface's. The walk goes over all cells, active or not (a
-    // FaceDescriptor holds a cell_iterator), and skips the inactive ones.
-    class SlaveFaces : public DataOutFaces<2>
+    Quadrature<1>
+    segment_points(const unsigned int n)
     {
-    public:
-      explicit SlaveFaces(const std::set<types::boundary_id> &ids)
-          : DataOutFaces<2>(true)
-          , slave_ids(ids)
-      {}
+      std::vector<Point<1>> points;
+      for (unsigned int k = 0; k <= n; ++k)
+        points.emplace_back(double(k) / n);
+      return Quadrature<1>(points);
+    }
 
-      FaceDescriptor
-      first_face() override
-      {
-        return next_slave_face({this->triangulation->begin_active(), 0}, true);
-      }
-
-      FaceDescriptor
-      next_face(const FaceDescriptor &face) override
-      {
-        return next_slave_face(face, false);
-      }
-
-    private:
-      // The first slave face at or after `face` (include_this), or
-      // strictly after it: first_face() asks for the former from face 0
-      // of the first cell, next_face() for the latter.
-      FaceDescriptor
-      next_slave_face(FaceDescriptor face, bool include_this)
-      {
-        auto         cell = face.first;
-        unsigned int f    = face.second;
-        if (!include_this)
-          ++f;
-        for (; cell != this->triangulation->end(); ++cell, f = 0)
-          if (cell->is_active())
-            for (; f < cell->n_faces(); ++f)
-              if (cell->face(f)->at_boundary() &&
-                  slave_ids.count(cell->face(f)->boundary_id()) > 0)
-                return {cell, f};
-        return {this->triangulation->end(), 0};
-      }
-
-      const std::set<types::boundary_id> slave_ids;
-    };
-
-    // The displacement alone (the multiplier component is written on the
-    // slave surface only: in the bulk it would be a field that falls to zero
-    // across the first layer of cells).
-    class DisplacementPostprocessor : public DataPostprocessorVector<2>
+    // VTK's place of the point (i, j) of a Lagrange quadrilateral of degree
+    // n (vtkHigherOrderQuadrilateral::PointIndexFromIJK): the four corners
+    // counterclockwise, then the edges' inner points (bottom and top
+    // left to right, right and left bottom to top, in the order bottom,
+    // right, top, left), then the inner points row by row.
+    std::int64_t
+    lagrange_index(const unsigned int i,
+                   const unsigned int j,
+                   const unsigned int n)
     {
-    public:
-      DisplacementPostprocessor()
-          : DataPostprocessorVector<2>("displacement", update_values)
-      {}
+      const bool i_end = i == 0 || i == n, j_end = j == 0 || j == n;
+      if (i_end && j_end)
+        return i == 0 ? (j == 0 ? 0 : 3) : (j == 0 ? 1 : 2);
+      if (j_end)
+        return 4 + (i - 1) + (j == 0 ? 0 : (n - 1) + (n - 1));
+      if (i_end)
+        return 4 + (j - 1) + (i == n ? (n - 1) : 3 * (n - 1));
+      return 4 + 4 * (n - 1) + (i - 1) + (n - 1) * (j - 1);
+    }
 
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>> &computed_quantities) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-          for (unsigned int d = 0; d < 2; ++d)
-            computed_quantities[q][d] = inputs.solution_values[q][d];
-      }
-    };
-
-    // A nodal field of the slave surface (the gap, the arc length), stored
-    // in the multiplier component of a dof vector: it belongs to the
-    // multiplier's nodes, so the DoFHandler's own numbering places it and
-    // DataOutFaces interpolates it like the pressure.
-    class SurfaceFieldPostprocessor : public DataPostprocessorScalar<2>
+    // A cell's points as one cell: a Lagrange quadrilateral with n > 1, so
+    // that ParaView draws curved edges curved and a Q2 field with its own
+    // degree; a plain quadrilateral with n = 1.
+    void
+    add_patch_cell(VtuGrid           &grid,
+                   const std::int64_t first,
+                   const unsigned int n)
     {
-    public:
-      explicit SurfaceFieldPostprocessor(const std::string &name)
-          : DataPostprocessorScalar<2>(name, update_values)
-      {}
+      std::vector<std::int64_t> ids((n + 1) * (n + 1));
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int i = 0; i <= n; ++i)
+          ids[lagrange_index(i, j, n)] = first + j * (n + 1) + i;
+      grid.add_cell(n > 1 ? VtuCellType::lagrange_quadrilateral :
+                            VtuCellType::quadrilateral,
+                    ids);
+    }
 
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>> &computed_quantities) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-          computed_quantities[q][0] =
-            inputs.solution_values[q][Components::multiplier];
-      }
-    };
-
-    // u_x and u_y as one vector field, the contact pressure and the
-    // tangential traction as scalars (the latter zero without friction).
-    std::vector<DataComponentInterpretation::DataComponentInterpretation>
-    solution_interpretation()
+    // @sect4{The bodies}
+    //
+    // Displacement, the Cauchy stress as a tensor (ParaView computes its
+    // principal values and directions: the 2 x 2 tensor padded with zeros
+    // to VTK's 3 x 3, row by row) and the von Mises stress, with sigma_33
+    // in plane strain, from the displacement gradient and each body's own
+    // material (the laws have no internal state, so the stress is a
+    // function of Grad u at the point); and each cell's material id, the
+    // physical group of a gmsh model, constant on the cell. Under MPI the
+    // cells of the process's subdomain alone.
+    VtuGrid
+    bulk_grid(const DoFHandler<2>                    &dof_handler,
+              const hp::MappingCollection<2>         &mapping,
+              const Vector<double>                   &solution,
+              const std::map<unsigned int, Material> &materials,
+              const unsigned int                      n,
+              const unsigned int                      piece,
+              const unsigned int                      n_pieces)
     {
-      return {DataComponentInterpretation::component_is_part_of_vector,
-              DataComponentInterpretation::component_is_part_of_vector,
-              DataComponentInterpretation::component_is_scalar,
-              DataComponentInterpretation::component_is_scalar};
+      VtuGrid grid;
+      grid.point_data    = {{"displacement", 3},
+                            {"cauchy_stress", 9},
+                            {"von_Mises_stress", 1},
+                            {"material_id", 1}};
+      auto &displacement = grid.point_data[0].values;
+      auto &stress       = grid.point_data[1].values;
+      auto &von_mises    = grid.point_data[2].values;
+      auto &material_id  = grid.point_data[3].values;
+
+      hp::FEValues<2>                  hp_values(mapping,
+                                dof_handler.get_fe_collection(),
+                                hp::QCollection<2>(patch_points(n)),
+                                update_values | update_gradients |
+                                  update_quadrature_points);
+      const FEValuesExtractors::Vector u(Components::ux);
+      std::vector<Tensor<1, 2>>        values;
+      std::vector<Tensor<2, 2>>        gradients;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (n_pieces > 1 && cell->subdomain_id() != piece)
+            continue;
+          hp_values.reinit(cell);
+          const FEValues<2> &v = hp_values.get_present_fe_values();
+          values.resize(v.n_quadrature_points);
+          gradients.resize(v.n_quadrature_points);
+          v[u].get_function_values(solution, values);
+          v[u].get_function_gradients(solution, gradients);
+          const Material    &material = materials.at(cell->material_id());
+          const std::int64_t first    = grid.n_points();
+          for (unsigned int q = 0; q < v.n_quadrature_points; ++q)
+            {
+              const Point<2> x = v.quadrature_point(q);
+              grid.points.values.insert(grid.points.values.end(),
+                                        {x[0], x[1], 0});
+              displacement.insert(displacement.end(),
+                                  {values[q][0], values[q][1], 0});
+              // A law checks its range at the quadrature points of the
+              // assembly; at these points (the patch's) a state near the
+              // bound may lie past it (Saint Venant-Kirchhoff in plane
+              // stress without a thickness): no stress exists there,
+              // written as NaN (ParaView's missing value), not thrown
+              // mid-file.
+              if (!material.in_range(gradients[q]))
+                {
+                  const double nan = std::numeric_limits<double>::quiet_NaN();
+                  stress.insert(stress.end(), 9, nan);
+                  von_mises.push_back(nan);
+                }
+              else
+                {
+                  const Tensor<2, 2> s = material.cauchy_stress(gradients[q]);
+                  stress.insert(
+                    stress.end(),
+                    {s[0][0], s[0][1], 0, s[1][0], s[1][1], 0, 0, 0, 0});
+                  von_mises.push_back(material.von_mises_stress(gradients[q]));
+                }
+              material_id.push_back(cell->material_id());
+            }
+          add_patch_cell(grid, first, n);
+        }
+      return grid;
+    }
+
+    // @sect4{The slave surfaces}
+    //
+    // The faces of the slave surfaces in the order the problem gives them:
+    // chain after chain, each in the order its arc length runs, so that a
+    // plot over the arc length (ParaView's Plot Data, which joins the
+    // points in the file's order) draws the curve; the faces used to come
+    // in the order of the cells, which on a gmsh mesh is no order along
+    // the surface, and the plot was a zigzag. Consecutive faces of a chain
+    // share their point; the face that closes a chain on itself ends at a
+    // point of its own, where the arc length is the chain's length.
+    //
+    // Each face is n straight segments (a curved face subdivided). On them
+    // the displacement, the contact pressure and the tangential traction
+    // (zero without friction), and the nodal fields the problem hands over
+    // (the gap, the arc length), stored in the multiplier component of a
+    // vector of the unknowns: they belong to the multiplier's nodes and are
+    // interpolated like the pressure. The pressure is written here only: in
+    // the bulk it would be a field falling to zero across the layer of
+    // slave cells.
+    VtuGrid
+    slave_surface_grid(
+      const DoFHandler<2>                        &dof_handler,
+      const hp::MappingCollection<2>             &mapping,
+      const Vector<double>                       &solution,
+      const std::vector<VtuWriter::SurfaceField> &surface_fields,
+      const std::vector<VtuWriter::SlaveFace>    &faces,
+      const unsigned int                          n)
+    {
+      VtuGrid grid;
+      grid.point_data = {{"displacement", 3},
+                         {"contact_pressure", 1},
+                         {"tangential_traction", 1}};
+      for (const auto &field : surface_fields)
+        grid.point_data.push_back({field.name, 1});
+
+      hp::FEFaceValues<2>              hp_values(mapping,
+                                    dof_handler.get_fe_collection(),
+                                    hp::QCollection<1>(segment_points(n)),
+                                    update_values | update_quadrature_points);
+      const FEValuesExtractors::Vector u(Components::ux);
+      const FEValuesExtractors::Scalar pressure(Components::multiplier);
+      const FEValuesExtractors::Scalar traction(Components::tangential);
+      std::vector<Tensor<1, 2>>        displacement(n + 1);
+      std::vector<double>              scalar(n + 1);
+      for (const auto &face : faces)
+        {
+          hp_values.reinit(face.cell, face.face_no);
+          const FEFaceValues<2> &v = hp_values.get_present_fe_values();
+          v[u].get_function_values(solution, displacement);
+          // The face's points in the chain's direction; its first is the
+          // last of the face before, but at a chain's start.
+          const auto point = [&](const unsigned int k) {
+            return face.reversed ? n - k : k;
+          };
+          const unsigned int first_new = face.starts_chain ? 0 : 1;
+          const std::int64_t first =
+            static_cast<std::int64_t>(grid.n_points()) - first_new;
+          for (unsigned int k = first_new; k <= n; ++k)
+            {
+              const Point<2> x = v.quadrature_point(point(k));
+              grid.points.values.insert(grid.points.values.end(),
+                                        {x[0], x[1], 0});
+              const Tensor<1, 2> &d = displacement[point(k)];
+              grid.point_data[0].values.insert(grid.point_data[0].values.end(),
+                                               {d[0], d[1], 0});
+            }
+          // The scalars, each read from its vector's multiplier component
+          // (the solution's own multiplier and tangential traction first).
+          const auto add_scalar = [&](const unsigned int                array,
+                                      const Vector<double>             &vector,
+                                      const FEValuesExtractors::Scalar &c) {
+            v[c].get_function_values(vector, scalar);
+            for (unsigned int k = first_new; k <= n; ++k)
+              grid.point_data[array].values.push_back(scalar[point(k)]);
+          };
+          add_scalar(1, solution, pressure);
+          add_scalar(2, solution, traction);
+          for (unsigned int k = 0; k < surface_fields.size(); ++k)
+            {
+              const auto &field = surface_fields[k];
+              add_scalar(3 + k,
+                         face.closes_chain && field.closing_values.size() > 0 ?
+                           field.closing_values :
+                           field.values,
+                         pressure);
+            }
+          for (unsigned int k = 0; k < n; ++k)
+            grid.add_cell(VtuCellType::line, {first + k, first + k + 1});
+        }
+      return grid;
+    }
+
+    // Every process writes its piece with the same types, which the .pvtu
+    // names once: an array is in double precision on all if it is on one.
+    void
+    choose_precision(VtuGrid &grid, const MPI_Comm communicator)
+    {
+      choose_precision(grid);
+      if (n_processes(communicator) == 1)
+        return;
+      grid.points.double_precision =
+        Utilities::MPI::logical_or(grid.points.double_precision, communicator);
+      for (auto &array : grid.point_data)
+        array.double_precision =
+          Utilities::MPI::logical_or(array.double_precision, communicator);
     }
   } // namespace
 
@@ -258,59 +321,23 @@ namespace RingContact
                    const Vector<double>                   &solution,
                    const std::vector<SurfaceField>        &surface_fields,
                    const std::map<unsigned int, Material> &materials,
-                   const std::set<types::boundary_id>     &slave_boundary_ids,
+                   const std::vector<SlaveFace>           &slave_faces,
                    const unsigned int                      step,
                    const double                            time)
   {
-    // The pseudo-time goes into the files as well as into the .pvd.
-    DataOutBase::VtkFlags flags;
-    flags.time = time;
-    // Fast zlib: best compression costs more than the solve here.
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-
-    // The bodies: curved cells as VTK Lagrange quadrilaterals, which deal.II
-    // 9.4 writes correctly for dim = 2; displacement, Cauchy stress tensor,
-    // von Mises stress and the material id of each cell.
-    // A vector of one value per active cell is cell data for DataOut:
-    // each cell shows its body's material id, the physical group of a gmsh
-    // model (float suffices for ids).
-    Vector<float> material_id(dof_handler.get_triangulation().n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      material_id(cell->active_cell_index()) = cell->material_id();
-    StressPostprocessor       stress(materials);
-    DisplacementPostprocessor displacement;
-    DataOut<2>                data_out;
-    data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(solution, displacement);
-    data_out.add_data_vector(solution, stress);
-    data_out.add_data_vector(material_id, "material_id");
-    // With subdivisions > 1 the cells are written as Lagrange cells of that
-    // degree, so that ParaView draws curved edges curved and a Q2 field
-    // with its own degree; with one, as plain quadrilaterals.
-    // curved_inner_cells (below) applies the mapping to the interior cells
-    // too, since the polar manifold curves every cell of a ring, not only
-    // those on its boundary.
-    DataOutBase::VtkFlags bulk_flags    = flags;
-    bulk_flags.write_higher_order_cells = subdivisions > 1;
-    data_out.set_flags(bulk_flags);
     // Under MPI every process holds the whole mesh and state; each writes
     // the cells it owns (its subdomain), so that the pieces partition the
     // mesh and no cell is written twice.
     const unsigned int n_pieces = n_processes(communicator);
     const unsigned int piece    = this_process(communicator);
-    if (n_pieces > 1)
-      data_out.set_cell_selection(
-        [piece](const Triangulation<2>::cell_iterator &cell) {
-          return cell->is_active() && cell->subdomain_id() == piece;
-        });
-    data_out.build_patches(mapping,
-                           subdivisions,
-                           DataOut<2>::curved_inner_cells);
+    VtuGrid            bulk     = bulk_grid(
+      dof_handler, mapping, solution, materials, subdivisions, piece, n_pieces);
+    choose_precision(bulk, communicator);
     // Four digits: ParaView groups the files of a series by name, in the
     // order of their numbers.
     const std::string bulk_stem =
       "solution-" + tag + "-" + Utilities::int_to_string(step, 4);
-    const std::string bulk_name = write_bulk(data_out, bulk_stem);
+    const std::string bulk_name = write_bulk(bulk, bulk_stem, time);
 
     // The rest on process 0: the .pvtu, the .pvd files and the slave
     // surface (the whole state is on every process).
@@ -322,9 +349,8 @@ namespace RingContact
           std::vector<std::string> pieces;
           for (unsigned int p = 0; p < n_pieces; ++p)
             pieces.push_back(bulk_stem + "." + std::to_string(p) + ".vtu");
-          std::ostringstream pvtu;
-          data_out.write_pvtu_record(pvtu, pieces);
-          write_file_atomically(directory + "/" + bulk_name, pvtu.str());
+          write_file_atomically(directory + "/" + bulk_name,
+                                pvtu_contents(bulk, pieces));
         }
       record(bulk_records, time, bulk_name);
       write_file_atomically(directory + "/solution-" + tag + ".pvd",
@@ -333,9 +359,9 @@ namespace RingContact
                           mapping,
                           solution,
                           surface_fields,
-                          slave_boundary_ids,
+                          slave_faces,
                           step,
-                          flags);
+                          time);
     };
     // Under MPI process 0's failure is broadcast, so that every process
     // throws it and none waits in the next collective call.
@@ -364,14 +390,16 @@ namespace RingContact
   // list (the .pvtu) process 0 writes later, once all are whole. Returns
   // the name the .pvd lists.
   std::string
-  VtuWriter::write_bulk(const DataOut<2>  &data_out,
-                        const std::string &bulk_stem)
+  VtuWriter::write_bulk(const VtuGrid     &bulk,
+                        const std::string &bulk_stem,
+                        const double       time)
   {
     const unsigned int n_pieces  = n_processes(communicator);
     const unsigned int piece     = this_process(communicator);
     std::string        bulk_name = bulk_stem + ".vtu";
     if (n_pieces == 1)
-      write_vtu_file(data_out, directory + "/" + bulk_name);
+      write_file_atomically(directory + "/" + bulk_name,
+                            vtu_contents(bulk, time));
     else
       {
         // Each process its piece; when all are whole, process 0 lists them.
@@ -381,9 +409,9 @@ namespace RingContact
         std::string error;
         try
           {
-            write_vtu_file(data_out,
-                           directory + "/" + bulk_stem + "." +
-                             std::to_string(piece) + ".vtu");
+            write_file_atomically(directory + "/" + bulk_stem + "." +
+                                    std::to_string(piece) + ".vtu",
+                                  vtu_contents(bulk, time));
           }
         catch (const std::exception &e)
           {
@@ -398,113 +426,32 @@ namespace RingContact
     return bulk_name;
   }
 
-  // @sect4{The slave surfaces}
-  //
-  // The slave surfaces (of every contact pair), with the nodal gap. The
-  // whole solution vector is written on the faces (type_dof_data): the
-  // displacement, the contact pressure and the tangential traction of
-  // the slave layer. The pressure is written here only: in the bulk it
-  // would be a field falling to zero across the layer's cells.
+  // The slave surfaces of every contact pair, with the nodal gap and arc
+  // length, and the .pvd that lists them.
   void
   VtuWriter::write_slave_surface(
-    const DoFHandler<2>                &dof_handler,
-    const hp::MappingCollection<2>     &mapping,
-    const Vector<double>               &solution,
-    const std::vector<SurfaceField>    &surface_fields,
-    const std::set<types::boundary_id> &slave_boundary_ids,
-    const unsigned int                  step,
-    const DataOutBase::VtkFlags        &flags)
+    const DoFHandler<2>             &dof_handler,
+    const hp::MappingCollection<2>  &mapping,
+    const Vector<double>            &solution,
+    const std::vector<SurfaceField> &surface_fields,
+    const std::vector<SlaveFace>    &slave_faces,
+    const unsigned int               step,
+    const double                     time)
   {
-    // The names of the four components of the FESystem, in order.
-    const std::vector<std::string> names = {"displacement",
-                                            "displacement",
-                                            "contact_pressure",
-                                            "tangential_traction"};
-
-    SlaveFaces faces(slave_boundary_ids);
-    faces.attach_dof_handler(dof_handler);
-    faces.add_data_vector(solution,
-                          names,
-                          DataOutFaces<2>::type_dof_data,
-                          solution_interpretation());
-    // Each field's postprocessor lives until the patches are built.
-    std::vector<std::unique_ptr<SurfaceFieldPostprocessor>> postprocessors;
-    for (const auto &[name, values] : surface_fields)
-      {
-        postprocessors.push_back(
-          std::make_unique<SurfaceFieldPostprocessor>(name));
-        faces.add_data_vector(values, *postprocessors.back());
-      }
-    // Linear segments, `subdivisions` per face: deal.II 9.4 numbers the
-    // points of a 1d Lagrange curve wrongly (and a Debug build aborts in
-    // write_high_order_cells for dim = 1), so the surface's curved faces
-    // are written as subdivided straight segments.
-    DataOutBase::VtkFlags surface_flags    = flags;
-    surface_flags.write_higher_order_cells = false;
-    faces.set_flags(surface_flags);
-    // DataOutFaces takes one mapping: that of a slave body (the bodies of a
-    // problem of several pairs are straight-sided, their mappings agree).
-    unsigned int slave_fe_index = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() &&
-            slave_boundary_ids.count(face->boundary_id()))
-          slave_fe_index = cell->active_fe_index();
-    faces.build_patches(
-      mapping[std::min<unsigned int>(slave_fe_index, mapping.size() - 1)],
-      subdivisions);
+    VtuGrid surface = slave_surface_grid(dof_handler,
+                                         mapping,
+                                         solution,
+                                         surface_fields,
+                                         slave_faces,
+                                         subdivisions);
+    choose_precision(surface);
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
-    write_vtu_file(faces, directory + "/" + surface_name);
-    record(surface_records, flags.time, surface_name);
+    write_file_atomically(directory + "/" + surface_name,
+                          vtu_contents(surface, time));
+    record(surface_records, time, surface_name);
     write_file_atomically(directory + "/slave-" + tag + ".pvd",
                           pvd_contents(surface_records));
-  }
-
-  // Under a temporary name, then renamed: a VTU file is whole or absent.
-  // deal.II writes to an std::ostream, so the file is a stream here and
-  // commit_file() reopens it to fsync it before the rename.
-  template <int patch_dim>
-  void
-  VtuWriter::write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
-                            const std::string &filename) const
-  {
-    const std::string temporary = temporary_name(filename);
-    // Check the stream after the writing and after the flush: a full disk
-    // shows there (deal.II may also throw ExcIO on its own).
-    // errno is cleared first so that the message names the system's reason
-    // only when there was one; a stream can also fail without it.
-    bool written = false;
-    errno        = 0;
-    try
-      {
-        std::ofstream out(temporary);
-        if (out)
-          {
-            data.write_vtu(out);
-            out.flush();
-            out.close();
-          }
-        written = !out.fail();
-      }
-    catch (const std::exception &)
-      {
-        // deal.II's own ExcIO: the same error as a failed stream.
-        written = false;
-      }
-    // No partial temporary is left behind: the folder holds whole files
-    // and nothing else of ours.
-    if (!written)
-      {
-        const int       error = errno;
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error(
-          "cannot write '" + filename + "': " +
-          (error != 0 ? std::strerror(error) :
-                        "disk full, file size limit or no permission"));
-      }
-    commit_file(temporary, filename);
   }
 
   // A rewritten step (the state written again after a failed step)

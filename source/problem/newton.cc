@@ -270,35 +270,6 @@ namespace RingContact
     return true;
   }
 
-  // Why a factorization may need so much memory: the contact couples each
-  // slave segment to every master segment it faces, and a slave segment
-  // facing many (a coarse slave on a fine master) makes a dense block of
-  // their unknowns, whose factor fills in. A fine master of 10 000 cells
-  // under a coarse slave of 7 asked for 11.7 GB: the message names the
-  // pair and the remedy instead of leaving the user with a memory figure.
-  std::string
-  ContactProblem::describe_fill_in() const
-  {
-    std::ostringstream text;
-    text << std::setprecision(3);
-    for (unsigned int k = 0; k < contacts.size(); ++k)
-      {
-        const double slave = contacts[k]->slave_surface().min_segment_length();
-        const double master =
-          contacts[k]->master_surface().min_segment_length();
-        if (slave > 4 * master)
-          text << "; contact pair " << k + 1 << ": the slave surface's "
-               << "segments are up to " << slave / master
-               << " times longer than the master's, and each couples to "
-                  "every master segment it faces (a dense block): make the "
-                  "slave the finer surface, or mesh them alike";
-      }
-    const std::string causes = text.str();
-    return causes.empty() ? "; a coarser mesh, or Newton/Linear solver = "
-                            "iterative, needs less" :
-                            causes;
-  }
-
   // @sect4{Held pairing}
   //
   // After how many iterations of a Newton solve the pairing is held. On a

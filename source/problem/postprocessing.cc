@@ -461,29 +461,79 @@ namespace RingContact
       }
     // The gap of each slave node, at the multiplier's place: the surface's
     // file shows the gap beside the pressure, and lambda g = 0 can be seen.
-    // The arc length along the surface (surface_arc_length.h) is the
-    // abscissa to plot them against.
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto &contact : contacts)
       for (const auto dof : contact->multiplier_dofs())
         nodal_gap(dof) = contact->gap_at(dof, solution);
-    if (arc_length.size() != dof_handler.n_dofs())
+    // The faces first: they make the arc length at the first output.
+    const std::vector<VtuWriter::SlaveFace> slave_faces =
+      slave_faces_along_chains();
+    vtu_writer->write(dof_handler,
+                      mapping_collection,
+                      solution,
+                      {{"gap", nodal_gap},
+                       {"arc_length", arc_length, arc_length_closed}},
+                      materials,
+                      slave_faces,
+                      step,
+                      current_time);
+  }
+
+  // The slave faces for the VTU file, chain after chain in the order the
+  // arc length runs along each (surface_arc_length.h), which is the
+  // abscissa to plot the pressure and the gap against: a plot over it
+  // joins the points in the file's order. The arc length itself is made at
+  // the first output (the reference geometry does not change; refinement
+  // empties it): at the nodes, and again with the start of each closed
+  // chain at the chain's length, for the face that closes it.
+  std::vector<VtuWriter::SlaveFace>
+  ContactProblem::slave_faces_along_chains()
+  {
+    const bool new_arc_length = arc_length.size() != dof_handler.n_dofs();
+    if (new_arc_length)
       {
         arc_length.reinit(dof_handler.n_dofs());
         for (const auto &contact : contacts)
           for (const auto &[dof, s] : arc_lengths(contact->slave_surface()))
             arc_length(dof) = s;
+        arc_length_closed = arc_length;
       }
-    std::set<types::boundary_id> slave_ids;
-    for (const auto &[slave, master] : parameters.contact_pairs())
-      slave_ids.insert(slave);
-    vtu_writer->write(dof_handler,
-                      mapping_collection,
-                      solution,
-                      {{"gap", nodal_gap}, {"arc_length", arc_length}},
-                      materials,
-                      slave_ids,
-                      step,
-                      current_time);
+    std::vector<VtuWriter::SlaveFace> faces;
+    for (const auto &contact : contacts)
+      {
+        const ContactSurface &surface  = contact->slave_surface();
+        const auto           &segments = surface.segments();
+        for (const auto &chain : surface_chains(surface))
+          for (unsigned int k = 0; k < chain.steps.size(); ++k)
+            {
+              const auto &[s, entry]        = chain.steps[k];
+              const SurfaceSegment &segment = segments[s];
+              VtuWriter::SlaveFace  face;
+              face.cell    = segment.cell;
+              face.face_no = segment.face_no;
+              // The chain enters the segment at its vertex `entry`: the
+              // face is walked backwards if that is its second vertex.
+              face.reversed =
+                segment.cell->face(segment.face_no)->vertex_index(0) !=
+                segment.vertices[entry];
+              face.starts_chain = k == 0;
+              face.closes_chain = chain.closed && k + 1 == chain.steps.size();
+              faces.push_back(face);
+            }
+        // The start of a closed chain, the node at its first segment's
+        // entry: the chain's length on the face that closes it.
+        if (new_arc_length)
+          for (const auto &chain : surface_chains(surface))
+            if (chain.closed)
+              {
+                const auto &[s, entry] = chain.steps.front();
+                const auto &nodes      = surface.multiplier_nodes();
+                for (unsigned int i = 0; i < nodes.size(); ++i)
+                  if (nodes[i] == entry)
+                    arc_length_closed(segments[s].multiplier_dofs[i]) =
+                      chain.length;
+              }
+      }
+    return faces;
   }
 } // namespace RingContact

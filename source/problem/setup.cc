@@ -321,8 +321,13 @@ namespace RingContact
           largest_estimate_said = bytes;
           log << "Note: the direct solver's factorization will need about "
               << std::setprecision(3) << bytes / gigabyte
-              << " GB (UMFPACK's estimate) and take long" << describe_fill_in()
-              << '\n'
+              << " GB (UMFPACK's estimate";
+          // Beside it the estimate the memory check made before the
+          // pattern was built, so that the two can be compared.
+          if (system->estimated_factorization_memory() > 0)
+            log << "; " << system->estimated_factorization_memory() / gigabyte
+                << " GB estimated from the couplings";
+          log << ") and take long" << describe_fill_in() << '\n'
               << std::setprecision(6);
         }
     };
@@ -520,11 +525,71 @@ namespace RingContact
     // every process. The couplings of constrained unknowns are left out
     // (keep_constrained_dofs = false): AffineConstraints condenses them
     // away in the assembly, and dropping them halved UMFPACK's time.
+    system->release();
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(
       dof_handler, dsp, constraints, false, this_process);
+    // The contact's blocks, each all with all, are judged before they join
+    // the pattern: a coarse slave on a fine master makes blocks whose
+    // pattern alone would take gigabytes (LinearSystem::check_memory()).
+    // The old pattern's matrix and factorization were freed first
+    // (release()): they are replaced, and must not count against the new.
+    std::vector<std::vector<types::global_dof_index>> blocks;
     for (const auto &contact : contacts)
-      contact->add_couplings(dsp);
+      for (auto &block : contact->coupling_blocks())
+        blocks.push_back(std::move(block));
+    try
+      {
+        system->check_memory(dsp, blocks);
+      }
+    catch (const FactorizationTooLarge &e)
+      {
+        throw FactorizationTooLarge(e.what() + describe_fill_in(), e.bytes);
+      }
+    for (const auto &block : blocks)
+      for (const auto row : block)
+        dsp.add_entries(row, block.begin(), block.end(), true);
+    blocks.clear();
     system->reinit(dsp, locally_owned_dofs, dof_handler.n_dofs());
+  }
+
+  // Why a factorization may need so much memory: the contact couples each
+  // slave segment to every master segment it faces, and a slave segment
+  // facing many (a coarse slave on a fine master) makes a dense block of
+  // their unknowns, whose factor fills in. The message names the pair and
+  // the remedy instead of leaving the user with a memory figure, and the
+  // ways to need less memory for the same mesh: MUMPS orders the unknowns
+  // by METIS's nested dissection, which makes no dense block of such rows
+  // (UMFPACK's AMD leaves them to the end, where they fill in together),
+  // and the iterative solver factorizes no matrix of the whole system.
+  std::string
+  ContactProblem::describe_fill_in() const
+  {
+    std::ostringstream text;
+    text << std::setprecision(3);
+    for (unsigned int k = 0; k < contacts.size(); ++k)
+      {
+        const double slave = contacts[k]->slave_surface().min_segment_length();
+        const double master =
+          contacts[k]->master_surface().min_segment_length();
+        if (slave > 4 * master)
+          text << "; contact pair " << k + 1 << ": the slave surface's "
+               << "segments are up to " << slave / master
+               << " times longer than the master's, and each couples to "
+                  "every master segment it faces (a dense block): make the "
+                  "slave the finer surface, or mesh them alike";
+      }
+    // The other solvers, those this run does not use already.
+    text << "; ways to need less memory: ";
+    if (system->direct_solver_name() == "UMFPACK")
+      text << "Newton/Linear solver = MUMPS (METIS's order, on one process "
+              "or shared by several under mpirun), ";
+    else if (system->direct_solver_name() == "MUMPS")
+      text << "more processes under mpirun (MUMPS shares the factors "
+              "among them), ";
+    if (!system->iterative())
+      text << "Newton/Linear solver = iterative (no factorization), ";
+    text << "or a coarser mesh";
+    return text.str();
   }
 } // namespace RingContact

@@ -230,10 +230,13 @@ namespace RingContact
     bool
     sparsity_covers_pairing() const;
 
-    /// Add the couplings of the current pairs (and their neighbours, so
-    /// that small slips do not need a new pattern) to a sparsity pattern.
-    void
-    add_couplings(DynamicSparsityPattern &dsp);
+    /// The couplings of the current pairs (and their neighbours, so that
+    /// small slips do not need a new pattern), one block of unknowns per
+    /// slave segment, each sorted: every unknown of a block is coupled with
+    /// every other. Known before the sparsity pattern is built, so that
+    /// the memory of the system can be estimated first (LinearSystem).
+    std::vector<std::vector<types::global_dof_index>>
+    coupling_blocks();
 
     /// Add the contact terms to the tangent matrix and rhs = -residual:
     /// the slave points on this process's cells, and the rows of the open

@@ -63,6 +63,32 @@ namespace RingContact
       return counts;
     }
 
+    /// The memory of a factorization judged before the pattern is built
+    /// (LinearSystem::check_memory()), from the lengths of the pattern's
+    /// rows (the diagonal included): the rows that UMFPACK's fill-reducing
+    /// ordering leaves to the end as dense, and an estimate from below of
+    /// UMFPACK's peak memory [bytes] for the block they make there. Both
+    /// zero where no row is dense; the factorization of the other rows is
+    /// not estimated.
+    struct DenseRows
+    {
+      types::global_dof_index rows  = 0;
+      double                  bytes = 0;
+    };
+    static DenseRows
+    dense_rows(const std::vector<types::global_dof_index> &row_lengths);
+
+    /// The bytes this class and the matrix hold per entry of the pattern
+    /// while UMFPACK factorizes: deal.II's pattern (4) and matrix (8), and
+    /// the sorted copy UMFPACK reads (64-bit columns and values, the place
+    /// of each value in the matrix: 24).
+    static constexpr double bytes_per_entry = 36;
+
+    /// Free the factorization, the analysis and the sorted copy of the
+    /// pattern (a new pattern is coming); the statistics stay.
+    void
+    release();
+
     /// Called after each analysis with UMFPACK's estimate of the
     /// factorization's peak memory [bytes], before it runs (a note in the
     /// log when it is large: a long factorization is then said before).

@@ -29,10 +29,10 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 #include <ring_contact/linear_algebra/direct_solver.h>
 #include <ring_contact/linear_algebra/mumps_solver.h>
-#include <ring_contact/input/parameters.h>
 
 #include <cstdint>
 #include <memory>
@@ -67,6 +67,34 @@ namespace RingContact
     LinearSystem(const LinearSystem &) = delete;
     LinearSystem &
     operator=(const LinearSystem &) = delete;
+
+    /// Free the matrix, its pattern and the direct solver's factorization
+    /// before a new pattern is built: they are replaced by it, and the
+    /// memory check of the new one must not count them. The matrix is
+    /// unusable until reinit().
+    void
+    release();
+
+    /// Before a new sparsity pattern is built: `bulk` holds the couplings
+    /// of this process's cells, `blocks` the contact's (each a sorted set of
+    /// unknowns coupled all with all: ContactInterface::coupling_blocks()).
+    /// Throws FactorizationTooLarge, saying the estimate and the memory
+    /// this process can have, when the pattern, the matrix and (on one
+    /// process) UMFPACK's factorization of its dense rows would need more
+    /// than 90 % of that memory. Collective under MPI.
+    void
+    check_memory(
+      const DynamicSparsityPattern                            &bulk,
+      const std::vector<std::vector<types::global_dof_index>> &blocks);
+
+    /// The factorization's memory [bytes] that the last check_memory()
+    /// estimated from the couplings (0 where it estimated none): said
+    /// beside UMFPACK's own estimate once its analysis has run.
+    double
+    estimated_factorization_memory() const
+    {
+      return factorization_estimate;
+    }
 
     /// A new sparsity pattern: `dsp` holds the couplings of this process's
     /// cells and contact points (rows of any process); `owned` the rows this
@@ -197,6 +225,8 @@ namespace RingContact
     SparsityPattern               sparsity_pattern;
     SparseMatrix<double>          matrix;
     std::unique_ptr<DirectSolver> umfpack;
+    /// check_memory()'s estimate of the factorization [bytes].
+    double factorization_estimate = 0;
     /// Counts the sparsity patterns: the solvers keep their analysis while
     /// it does not change.
     std::uint64_t pattern_version = 0;

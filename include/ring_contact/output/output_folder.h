@@ -16,13 +16,6 @@ namespace RingContact
   std::string
   temporary_name(const std::string &filename);
 
-  /// Flush `temporary` to disk (fsync) and rename it to `filename`, which is
-  /// then either its old or its new contents, whole; throws with a one-line
-  /// message naming the file if any of this fails (the temporary is then
-  /// removed).
-  void
-  commit_file(const std::string &temporary, const std::string &filename);
-
   /// Replace `filename` by `contents` atomically (temporary, fsync, rename).
   void
   write_file_atomically(const std::string &filename,

@@ -5,17 +5,15 @@
 #ifndef ring_contact_output_vtu_writer_h
 #define ring_contact_output_vtu_writer_h
 
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <ring_contact/materials/material.h>
+#include <ring_contact/output/vtu_format.h>
 
 #include <map>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,9 +24,11 @@ namespace RingContact
 
   /// VTU of the rings (displacement, Cauchy stress, ring id, contact
   /// pressure) and of the slave surface (contact pressure and gap), and the
-  /// PVD records that list them. Every file is written under a temporary
-  /// name and renamed, the VTU files first, then the PVD file that lists
-  /// them: a PVD on disk lists only whole VTU files.
+  /// PVD records that list them. The fields are evaluated in double, and
+  /// an array is written in double precision where one of its values would
+  /// be lost in single (vtu_format.h). Every file is written under a
+  /// temporary name and renamed, the VTU files first, then the PVD file
+  /// that lists them: a PVD on disk lists only whole VTU files.
   class VtuWriter
   {
   public:
@@ -44,8 +44,28 @@ namespace RingContact
 
     /// A scalar of the slave surface's nodes, by name, stored in the
     /// multiplier component of a vector of the dofs (the gap, the arc
-    /// length).
-    using SurfaceField = std::pair<std::string, Vector<double>>;
+    /// length). `closing_values`, if not empty, are its values on the faces
+    /// that close a chain on itself: the arc length there runs to the
+    /// chain's length, where `values` hold the start's 0.
+    struct SurfaceField
+    {
+      std::string    name;
+      Vector<double> values;
+      Vector<double> closing_values = {};
+    };
+
+    /// A face of a slave surface, in the order the file lists them (chain
+    /// after chain, along each: ContactProblem::output_results()): whether
+    /// it is walked from its second vertex to its first, whether it starts
+    /// a chain, and whether it closes one on itself.
+    struct SlaveFace
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      unsigned int                        face_no      = 0;
+      bool                                reversed     = false;
+      bool                                starts_chain = true;
+      bool                                closes_chain = false;
+    };
 
     void
     write(const DoFHandler<2>                    &dof_handler,
@@ -53,7 +73,7 @@ namespace RingContact
           const Vector<double>                   &solution,
           const std::vector<SurfaceField>        &surface_fields,
           const std::map<unsigned int, Material> &materials,
-          const std::set<types::boundary_id>     &slave_boundary_ids,
+          const std::vector<SlaveFace>           &slave_faces,
           const unsigned int                      step,
           const double                            time);
 
@@ -61,19 +81,17 @@ namespace RingContact
     /// The bodies' .vtu file, or this process's piece of it; the name the
     /// .pvd lists.
     std::string
-    write_bulk(const DataOut<2> &data_out, const std::string &bulk_stem);
+    write_bulk(const VtuGrid     &bulk,
+               const std::string &bulk_stem,
+               const double       time);
     void
-    write_slave_surface(const DoFHandler<2>                &dof_handler,
-                        const hp::MappingCollection<2>     &mapping,
-                        const Vector<double>               &solution,
-                        const std::vector<SurfaceField>    &surface_fields,
-                        const std::set<types::boundary_id> &slave_boundary_ids,
-                        const unsigned int                  step,
-                        const DataOutBase::VtkFlags        &flags);
-    template <int patch_dim>
-    void
-    write_vtu_file(const DataOutInterface<patch_dim, 2> &data,
-                   const std::string                    &filename) const;
+    write_slave_surface(const DoFHandler<2>             &dof_handler,
+                        const hp::MappingCollection<2>  &mapping,
+                        const Vector<double>            &solution,
+                        const std::vector<SurfaceField> &surface_fields,
+                        const std::vector<SlaveFace>    &slave_faces,
+                        const unsigned int               step,
+                        const double                     time);
     static void
     record(std::vector<std::pair<double, std::string>> &records,
            const double                                 time,

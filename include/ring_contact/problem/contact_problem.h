@@ -452,6 +452,10 @@ namespace RingContact
     measure_balance_of_forces(HistoryRow &row);
     void
     output_results(const unsigned int step);
+    /// The slave faces in the VTU file's order, along each chain of each
+    /// slave surface; the arc length made at the first call.
+    std::vector<VtuWriter::SlaveFace>
+    slave_faces_along_chains();
     /// The diagnostics before the first step (diagnostics/): the rigid
     /// motions that only the contact holds, surfaces that interpenetrate.
     void
@@ -662,8 +666,9 @@ namespace RingContact
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;
     /// The reference arc length at the slave nodes, for the VTU files
-    /// (made at the first output: the reference geometry does not change).
-    Vector<double> arc_length;
+    /// (made at the first output: the reference geometry does not change),
+    /// and the same with each closed chain's start at the chain's length.
+    Vector<double> arc_length, arc_length_closed;
     TimerOutput    timer;
 
     /// The step lines (output/progress.h) and the clock they read.
