@@ -8,7 +8,7 @@
 // 1/2 while it grew, then one or two nodes released per iteration); a steel
 // cylinder on aluminium so took 12 iterations at h = 0.005, 28 to 33 and a
 // step cut at h = 0.0025. With the edges extrapolated
-// (ContactInterface::extrapolate_zone_edges()) and the whole update taken
+// (ActiveSet::extrapolate_zone_edges()) and the whole update taken
 // while they move: 3 to 5 iterations here, no cut, from an exact touch (d0
 // = 0) and from the shipped overlap (d0 = 2e-4) alike; the test allows 6.
 //
@@ -25,7 +25,7 @@
 // d0 = 2e-4: 11, 29 and a cut, 35 and a cut. Now the zone finds its width
 // with every closed node sticking (piecewise linear: its edges are
 // extrapolated), then the stick zones' edges are extrapolated the same way
-// (newton.cc, ContactInterface::update_friction()): 5 iterations here. The
+// (first_step.cc, ActiveSet::choose_friction_states()): 5 iterations here. The
 // issue asks for at most 10 and no cut, which the test asserts, with a
 // stick zone and sliding edges; bench/first-step runs h = 0.01 to 0.0025,
 // one step or the first of four (3 to 10). The test asserts the same for
@@ -220,8 +220,8 @@ namespace
     check(row.newton_iterations <= 10 && row.step_cuts == 0,
           what + ": at most 10 iterations, no cut");
     // In finite strain the four steps too: a sliding node whose trial turns
-    // past the opposite bound sticks first (ContactInterface::
-    // update_friction()); without that rule Gauss 2 took 58 (mu = 0.2) and
+    // past the opposite bound sticks first (ActiveSet::
+    // choose_friction_states()); without that rule Gauss 2 took 58 (mu = 0.2) and
     // 39 (mu = 0.5) iterations in all, with it 28 and 29; and the second
     // step, after one from rest, starts from the first's state scaled as the
     // square root of the load (ContactProblem::extrapolation_factor()):

@@ -192,7 +192,7 @@ namespace
     }
     // The states settle first: at finite strain a sliding node whose trial
     // turns past the opposite bound sticks for one update before it slides
-    // the other way (ContactInterface::update_friction()), so that a second
+    // the other way (ActiveSet::choose_friction_states()), so that a second
     // update at the same iterate may change them; the checks below assemble
     // at this iterate again and expect its states.
     bool settled = false;
@@ -208,7 +208,7 @@ namespace
     // right-hand side on the free rows, up to round-off, and the same
     // measures but the force floor, which needs the tangent.
     {
-      problem.assemble_newton_system(ContactInterface::Pairing::search,
+      problem.assemble_newton_system(Pairing::search,
                                      ContactProblem::Assembly::residual);
       const ResidualMeasure measure = problem.residual_measure();
       double                largest = 0, difference = 0;
@@ -266,11 +266,10 @@ namespace
       {
         if (constraints.is_constrained(j))
           continue;
-        const auto &tangential = contact.tangential_dofs();
+        const auto &tangential = contact.nodes().tangential_dofs;
+        const auto &normal     = contact.nodes().dofs;
         const bool  traction =
-          std::find(contact.multiplier_dofs().begin(),
-                    contact.multiplier_dofs().end(),
-                    j) != contact.multiplier_dofs().end() ||
+          std::find(normal.begin(), normal.end(), j) != normal.end() ||
           std::find(tangential.begin(), tangential.end(), j) !=
             tangential.end();
         const double h =
@@ -311,11 +310,14 @@ namespace
       }
     problem.assemble_newton_system();
     if (friction > 0)
-      check(contact.n_active() > 0 &&
-              contact.n_slipping() == (friction > 1 ? 0 : contact.n_active()),
-            "friction: every closed node sticks (mu = 1e3) or slides (" +
-              std::to_string(contact.n_slipping()) + " of " +
-              std::to_string(contact.n_active()) + " closed nodes slide)");
+      {
+        const auto &states = contact.active_set();
+        check(states.n_active() > 0 &&
+                states.n_slipping() == (friction > 1 ? 0 : states.n_active()),
+              "friction: every closed node sticks (mu = 1e3) or slides (" +
+                std::to_string(states.n_slipping()) + " of " +
+                std::to_string(states.n_active()) + " closed nodes slide)");
+      }
     const std::string name =
       scheme + (pressure_loaded ? ", pressure on r = R1" : "") +
       (vertex ? ", at master vertices" : "") +

@@ -3,8 +3,8 @@
 // The walk over the slave points of a contact interface, which builds the
 // contact element of each (contact_element.cc) and adds its residual and
 // exact derivative to the Newton system (assemble()), its forces alone
-// (add_forces()), or the weighted slips of friction
-// (compute_weighted_slips()).
+// (add_forces()), or the weighted slips of friction (weighted_slips()); and
+// the sparsity pattern of the contact couplings.
 #include <deal.II/base/mpi.h>
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/lac/full_matrix.h>
@@ -49,14 +49,15 @@ namespace RingContact
     // the linearisation of the max in C_k (and of the Coulomb projection) is
     // the choice of a row per node.
     const auto is_active = [this](const types::global_dof_index dof) {
-      return static_cast<bool>(active[multiplier_index.at(dof)]);
+      return states.is_closed(multiplier_nodes.index.at(dof));
     };
     // 0 sticking, +1 or -1 sliding, 2 open or sticking where held on both
     // sides (no tangential row from the points, see find_tangential_ties()).
     const auto friction_state = [this](const types::global_dof_index dof) {
-      const unsigned int k    = multiplier_index.at(dof);
-      const bool         held = k < tied.size() && tied[k] && slip_sign[k] == 0;
-      return active[k] && !held ? slip_sign[k] : 2;
+      const unsigned int k    = multiplier_nodes.index.at(dof);
+      const int          sign = states.friction_state(k);
+      const bool         held = k < tied.size() && tied[k] && sign == 0;
+      return states.is_closed(k) && !held ? sign : 2;
     };
     // (Before the first assembly there is no converged state yet: only
     // add_forces() can come that early, and the tangential rows, which
@@ -68,7 +69,7 @@ namespace RingContact
                                                      *converged_master,
                                                      dual_basis}) :
         std::nullopt;
-    for (const auto &point : points)
+    for (const auto &point : point_pairing.points())
       {
         if (process != numbers::invalid_unsigned_int &&
             slave.segments()[point.slave_segment].cell->subdomain_id() !=
@@ -133,25 +134,27 @@ namespace RingContact
     // w_k lambda_k rather than lambda_k: every row is a force per unit
     // thickness, so that the residual norm weighs them with the others; w_k is
     // the reference weight, a constant, so the row stays linear.
-    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
-      if (!active[k] && system.owned_rows().is_element(multiplier_dof_list[k]))
+    const auto &nodes = multiplier_nodes;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      if (!states.is_closed(k) && system.owned_rows().is_element(nodes.dofs[k]))
         {
-          const auto dof = multiplier_dof_list[k];
+          const auto dof = nodes.dofs[k];
           system.add_diagonal(dof,
-                              reference_weight[k],
-                              -reference_weight[k] * solution(dof));
+                              nodes.reference_weight[k],
+                              -nodes.reference_weight[k] * solution(dof));
         }
     if (!friction)
       return;
-    for (unsigned int k = 0; k < multiplier_dof_list.size(); ++k)
+    for (unsigned int k = 0; k < nodes.size(); ++k)
       {
-        const auto   t = tangential_dof_list[k], n = multiplier_dof_list[k];
-        const double w = reference_weight[k];
+        const auto   t = nodes.tangential_dofs[k], n = nodes.dofs[k];
+        const double w = nodes.reference_weight[k];
+        const int    slip_sign = states.friction_state(k);
         if (!system.owned_rows().is_element(t))
           continue;
-        if (!active[k] || (tied[k] && slip_sign[k] == 0))
+        if (!states.is_closed(k) || (tied[k] && slip_sign == 0))
           system.add_diagonal(t, w, -w * solution(t));
-        else if (slip_sign[k] == 0)
+        else if (slip_sign == 0)
           // Sticking: c s~_k (the points' rows) + eps w lambda_t = 0. The
           // nodes whose slip depends on no unknown are tied (above); eps =
           // 1e-12 allows a slip of 1e-12 w lambda_t / c, and gives a node
@@ -169,7 +172,7 @@ namespace RingContact
             // b = sign mu w: the row w lambda_t - b lambda couples the node's
             // two multipliers, hence a 2 x 2 element with the normal
             // multiplier's column rather than a diagonal entry.
-            const double       b = slip_sign[k] * friction_coefficient * w;
+            const double       b = slip_sign * friction_coefficient * w;
             FullMatrix<double> matrix(2, 2);
             Vector<double>     rhs(2);
             matrix(0, 0) = w;
@@ -205,7 +208,7 @@ namespace RingContact
     const AffineConstraints<double> &constraints,
     const MPI_Comm                   communicator) const
   {
-    const unsigned int n = multiplier_dof_list.size();
+    const unsigned int n = multiplier_nodes.size();
     tied.assign(n, false);
     if (friction_coefficient == 0)
       return;
@@ -249,7 +252,8 @@ namespace RingContact
     std::vector<unsigned int> slave_axis(n, 0), master_axis(n, 0);
     for (unsigned int k = 0; k < n; ++k)
       {
-        const auto &[s, t] = node_sites.at(multiplier_dof_list[k]).front();
+        const auto &[s, t] =
+          multiplier_nodes.sites.at(multiplier_nodes.dofs[k]).front();
         double    moved    = 0;
         const int axis     = held_axis(slave, s, t, moved);
         if (axis < 0)
@@ -304,15 +308,15 @@ namespace RingContact
   // decides the stick and slip states from s~, and all must decide the same.
   // The element needs the current partner and normal too: the slip is measured
   // along the current tangent.
-  void
-  ContactInterface::compute_weighted_slips(const Vector<double> &solution)
+  std::vector<double>
+  ContactInterface::weighted_slips(const Vector<double> &solution) const
   {
-    std::fill(weighted_slip.begin(), weighted_slip.end(), 0.0);
+    std::vector<double> weighted_slip(multiplier_nodes.size(), 0.0);
     const ConvergedState converged{converged_solution,
                                    *converged_slave,
                                    *converged_master,
                                    dual_basis};
-    for (const auto &point : points)
+    for (const auto &point : point_pairing.points())
       {
         const ElementLayout layout(slave,
                                    master,
@@ -328,7 +332,7 @@ namespace RingContact
           const double ds  = element.length_element().val();
           const auto  &seg = slave.segments()[point.slave_segment];
           for (unsigned int k = 0; k < seg.multiplier_dofs.size(); ++k)
-            weighted_slip[multiplier_index.at(seg.multiplier_dofs[k])] +=
+            weighted_slip[multiplier_nodes.index.at(seg.multiplier_dofs[k])] +=
               element.tangential_basis(k).val() * s * ds;
         };
         if (layout.n_unknowns() <= small_capacity)
@@ -336,5 +340,82 @@ namespace RingContact
         else
           add_slip(ContactElement<LargeAD>(layout));
       }
+    return weighted_slip;
+  }
+
+  // @sect4{The sparsity pattern of the contact couplings}
+  //
+  // The tangent's pattern holds, per slave segment, the master segments its
+  // points are paired with and their neighbours. A new pattern costs a new
+  // symbolic analysis of the factorization, which the direct solvers keep while
+  // the pattern does not change; with the neighbours in it, a point that slips
+  // to the next segment needs none. After each update() the Newton loop asks
+  // whether the pattern still covers the pairs (problem/assembly.cc).
+  bool
+  ContactInterface::sparsity_covers_pairing() const
+  {
+    for (const auto &point : point_pairing.points())
+      {
+        if (pattern_pairs.count(
+              {point.slave_segment, point.projection.segment}) == 0)
+          return false;
+        // Friction: the old partner enters through the slip.
+        if (friction_coefficient > 0 &&
+            pattern_pairs.count(
+              {point.slave_segment, point.old_projection.segment}) == 0)
+          return false;
+        // The neighbours enter through vertex and smoothed normals.
+        for (const unsigned int b :
+             master.segments()[point.projection.segment].neighbours)
+          if (b != numbers::invalid_unsigned_int &&
+              pattern_pairs.count({point.slave_segment, b}) == 0)
+            return false;
+      }
+    return true;
+  }
+
+  std::vector<std::vector<types::global_dof_index>>
+  ContactInterface::coupling_blocks()
+  {
+    // Per slave segment, the master segments its points are paired with and
+    // their neighbours (which enter through vertex and smoothed normals, and
+    // which a slip may reach next): one block couples all their unknowns.
+    pattern_pairs.clear();
+    for (const auto &point : point_pairing.points())
+      {
+        pattern_pairs.insert({point.slave_segment, point.projection.segment});
+        if (friction_coefficient > 0)
+          pattern_pairs.insert(
+            {point.slave_segment, point.old_projection.segment});
+        for (const unsigned int m :
+             master.segments()[point.projection.segment].neighbours)
+          if (m != numbers::invalid_unsigned_int)
+            pattern_pairs.insert({point.slave_segment, m});
+      }
+    // One block per slave segment couples its displacements, multipliers and
+    // tangential tractions with the displacements of all those master segments.
+    std::map<unsigned int, std::vector<types::global_dof_index>> block;
+    for (const auto &[s, m] : pattern_pairs)
+      {
+        auto &dofs = block[s];
+        if (dofs.empty())
+          for (const auto *list : {&slave.segments()[s].dofs_x,
+                                   &slave.segments()[s].dofs_y,
+                                   &slave.segments()[s].multiplier_dofs,
+                                   &slave.segments()[s].tangential_dofs})
+            dofs.insert(dofs.end(), list->begin(), list->end());
+        for (const auto *list :
+             {&master.segments()[m].dofs_x, &master.segments()[m].dofs_y})
+          dofs.insert(dofs.end(), list->begin(), list->end());
+      }
+    std::vector<std::vector<types::global_dof_index>> blocks;
+    for (auto &[s, dofs] : block)
+      {
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        blocks.push_back(std::move(dofs));
+      }
+    return blocks;
   }
 } // namespace RingContact
+

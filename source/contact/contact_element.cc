@@ -264,7 +264,7 @@ namespace RingContact
     // whose derivative is that of the crossing.
     // Small strain pairs the surfaces in the reference configuration, where the
     // cuts do not move: the ends stay fixed there, as a slave vertex (-1)
-    // always is. eta0 is the crossing that ContactInterface::pair_pieces()
+    // always is. eta0 is the crossing that ContactPairing::pair_pieces()
     // found by Newton's method to 1e-15, hence the value; the device is that of
     // the projection's correction in evaluate_partner_and_normal().
     template <typename AD>
@@ -397,7 +397,7 @@ namespace RingContact
       // whole update and stuck at any fraction of it. With multipliers of
       // the displacement's degree the force the traction puts on slave node
       // j is then D_j lambda_t,j, and the Coulomb law per node
-      // (ContactInterface::update_friction()) is that of the nodal scheme.
+      // (ActiveSet::choose_friction_states()) is that of the nodal scheme.
       // The decoupling is exact where the scheme integrates Psi_k Phi_j
       // exactly in the reference configuration; an under-integrating rule,
       // the current length of finite strain and a partly covered
@@ -597,7 +597,7 @@ namespace RingContact
       // magnitude above such displacements. So the reference part is zero
       // where it is within that round-off (its value only: its derivatives
       // through the moving parameters stay). Small strain: the reference
-      // gap of the search (ContactInterface::complete_point()), the jump
+      // gap of the search (ContactPairing::complete_point()), the jump
       // along the reference normal.
       const unsigned int nm   = m_seg.dofs_x.size();
       const AD          *um   = &u[offset_of.at(projection.segment)];

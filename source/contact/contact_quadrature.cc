@@ -6,7 +6,7 @@
 // are fixed rules on the whole slave segment, blind to the kinks of the
 // master's shape functions inside it once the meshes have slid; segment-based
 // integration puts Gauss points on pieces cut at those kinks (the mortar
-// integration, ContactInterface::pair_pieces()). This file holds the schemes'
+// integration, ContactPairing::pair_pieces()). This file holds the schemes'
 // names as the parameter file and the report write them, the tags of their
 // output files, and the rule each puts on a segment or piece, with the refusals
 // of the rules that would make the method first order or fail the contact patch

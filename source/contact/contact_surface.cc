@@ -881,7 +881,7 @@ namespace RingContact
 
   // A point paired with a vertex: with the vertex normal where a neighbour
   // meets it, clamped at the end of an open surface. For project(), and for a
-  // held partner that has run past its end (ContactInterface::pair_points()).
+  // held partner that has run past its end (ContactPairing::pair_points()).
   Projection
   ContactSurface::project_onto_vertex(const Point<2>    &x,
                                       const unsigned int segment,

@@ -36,12 +36,13 @@ namespace RingContact
     {
       contact.update(solution);
       const auto [depth, where] = contact.deepest_interpenetration();
-      if (!(depth > 1e-4 * contact.slave_segment_length()))
+      const double h = contact.slave_surface().min_segment_length();
+      if (!(depth > 1e-4 * h))
         return false;
       log << "Warning: the contact surfaces interpenetrate before any "
              "load, by up to "
           << std::setprecision(3) << depth << " at (" << where[0] << ", "
-          << where[1] << "), " << 100 * depth / contact.slave_segment_length()
+          << where[1] << "), " << 100 * depth / h
           << " % of the slave's shortest segment: the contact pushes them "
              "apart in the first step, a load the problem does not state. "
              "A curved slave against a faceted master does this (Mapping "
@@ -76,8 +77,8 @@ namespace RingContact
     {
       contact.update(solution);
       std::vector<double> gaps;
-      const double        h = contact.slave_segment_length();
-      for (const double g : contact.mean_gaps())
+      const double        h = contact.slave_surface().min_segment_length();
+      for (const double g : contact.active_set().mean_gaps())
         if (std::abs(g) > 1e-8 * h)
           gaps.push_back(std::abs(g));
       // Most nodes must have a gap, and of one size (conforming surfaces: a
@@ -85,7 +86,8 @@ namespace RingContact
       // gap size, and a body that comes to the other from afar (the
       // shallow ironing's indenter, 0.03 to 1 m away) states none that the
       // pressure depends on.
-      if (gaps.empty() || 2 * gaps.size() < contact.mean_gaps().size())
+      if (gaps.empty() ||
+          2 * gaps.size() < contact.active_set().mean_gaps().size())
         return false;
       std::sort(gaps.begin(), gaps.end());
       const double gap = gaps[gaps.size() / 2];

@@ -797,7 +797,7 @@ namespace RingContact
 
   // @sect4{Subsection Newton}
   //
-  // The semi-smooth Newton iteration of problem/newton.cc and its linear
+  // The semi-smooth Newton iteration of problem/newton_solver.cc and its linear
   // solver. The defaults are those doc/intro.md states: 12 iterations, after
   // which the step is halved and retried, up to 5 times, and convergence at
   // 1e-10 in scale-free measures.

@@ -6,7 +6,7 @@
 // scenario's boundaries, and the contact terms of each pair (contact/,
 // exactly linearised by automatic differentiation). Each row also gets the
 // magnitude of the terms it is summed from, machine epsilon times which is
-// the round-off of the residual (the floors of newton.cc).
+// the round-off of the residual (the floors of nonlinear_problem.cc).
 //
 // Signs: the system receives -R, as deal.II's tutorials assemble it; the
 // vectors internal_force and external_force receive their parts of R, the
@@ -107,14 +107,13 @@ namespace RingContact
   // current solution; a new sparsity pattern when the pairs left the old.
   //
   // The pairing is redone at every assembly (large sliding: the partners at
-  // the end of a step are not those of its start), unless the Newton loop
+  // the end of a step are not those of its start), unless the Newton solver
   // holds it because it cycles (`pairing`). The count of nodes whose
-  // status changed goes back to the Newton loop, which accepts no iterate
+  // status changed goes back to the Newton solver, which accepts no iterate
   // whose active set is still changing.
   unsigned int
-  ContactProblem::assemble_newton_system(
-    const ContactInterface::Pairing pairing,
-    const Assembly                  what)
+  ContactProblem::assemble_newton_system(const Pairing  pairing,
+                                         const Assembly what)
   {
     // Only finite numbers in the state: an update that overflowed (a body
     // as soft as E = 1e-200, a diverging iterate) fails the iteration here,

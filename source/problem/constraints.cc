@@ -160,7 +160,7 @@ namespace RingContact
   // the linearised problem, the increment spreads over the rings (step-44).
   // Returns whether there is an increment to impose.
   bool
-  ContactProblem::make_lifting_constraints()
+  ContactProblem::impose_boundary_increment()
   {
     // The increments, and the sizes that decide whether there is one at
     // all: the largest increment against the largest imposed value.
@@ -197,7 +197,7 @@ namespace RingContact
     if (largest_increment <=
         1e3 * std::numeric_limits<double>::epsilon() * largest_target)
       {
-        set_boundary_target();
+        set_boundary_at_target();
         return false;
       }
     add_constraints(lifting_constraints, increment, normal_increment);
@@ -218,20 +218,22 @@ namespace RingContact
 
   // The boundary exactly at its target, not up to round-off: the imposed
   // values, then the normal conditions (a normal condition's other unknown
-  // may be an imposed one).
+  // may be an imposed one). The updates from here keep it: their
+  // constraints are the homogeneous ones (update_constraints()).
   void
-  ContactProblem::set_boundary_target()
+  ContactProblem::set_boundary_at_target()
   {
     for (const auto &[dof, value] : boundary_target)
       solution(dof) = value;
     for (unsigned int k = 0; k < normal_target.size(); ++k)
       solution(normal_target[k].dofs[normal_component[k]]) =
         normal_constrained_value(k, solution);
+    lifting_constraints.clear();
   }
 
   // The scenario's displacements at the load state become the target.
   // Nothing is moved here: the first update of the step imposes the target
-  // (make_lifting_constraints()), and a step that is cut asks again for
+  // (impose_boundary_increment()), and a step that is cut asks again for
   // the state at its shorter increment.
   void
   ContactProblem::apply_boundary_motion(const LoadState &load)
@@ -242,4 +244,50 @@ namespace RingContact
     normal_target   = std::move(motion.normal);
     current_load    = load;
   }
+
+  // Whether the extrapolated state has the boundary near its target at the
+  // load state tried: its imposed values (and normal conditions) within a
+  // tenth of their increment from the converged state. On a path linear in the
+  // extrapolated parameter they agree to round-off (or to second order, turning
+  // a boundary in small steps).
+  bool
+  ContactProblem::boundary_near_target(const Vector<double> &converged) const
+  {
+    double miss = 0, increment = 0, largest = 0;
+    for (const auto &[dof, value] : boundary_target)
+      {
+        miss      = std::max(miss, std::abs(solution(dof) - value));
+        increment = std::max(increment, std::abs(value - converged(dof)));
+        largest   = std::max(largest, std::abs(value));
+      }
+    // The normal conditions N . u = g on their constrained component.
+    for (unsigned int k = 0; k < normal_target.size(); ++k)
+      {
+        const auto dof = normal_target[k].dofs[normal_component[k]];
+        miss           = std::max(miss,
+                        std::abs(normal_constrained_value(k, solution) -
+                                 solution(dof)));
+        increment      = std::max(increment,
+                             std::abs(normal_constrained_value(k, converged) -
+                                      converged(dof)));
+        largest        = std::max(largest, std::abs(normal_target[k].value));
+      }
+    // The same decision on every process.
+    if (n_processes > 1)
+      {
+        miss      = Utilities::MPI::max(miss, communicator);
+        increment = Utilities::MPI::max(increment, communicator);
+        largest   = Utilities::MPI::max(largest, communicator);
+      }
+    // The extrapolation's round-off (x + a x - a x) is no miss: the bound of
+    // impose_boundary_increment().
+    return miss <= 0.1 * increment +
+                     1e3 * std::numeric_limits<double>::epsilon() * largest;
+  }
+
+  // One step of the load program, cut in halves while Newton fails. The
+  // step is reached through sub-increments: each one that converges
+  // becomes the new start, and a halved increment is kept for the rest of
+  // the step (it is not doubled again). A run ends only when a step still
+  // fails after Newton/Maximum step cuts halvings; the steps before it are
 } // namespace RingContact

@@ -4,11 +4,15 @@
 // full): run() is the story in twenty lines. It sets the problem up (the
 // scenario's mesh, the finite elements, the contact interfaces:
 // setup.cc), checks the input against the mesh and says what the problem
-// is, then follows the load program step by step (newton.cc), each
-// converged step reported (postprocessing.cc) and handed to the run's
-// driver (driver/), which writes it to disk before the next step starts.
+// is, then follows the load program step by step (load_stepper.cc, which
+// solves each step by newton_solver.cc), each converged step reported
+// (postprocessing.cc) and handed to the run's driver (driver/), which writes
+// it to disk before the next step starts.
+#include <deal.II/base/timer.h>
+
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
+#include <ring_contact/problem/load_stepper.h>
 
 #include <iomanip>
 
@@ -41,8 +45,6 @@ namespace RingContact
       , triangulation(Triangulation<2>::limit_level_difference_at_vertices)
       , dof_handler(triangulation)
       , displacement(0)
-      , previous_time(0)
-      , current_time(0)
       , current_load{0, 0}
       // The summary is printed by run() when it ends, not by the
       // destructor: a run that ends by an error prints the error only.
@@ -78,20 +80,27 @@ namespace RingContact
     if (parameters.output.vtu_interval > 0)
       output_results(0);
 
-    // Each converged step is handed to the driver, which appends its row
-    // to history.csv before the next step starts: a run stopped by a
-    // signal or a failure keeps every step it converged. The driver's
-    // answer is how a signal stops the run between two steps, never inside
-    // a write.
-    bool ok = true;
+    // Each step solved by the load stepper (load_stepper.h: predictor,
+    // Newton, cuts, adaptive cycles) through the problem's NonlinearProblem
+    // face, then reported. Each converged step is handed to the driver,
+    // which appends its row to history.csv before the next step starts: a
+    // run stopped by a signal or a failure keeps every step it converged.
+    // The driver's answer is how a signal stops the run between two steps,
+    // never inside a write.
+    LoadStepper load_stepper(*this, load_program, parameters.newton, log);
+    bool        ok = true;
     for (unsigned int step = 1; step <= load_program.n_steps() && ok; ++step)
       {
-        ok = solve_load_step(step);
+        unsigned int iterations = 0, cuts = 0;
+        Timer        wall;
+        ok = load_stepper.solve_step(step, iterations, cuts);
+        if (ok)
+          postprocess_step(step, iterations, cuts, wall.wall_time());
         if (ok && step_observer && !step_observer(history_rows.back()))
           break;
       }
     // A step that failed leaves the solution at the last converged state
-    // (solve_load_step() restores it): that state is written whatever the
+    // (the load stepper restores it): that state is written whatever the
     // output interval, so that the place where the run stopped can be
     // looked at.
     if (!ok && parameters.output.vtu_interval > 0)

@@ -1,6 +1,6 @@
 // @sect3{The load program}
 //
-// The Newton loop (newton.cc) does not walk through steps but through a
+// The load stepper (load_stepper.cc) does not walk through steps but through a
 // pseudo-time t: a step ends at time(k), and a step that fails is cut into
 // halves, at pseudo-times between two steps. So every program is a
 // function of t (the rings' start from zero load at t = 0), and the steps

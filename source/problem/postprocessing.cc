@@ -160,8 +160,8 @@ namespace RingContact
     std::vector<types::global_dof_index> nodes;
     for (const auto &contact : contacts)
       nodes.insert(nodes.end(),
-                   contact->multiplier_dofs().begin(),
-                   contact->multiplier_dofs().end());
+                   contact->nodes().dofs.begin(),
+                   contact->nodes().dofs.end());
     return nodes;
   }
 
@@ -170,7 +170,7 @@ namespace RingContact
   {
     unsigned int n = 0;
     for (const auto &contact : contacts)
-      n += contact->multiplier_dofs().size();
+      n += contact->nodes().size();
     return n;
   }
 
@@ -179,7 +179,7 @@ namespace RingContact
   {
     unsigned int n = 0;
     for (const auto &contact : contacts)
-      n += contact->n_active();
+      n += contact->active_set().n_active();
     return n;
   }
 
@@ -240,7 +240,7 @@ namespace RingContact
     HistoryRow row;
     row.scheme            = scheme.name();
     row.step              = step;
-    row.time              = current_time;
+    row.time              = current_load.time;
     row.newton_iterations = iterations;
     row.step_cuts         = cuts;
     row.active_nodes      = n_active_nodes();
@@ -463,7 +463,7 @@ namespace RingContact
     // file shows the gap beside the pressure, and lambda g = 0 can be seen.
     Vector<double> nodal_gap(dof_handler.n_dofs());
     for (const auto &contact : contacts)
-      for (const auto dof : contact->multiplier_dofs())
+      for (const auto dof : contact->nodes().dofs)
         nodal_gap(dof) = contact->gap_at(dof, solution);
     // The faces first: they make the arc length at the first output.
     const std::vector<VtuWriter::SlaveFace> slave_faces =
@@ -476,7 +476,7 @@ namespace RingContact
                       materials,
                       slave_faces,
                       step,
-                      current_time);
+                      current_load.time);
   }
 
   // The slave faces for the VTU file, chain after chain in the order the

@@ -206,7 +206,7 @@ namespace RingContact
         {
           const auto &slave_segments  = contact->slave_surface().segments();
           const auto &master_segments = contact->master_surface().segments();
-          for (const auto &[s, m] : contact->paired_segments())
+          for (const auto &[s, m] : contact->pairing().paired_segments())
             {
               const auto &slave_segment  = slave_segments[s];
               const auto &master_segment = master_segments[m];
@@ -620,7 +620,6 @@ namespace RingContact
     make_constraints();
     reference_geometry.start.clear();
     arc_length.reinit(0);
-    keep_partners = false;
 
     copy_displacement(
       dof_handler, displacement_dofs, solution, new_states[0], false);
@@ -645,27 +644,19 @@ namespace RingContact
         << " coarsened), " << dof_handler.n_dofs() << " unknowns\n";
   }
 
-  // @sect4{The step solved again on the refined mesh}
+  // @sect4{Refinement after a converged step}
   //
-  // Called when a step has converged and refinement is due. Each cycle
-  // refines, carries the state over and solves the same load state again
-  // from the carried state: the boundary values of the new nodes come in
-  // through the first update, as any step's; with friction the slips are
-  // measured from the step's start, carried over too. Where that fails (a
-  // frictional state carried over can start Newton where it cycles), the
-  // increment is solved again on the new mesh from the step's start, with
-  // step cuts, as the step was. A cycle that fails even so ends the run
-  // with the step unreported: its converged state was on the old mesh,
-  // which is gone.
-  bool
-  ContactProblem::refine_and_solve_again(const unsigned int step,
-                                         unsigned int      &cuts,
-                                         unsigned int      &iterations)
+  // The load stepper asks after each converged step how many cycles of
+  // refinement are due, and solves the step again after each
+  // (LoadStepper::solve_again_on_refined_meshes()): every Mesh
+  // refinement/Every steps, and after the last step.
+  unsigned int
+  ContactProblem::refinement_cycles(const unsigned int step)
   {
     const auto &refinement = parameters.refinement;
     if (refinement.adaptive_cycles == 0 ||
         (step % refinement.every != 0 && step != load_program.n_steps()))
-      return true;
+      return 0;
     // Once per run: refinement makes the surfaces non-matching, which only
     // the segment-based scheme integrates exactly.
     if (n_refinements == 0 && scheme.type != ContactIntegration::segment_based)
@@ -676,67 +667,27 @@ namespace RingContact
         " scheme's pressure oscillates (Hertz, 11 cycles: p0 -8.6 % nodal, "
         "-2.2 % Gauss 2, -0.02 % segment-based 2); segment-based "
         "integration is exact there");
-    for (unsigned int cycle = 1; cycle <= refinement.adaptive_cycles; ++cycle)
+    return refinement.adaptive_cycles;
+  }
+
+  // One cycle: the mesh refined and the state carried over (refine_mesh()),
+  // unless it has reached Mesh refinement/Maximum cells, which ends the
+  // cycles for good (said once).
+  bool
+  ContactProblem::refine_mesh_after_step(const unsigned int step,
+                                         const unsigned int cycle)
+  {
+    if (triangulation.n_active_cells() >= parameters.refinement.maximum_cells)
       {
-        if (triangulation.n_active_cells() >= refinement.maximum_cells)
-          {
-            if (!said_maximum_cells)
-              log << "  step " << step << ": " << triangulation.n_active_cells()
-                  << " cells, Mesh refinement/Maximum cells reached: the "
-                     "mesh stays as it is from here\n";
-            said_maximum_cells = true;
-            break;
-          }
-        log << "  step " << step << ", refinement cycle " << cycle << ": ";
-        refine_mesh();
-        for (const auto &contact : contacts)
-          contact->accept_state(previous_solution);
-        unsigned int cycle_iterations = 0;
-        double       residual         = 0;
-        bool         ok               = false;
-        try
-          {
-            apply_boundary_motion(load_program.state(current_time));
-            ok = solve_newton_step(cycle_iterations, residual);
-          }
-        catch (const BoundaryDataError &e)
-          {
-            failure_reason = e.what();
-          }
-        catch (const NonFiniteState &e)
-          {
-            failure_reason = e.what();
-          }
-        lifting = false;
-        iterations += cycle_iterations;
-        if (!ok)
-          {
-            // From the step's start, carried over, as the step was solved.
-            log << wrap_text("  step " + std::to_string(step) +
-                             ": Newton failed from the state carried to the "
-                             "refined mesh (" +
-                             failure_reason +
-                             "); solving the step again from its start");
-            const double t_end = current_time;
-            solution           = previous_solution;
-            current_time       = previous_time;
-            current_load       = load_program.state(current_time);
-            for (const auto &contact : contacts)
-              contact->update(solution);
-            if (!advance_to(step, t_end, cuts, iterations))
-              {
-                log << wrap_text("Step " + std::to_string(step) +
-                                 ": not solved on the mesh of refinement "
-                                 "cycle " +
-                                 std::to_string(cycle) +
-                                 " (the steps before are kept)");
-                return false;
-              }
-            continue;
-          }
-        for (const auto &contact : contacts)
-          contact->accept_state(solution);
+        if (!said_maximum_cells)
+          log << "  step " << step << ": " << triangulation.n_active_cells()
+              << " cells, Mesh refinement/Maximum cells reached: the "
+                 "mesh stays as it is from here\n";
+        said_maximum_cells = true;
+        return false;
       }
+    log << "  step " << step << ", refinement cycle " << cycle << ": ";
+    refine_mesh();
     return true;
   }
 } // namespace RingContact

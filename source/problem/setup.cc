@@ -440,9 +440,9 @@ namespace RingContact
         // surfaces may not share a vertex: the mesh checks refuse it), which
         // answers contact_of() and keeps the node free in
         // add_constraints(); cyclic twins are included.
-        for (const auto node : contacts.back()->all_multiplier_dofs())
+        for (const auto node : contacts.back()->nodes().all_dofs())
           pair_of_node[node] = contacts.size() - 1;
-        for (const auto node : contacts.back()->tangential_dofs())
+        for (const auto node : contacts.back()->nodes().tangential_dofs)
           pair_of_node[node] = contacts.size() - 1;
       }
   }

@@ -215,7 +215,7 @@ namespace RingContact
     {
       unsigned int n = 0;
       for (const ContactInterface *contact : state.contact_interfaces())
-        n += contact->n_slipping();
+        n += contact->active_set().n_slipping();
       return n;
     }
 
@@ -228,7 +228,7 @@ namespace RingContact
       into.insert(into.end(),
                   {{"tangential_traction_A",
                     state.get_solution()(
-                      state.contact_of(node).tangential_dof(node))},
+                      state.contact_of(node).nodes().tangential_dof(node))},
                    {"slipping_nodes", static_cast<double>(n_slipping(state))}});
     }
 

@@ -12,7 +12,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/contact/contact_interface.h>
+#include <ring_contact/contact/contact_pairing.h>
+#include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/contact/surface_kernel.h>
 
 #include <array>

@@ -33,6 +33,14 @@
 //   slip  (sign s = T_k/|T_k|): w_k lambda_t,k - s mu w_k lambda_k = 0,
 // the primal-dual active-set form of Alart and Curnier's
 // w lambda_t - proj_[-B, B](T) = 0, each row exactly linearised.
+//
+// The interface is made of three parts, each a class of its own: the
+// pairing of the slave points with the master (contact_pairing.h), the
+// active set of closed, sticking and sliding nodes (active_set.h), and this
+// class, which owns the surfaces and the multiplier nodes
+// (multiplier_nodes.h), moves them to each iterate, and turns the pairs and
+// the states into rows of the Newton system (contact_assembly.cc) and into
+// what the postprocessing asks of a pair.
 #ifndef ring_contact_contact_contact_interface_h
 #define ring_contact_contact_contact_interface_h
 
@@ -40,44 +48,19 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 
+#include <ring_contact/contact/active_set.h>
+#include <ring_contact/contact/contact_pairing.h>
 #include <ring_contact/contact/contact_surface.h>
 #include <ring_contact/contact/cyclic_symmetry.h>
+#include <ring_contact/contact/multiplier_nodes.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 
-#include <algorithm>
-#include <array>
 #include <map>
 #include <memory>
 #include <set>
 
 namespace RingContact
 {
-  /// A slave quadrature point and its partner on the master surface.
-  struct ContactPoint
-  {
-    unsigned int slave_segment;
-    double       eta;    ///< parameter of the point on the slave segment
-    double       weight; ///< quadrature weight in eta
-    Projection   projection;
-    double       current_length; ///< ds = |dx_s/deta| weight
-    /// Small strain: the gap of the reference configuration, zero where it
-    /// is below the round-off of the positions (see complete_point()).
-    double reference_gap = 0;
-    /// Segment-based integration: the point is eta = eta_a + (eta_b -
-    /// eta_a) xi on a piece [eta_a, eta_b] of the slave segment, with the
-    /// weight (eta_b - eta_a) w. An end of the piece is either fixed (a
-    /// slave vertex: -1) or the crossing of the line through a vertex of the
-    /// partner along its normal (0 or 1: which end of the partner), and then
-    /// moves with the displacement. Fixed rules: the piece is [0, 1].
-    std::array<double, 2> piece     = {{0, 1}};
-    std::array<int, 2>    piece_end = {{-1, -1}};
-    double                xi        = 0;
-    double                w         = 0;
-    /// Friction: the partner of the point's position at the last converged
-    /// state on the master of that state.
-    Projection old_projection;
-  };
-
   class ContactInterface
   {
   public:
@@ -96,61 +79,25 @@ namespace RingContact
                      const bool                    geometrically_linear,
                      const CyclicSymmetry::Sector &sector = {});
 
-    /// How update() pairs the slave points of a point-wise scheme.
-    enum class Pairing
-    {
-      /// Closest-point search (a point with two candidates keeps its last
-      /// partner).
-      search,
-      /// Every point keeps its last partner segment and follows it, onto
-      /// its extension if need be: the residual is a smooth function of the
-      /// displacement (the line-search trials while the Newton loop holds
-      /// the pairing because it cycles, see solve_newton_step()).
-      hold,
-      /// As `hold`, but a point past its partner's end is held at that
-      /// vertex, with the vertex normal, from then on: past a groove's
-      /// vertex the extension runs inside the neighbouring segment (the
-      /// accepted Newton iterates while the pairing is held).
-      hold_within_segments
-    };
+    ContactInterface(const ContactInterface &) = delete;
+    ContactInterface &
+    operator=(const ContactInterface &) = delete;
 
-    /// Pair every slave quadrature point with the current master surface,
-    /// compute the weighted gaps and choose the active set from the current
-    /// multipliers. Returns the number of nodes whose status changed.
+    /// @name An iterate
+    /// @{
+
+    /// Move the surfaces to `solution`, pair every slave quadrature point
+    /// with the master surface, and choose the active set (and with
+    /// friction the stick and slip states) from the current multipliers
+    /// and weighted gaps. Returns the number of nodes whose state changed.
     unsigned int
     update(const Vector<double> &solution,
            const Pairing         pairing = Pairing::search);
 
-    /// The next update() chooses the first active set of a load step (or of
-    /// a retry after a cut): nodes that touch close as well (see update()).
+    /// Friction: the converged state of a step (or of its part) becomes the
+    /// one the next slips are measured from.
     void
-    start_step(const Vector<double> &solution)
-    {
-      first_update_of_step = true;
-      pressed_at_step_start =
-        std::any_of(multiplier_dof_list.begin(),
-                    multiplier_dof_list.end(),
-                    [&](const auto dof) { return solution(dof) > 0; });
-    }
-
-    /// Whether the step began with no pressure on the pair: a contact zone
-    /// that grows from nothing, a point or an initial overlap (see
-    /// hold_stick()).
-    bool
-    zone_grows_from_point() const
-    {
-      return !pressed_at_step_start;
-    }
-
-    /// Friction: whether every closed node sticks, whatever its trial
-    /// traction (update_friction()). The Newton loop holds the stick while a
-    /// zone that grows from a point finds its width, so that the contact is
-    /// piecewise linear meanwhile and its edges can be extrapolated.
-    void
-    hold_stick(const bool hold)
-    {
-      stick_held = hold;
-    }
+    accept_state(const Vector<double> &solution);
 
     /// Small strain: gaps linear in the displacement.
     bool
@@ -161,8 +108,8 @@ namespace RingContact
 
     /// A pair of bodies in finite strain measured as in small strain
     /// (reference pairing, normal and length, gaps linear in the
-    /// displacement) while the Newton loop solves a step's problem
-    /// linearised at the undeformed state (ContactProblem::linearise()).
+    /// displacement) while the Newton solver solves a step's problem
+    /// linearised at the undeformed state (problem/first_step.h).
     void
     linearise(const bool on)
     {
@@ -175,17 +122,6 @@ namespace RingContact
       return friction_coefficient > 0;
     }
 
-    /// Whether update() moves the edges of the contact zones by the
-    /// extrapolation of their square-root profile (see
-    /// extrapolate_zone_edges()). The Newton loop allows it in the first
-    /// iterations of a step only, so that the last ones are plain
-    /// primal-dual active-set iterations.
-    void
-    allow_edge_extrapolation(const bool allow)
-    {
-      edge_extrapolation = allow;
-    }
-
     /// Whether the contact rows are piecewise linear in the unknowns: small
     /// strain (gaps linear in the displacement) and no friction, or friction
     /// with every closed node held in stick (a linear tie). The Newton
@@ -194,37 +130,39 @@ namespace RingContact
     bool
     piecewise_linear() const
     {
-      return geometrically_linear && (friction_coefficient == 0 || stick_held);
+      return geometrically_linear &&
+             (friction_coefficient == 0 || states.holds_stick());
     }
+    /// @}
 
-    /// The contact state of every node: closed or open, and with friction
-    /// stick (0) or the sense of its slip (+-1).
-    struct NodeStates
+    /// @name The parts: nodes, pairing, active set
+    /// @{
+    const MultiplierNodes &
+    nodes() const
     {
-      std::vector<bool> active;
-      std::vector<int>  slip_sign;
-    };
-
-    NodeStates
-    node_states() const
-    {
-      return {active, slip_sign};
+      return multiplier_nodes;
     }
+    const ContactPairing &
+    pairing() const
+    {
+      return point_pairing;
+    }
+    const ActiveSet &
+    active_set() const
+    {
+      return states;
+    }
+    /// The Newton solver's strategies set the active set's switches
+    /// (start of a step, stick held, edges extrapolated).
+    ActiveSet &
+    active_set()
+    {
+      return states;
+    }
+    /// @}
 
-    /// The number of nodes whose state differs from `before`.
-    unsigned int
-    n_changed_since(const NodeStates &before) const;
-
-    /// Each node's mean gap g~_k / w_k at the last update() (0 where w_k
-    /// is 0).
-    std::vector<double>
-    mean_gaps() const;
-
-    /// The slave and master segments of every contact point paired at the
-    /// last update() (adaptive refinement keeps the master as fine as the
-    /// slave where they face each other).
-    std::vector<std::pair<unsigned int, unsigned int>>
-    paired_segments() const;
+    /// @name The Newton system
+    /// @{
 
     /// True if the current pairs are all inside the last sparsity pattern.
     bool
@@ -252,48 +190,10 @@ namespace RingContact
     /// slave point, whatever its process (the same sum on all of them).
     void
     add_forces(const Vector<double> &solution, Vector<double> &forces) const;
+    /// @}
 
-    /// The multiplier dofs of the slave surface, one per contact node (with
-    /// cyclic symmetry the end side's twin is left out: see
-    /// all_multiplier_dofs()).
-    const std::vector<types::global_dof_index> &
-    multiplier_dofs() const
-    {
-      return multiplier_dof_list;
-    }
-
-    /// Every multiplier dof on the slave surface, twins included.
-    std::vector<types::global_dof_index>
-    all_multiplier_dofs() const;
-
-    /// Number of active (closed) multiplier nodes.
-    unsigned int
-    n_active() const;
-
-    /// Whether the multiplier node `dof` (of this interface) is active.
-    bool
-    is_active(const types::global_dof_index dof) const;
-
-    /// Friction: the converged state of a step (or of its part) becomes the
-    /// one the next slips are measured from.
-    void
-    accept_state(const Vector<double> &solution);
-
-    /// Number of closed nodes that slip (friction).
-    unsigned int
-    n_slipping() const;
-
-    /// The tangential-traction dof at a multiplier node (friction), or
-    /// invalid.
-    types::global_dof_index
-    tangential_dof(const types::global_dof_index multiplier_dof) const;
-
-    /// Every tangential-traction dof of the slave surface (friction).
-    const std::vector<types::global_dof_index> &
-    tangential_dofs() const
-    {
-      return tangential_dof_list;
-    }
+    /// @name What the postprocessing asks of a pair
+    /// @{
 
     /// The multiplier dof at the slave vertex nearest to a reference point
     /// (and, if asked, its distance from the point).
@@ -307,23 +207,16 @@ namespace RingContact
     double
     stretch_at(const types::global_dof_index multiplier_dof) const;
 
+    /// Gap at a multiplier node (its slave point projected on the master).
+    double
+    gap_at(const types::global_dof_index multiplier_dof,
+           const Vector<double>         &solution) const;
+
     /// The deepest interpenetration of the surfaces at the last update():
     /// the most negative mean gap g~_k / w_k over the multiplier nodes
     /// (a depth >= 0; 0 when none is negative), and that node's position.
     std::pair<double, Point<2>>
     deepest_interpenetration() const;
-
-    /// The length of the shortest slave segment (reference configuration).
-    double
-    slave_segment_length() const
-    {
-      return segment_length;
-    }
-
-    /// Gap at a multiplier node (its slave point projected on the master).
-    double
-    gap_at(const types::global_dof_index multiplier_dof,
-           const Vector<double>         &solution) const;
 
     /// sqrt(int (p_h - p_ref)^2) / sqrt(int p_ref^2) over the slave surface,
     /// with p_h the reported (Cauchy or nominal) pressure.
@@ -350,6 +243,7 @@ namespace RingContact
     {
       return master;
     }
+    /// @}
 
   private:
     /// Evaluate the contact element of each slave point (those on cells of
@@ -364,83 +258,9 @@ namespace RingContact
                  const unsigned int    process,
                  const Visitor        &visit) const;
 
-    /// The normal distance of the reference points of a slave point and its
-    /// partner, zero within the round-off of the positions.
-    double
-    reference_gap_of(const unsigned int slave_segment,
-                     const double       eta,
-                     const Projection  &projection) const;
-    /// The gap at the surfaces' current state: reference_gap_of() plus the
-    /// normal jump of the displacement.
-    double
-    gap_of(const unsigned int slave_segment,
-           const double       eta,
-           const Projection  &projection) const;
-
-    /// Small strain: (u_s - u_m) . n0 at a slave point and its partner.
-    double
-    linear_gap_increment(const Vector<double> &solution,
-                         const unsigned int    slave_segment,
-                         const double          t,
-                         const Projection     &projection) const;
-
-    ContactSurface      slave;
-    ContactSurface      master;
-    const Quadrature<1> quadrature;
-    const double        complementarity_constant;
-    /// Coulomb's coefficient (0: frictionless).
-    const double friction_coefficient;
-    /// Small strain: contact geometry (pairing, normal, length) of the
-    /// reference configuration, gap linear in the displacement. The
-    /// model's, and the one used now (also while a finite-strain step is
-    /// solved linearised, see linearise()).
-    const bool small_strain_model;
-    bool       geometrically_linear;
-
-    /// Fixed rules: every slave quadrature point paired with its closest
-    /// master point. Segment-based: each slave segment cut into pieces with
-    /// one partner each.
-    void
-    pair_points(const Vector<double> &solution, const Pairing pairing);
-    /// Fill in a contact point from its piece, xi and w: position,
-    /// partner (from `project`), gap and length element.
-    template <typename Projector>
-    void
-    complete_point(ContactPoint         &point,
-                   const unsigned int    slave_segment,
-                   const Vector<double> &solution,
-                   const Projector      &project) const;
-    void
-    pair_pieces(const Vector<double> &solution);
-    /// The cuts of a slave segment (parameter, master vertex), sorted.
-    std::vector<std::pair<double, unsigned int>>
-    piece_cuts(const unsigned int s) const;
-
-    /// The primal-dual choice `closed`, with the edges of each zone of
-    /// nodes `inside` (the current choice) moved to where the square-root
-    /// profile of the indicator puts them (see the definition); the walks
-    /// along the surface go through `linked` nodes only. For the contact
-    /// zones the indicator is w_k lambda_k - c g~_k; for the stick zones the
-    /// room B_k - |T_k| to the Coulomb bound.
-    void
-    extrapolate_zone_edges(const std::vector<bool>   &inside,
-                           const std::vector<bool>   &linked,
-                           const std::vector<double> &indicator,
-                           std::vector<bool>         &closed) const;
-
-    /// Friction: each point's old partner, the weighted slips s~_k and the
-    /// nodes' stick/slip states. Returns the number of changed states.
-    unsigned int
-    update_friction(const Vector<double> &solution);
-    /// s~_k from the contact elements (contact_assembly.cc).
-    void
-    compute_weighted_slips(const Vector<double> &solution);
-
-    const bool segment_based;
-    /// Friction: the tangential traction in the dual basis of the
-    /// multiplier basis (see ConvergedState), wherever the scheme's points
-    /// are not the multiplier nodes.
-    bool dual_basis = false;
+    /// Friction: s~_k from the contact elements (contact_assembly.cc).
+    std::vector<double>
+    weighted_slips(const Vector<double> &solution) const;
 
     /// Friction: the nodes whose tangential motion is held alike on both
     /// sides (find_tangential_ties()), found at every assembly.
@@ -450,39 +270,33 @@ namespace RingContact
                          const AffineConstraints<double> &constraints,
                          const MPI_Comm                   communicator) const;
 
-    std::vector<types::global_dof_index>            multiplier_dof_list;
-    std::map<types::global_dof_index, unsigned int> multiplier_index;
-    /// Where each multiplier node sits: (slave segment, t), one entry per
-    /// segment that shares it.
-    std::map<types::global_dof_index,
-             std::vector<std::pair<unsigned int, double>>>
-                        node_sites;
-    std::vector<double> reference_weight; ///< w_k = int Phi_k dS
-    std::vector<double> weighted_gap;     ///< g~_k
-    std::vector<bool>   active;
-    double              segment_length; ///< smallest slave segment
-    /// Set by start_step(), cleared by the update() that it concerns.
-    bool first_update_of_step = false;
-    bool edge_extrapolation   = false;
-    bool stick_held           = false;
-    /// Whether a node carried pressure when the step began (start_step()).
-    bool pressed_at_step_start = false;
-    /// The multiplier nodes' neighbours along the slave surface, each with
-    /// the length of the link in the reference configuration (measured on
-    /// the segment that joins them: a twin's neighbour across the sector's
-    /// ends is a segment away, not a sector).
-    std::vector<std::vector<std::pair<unsigned int, double>>> node_neighbours;
+    ContactSurface slave;
+    ContactSurface master;
+    const double   complementarity_constant;
+    /// Coulomb's coefficient (0: frictionless).
+    const double friction_coefficient;
+    /// Small strain: contact geometry (pairing, normal, length) of the
+    /// reference configuration, gap linear in the displacement. The
+    /// model's, and the one used now (also while a finite-strain step is
+    /// solved linearised, see linearise()).
+    const bool small_strain_model;
+    bool       geometrically_linear;
+    const bool segment_based;
+    /// The length of the shortest slave segment (reference configuration).
+    const double segment_length;
 
-    /// Friction: per node the tangential dof, s~_k and the state (0 stick,
-    /// +1 or -1 the sign of the slip); the last converged solution and
-    /// surfaces.
-    std::vector<types::global_dof_index> tangential_dof_list;
-    std::vector<double>                  weighted_slip;
-    std::vector<int>                     slip_sign;
-    Vector<double>                       converged_solution;
-    std::unique_ptr<ContactSurface>      converged_slave, converged_master;
+    const MultiplierNodes multiplier_nodes;
+    ContactPairing        point_pairing;
+    ActiveSet             states;
+    /// Friction: the tangential traction in the dual basis of the
+    /// multiplier basis (see ConvergedState), wherever the scheme's points
+    /// are not the multiplier nodes.
+    const bool dual_basis;
 
-    std::vector<ContactPoint> points;
+    /// Friction: the last converged solution and surfaces.
+    Vector<double>                  converged_solution;
+    std::unique_ptr<ContactSurface> converged_slave, converged_master;
+
     /// (slave segment, master segment) pairs in the sparsity pattern.
     std::set<std::pair<unsigned int, unsigned int>> pattern_pairs;
   };

@@ -11,14 +11,21 @@
 //   Newton updates;
 // - problem/assembly.cc: the bulk's virtual work and its tangent, the
 //   boundary loads, and the contact terms (contact/);
-// - problem/newton.cc: the semi-smooth Newton method, its convergence
-//   measures, the line search, the load step cut while Newton fails;
+// - problem/nonlinear_problem.cc: the problem as the load steps and the
+//   Newton solver see it (NonlinearProblem): its convergence measures, its
+//   linear solve, the switches of its contact pairs. The load steps
+//   (load_stepper.h), the semi-smooth Newton method (newton_solver.h) and
+//   its strategies for a contact zone that grows from a point
+//   (first_step.h) are classes of their own, which know the problem only
+//   through that interface;
+// - problem/refinement.cc: adaptive refinement, the state carried over;
 // - problem/postprocessing.cc: what a converged step reports (history row,
 //   invariants, VTU files);
 // - problem/contact_problem.cc: the constructor and run().
 // The problem posed (mesh, bodies, loads, what to report and check) is the
 // scenario's (scenarios/scenario.h); the class implements SolutionState,
-// what a scenario may read of a converged state.
+// what a scenario may read of a converged state, and NonlinearProblem, what
+// the nonlinear solution may do with it.
 #ifndef ring_contact_problem_contact_problem_h
 #define ring_contact_problem_contact_problem_h
 
@@ -48,6 +55,7 @@
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/output/vtu_writer.h>
 #include <ring_contact/problem/load_program.h>
+#include <ring_contact/problem/nonlinear_problem.h>
 #include <ring_contact/problem/solution_state.h>
 #include <ring_contact/scenarios/scenario.h>
 
@@ -65,40 +73,7 @@ namespace RingContact
 {
   using namespace dealii;
 
-  /// The measures of one Newton iterate that decide convergence, each
-  /// relative to the problem's own scales (see residual_measure()).
-  struct ResidualMeasure
-  {
-    /// |R| of the free displacement rows over the reaction forces.
-    double force = 0;
-    /// The round-off floor of that ratio: what evaluating the residual in
-    /// double precision can resolve at the current state.
-    double force_floor = 0;
-    /// Largest |gap residual| of an active contact row, in metres, over the
-    /// largest displacement; the largest |lambda| of an open row over the
-    /// largest |lambda|.
-    double gap = 0;
-    /// The round-off floor of that ratio (largest over the rows).
-    double gap_floor = 0;
-    /// True while nothing has moved (the first iteration from rest): gap
-    /// is then a length over no displacement, not a ratio worth showing.
-    bool at_rest = false;
-    /// Euclidean norm of the free rows: the merit of the line search.
-    double merit = 0;
-    /// False when the system was assembled without its tangent: the bulk's
-    /// part of force_floor (from the cell matrices) is then unknown and
-    /// force_floor is 0, so that converged() errs only towards "not yet".
-    bool force_floor_known = true;
-
-    /// Both groups below max(tolerance, their floor).
-    bool
-    converged(const double tolerance) const;
-    /// Not converged(), but might be once the force floor is known.
-    bool
-    undecided(const double tolerance) const;
-  };
-
-  class ContactProblem : public SolutionState
+  class ContactProblem : public SolutionState, public NonlinearProblem
   {
   public:
     /// Under MPI (`communicator` with several processes) every process
@@ -186,6 +161,7 @@ namespace RingContact
     {
       return solution;
     }
+    /// (Also NonlinearProblem's.)
     const LoadState &
     load_state() const override
     {
@@ -217,16 +193,6 @@ namespace RingContact
       return n_refinements;
     }
     /// @}
-
-    /// What an assembly computes: the right-hand side -R and the tangent
-    /// (for a Newton update), or -R alone, which is what a convergence test
-    /// or a line search's trial needs. The contact rows and columns are
-    /// whole in both.
-    enum class Assembly
-    {
-      residual_and_tangent,
-      residual
-    };
 
     /// The tests' view of the inside (problem/inspector.h).
     friend class ContactProblemInspector;
@@ -274,23 +240,39 @@ namespace RingContact
       const std::map<types::global_dof_index, double> &boundary_increment,
       const std::vector<double>                       &normal_increment,
       std::vector<bool>                               *fixed_dofs = nullptr);
-    bool
-    make_lifting_constraints();
     double
     normal_constrained_value(const unsigned int    k,
                              const Vector<double> &u) const;
-    void
-    set_boundary_target();
-    /// Set the boundary displacements of a load state as the target of the
-    /// next Newton solve: its first update imposes them (see
-    /// make_lifting_constraints()), the solution is not changed here.
-    void
-    apply_boundary_motion(const LoadState &load);
+    /// The constraints of the next Newton update: those that impose the
+    /// boundary increment while there is one (see
+    /// impose_boundary_increment()), else the homogeneous ones.
     const AffineConstraints<double> &
     update_constraints() const
     {
-      return lifting ? lifting_constraints : constraints;
+      return imposing_boundary_increment() ? lifting_constraints : constraints;
     }
+    /// The boundary motion of a load step (NonlinearProblem).
+    /// Set the boundary displacements of a load state as the target of the
+    /// next Newton solve: its first update imposes them (see
+    /// impose_boundary_increment()), the solution is not changed here.
+    void
+    apply_boundary_motion(const LoadState &load) override;
+    bool
+    impose_boundary_increment() override;
+    bool
+    imposing_boundary_increment() const override
+    {
+      return lifting_constraints.n_constraints() > 0;
+    }
+    void
+    set_boundary_at_target() override;
+    void
+    drop_boundary_increment() override
+    {
+      lifting_constraints.clear();
+    }
+    bool
+    boundary_near_target(const Vector<double> &converged) const override;
     /// @}
 
     /// @name Assembly (assembly.cc)
@@ -299,14 +281,12 @@ namespace RingContact
     store_reference_geometry();
     /// Pair, choose the active set and assemble the tangent and the
     /// right-hand side -R at the current solution; returns the number of
-    /// contact nodes whose status changed.
+    /// contact nodes whose status changed (NonlinearProblem).
     unsigned int
-    assemble_newton_system(
-      const ContactInterface::Pairing pairing =
-        ContactInterface::Pairing::search,
-      const Assembly what = Assembly::residual_and_tangent);
+    assemble_newton_system(const Pairing  pairing,
+                           const Assembly what) override;
     void
-    assemble_system(const Assembly what = Assembly::residual_and_tangent);
+    assemble_system(const Assembly what) override;
     void
     assemble_contact_terms();
     void
@@ -319,40 +299,6 @@ namespace RingContact
                      const unsigned int cell = numbers::invalid_unsigned_int);
     void
     assemble_boundary_loads();
-    /// @}
-
-    /// @name Newton's method and the load steps (newton.cc)
-    /// @{
-    ResidualMeasure
-    residual_measure() const;
-    bool
-    solve_linear_system(Vector<double> &newton_update);
-    /// Why the factorization of the tangent may need much memory (the
-    /// contact surfaces' relative mesh sizes), for the error that says so.
-    std::string
-    describe_fill_in() const;
-    /// The pairing at an accepted Newton iterate: the search, or, once the
-    /// pairing is held, the held partners stopped at their segments' ends.
-    ContactInterface::Pairing
-    accepted_pairing() const;
-    /// Whether a step starts from the undeformed state, finite strain,
-    /// frictionless, with every contact zone to be found: its problem
-    /// linearised there is the small-strain one, solved first (newton.cc,
-    /// "A press from rest in finite strain").
-    bool
-    starts_from_rest_in_finite_strain() const;
-    /// Solve with the small-strain laws and contact geometry (on), or with
-    /// the model's own (off).
-    void
-    linearise(const bool on);
-    /// A signal asked the run to stop (on any process).
-    bool
-    stop_requested() const;
-    bool
-    solve_newton_step(unsigned int &iterations, double &final_residual);
-    /// A signal, or inverted elements: the iteration must not go on.
-    bool
-    must_stop(const unsigned int it);
     /// Why the state last assembled is rejected: its inverted points (det
     /// F <= 0, the smallest given), those where det F is not a number, and
     /// those outside the material law.
@@ -364,55 +310,63 @@ namespace RingContact
     outside_law(const Material          &material,
                 const Tensor<2, 2>      &grad_u,
                 const types::material_id body);
-    /// The update applied (whole, or through the line search); false when
-    /// the step fails.
-    bool
-    take_update(const Vector<double>  &newton_update,
-                const ResidualMeasure &measure,
-                const Assembly         next,
-                unsigned int          &n_changed);
+    /// @}
+
+    /// @name The problem as the Newton solver sees it (nonlinear_problem.cc)
+    /// @{
+    Vector<double> &
+    iterate() override
+    {
+      return solution;
+    }
+    Vector<double> &
+    increment_start() override
+    {
+      return previous_solution;
+    }
     void
-    print_newton_iteration(const unsigned int     it,
-                           const ResidualMeasure &measure,
-                           const unsigned int     n_changed) const;
-    /// The contact states of all pairs' nodes, and how many differ from
-    /// them now: the changes of an iterate are counted against the iterate
-    /// it came from, not against the last line-search trial.
-    std::vector<ContactInterface::NodeStates>
-    contact_states() const;
-    /// The states of every contact node of every pair as one key: 0 open;
-    /// 1, 2, 3 closed and sliding backwards, sticking, sliding forwards.
-    std::vector<int>
-    state_key() const;
-    unsigned int
-    n_changed_since(
-      const std::vector<ContactInterface::NodeStates> &before) const;
-    unsigned int
-    n_closed_changed_since(
-      const std::vector<ContactInterface::NodeStates> &before) const;
+    restore_state(const Vector<double> &state, const LoadState &load) override;
+    void
+    accept_contact_state(const Vector<double> &state) override;
     bool
-    line_search(const Vector<double>  &newton_update,
-                const ResidualMeasure &before,
-                const Assembly         assembly,
-                unsigned int          &n_changed,
-                double                &step_length);
-    /// Whether the predicted state has the imposed displacements near their
-    /// target (a program with a kink is not extrapolated across it).
+    assembled_with_tangent() const override
+    {
+      return tangent_assembled;
+    }
+    ResidualMeasure
+    residual_measure() const override;
     bool
-    predictor_meets_boundary(const Vector<double> &converged) const;
-    /// The predictor of a load step: the factor of the last increment to
-    /// extrapolate (0: none).
-    double
-    extrapolation_factor(const double t_next) const;
+    state_rejected() const override;
+    std::string
+    rejection_reason() const override;
     bool
-    solve_load_step(const unsigned int step);
-    /// From the current state to the load state at t_end, the increment
-    /// halved while Newton fails; false if it still fails after the cuts.
+    solve_linear_system(Vector<double> &newton_update,
+                        std::string    &failure_reason) override;
+    /// Why the factorization of the tangent may need much memory (the
+    /// contact surfaces' relative mesh sizes), for the error that says so.
+    std::string
+    describe_fill_in() const;
+    std::vector<ContactPairState>
+    contact_pair_states() const override;
+    std::vector<NodeStates>
+    contact_node_states() const override;
+    void
+    start_contact_step() override;
+    void
+    hold_stick(const bool hold) override;
+    void
+    allow_edge_extrapolation(const std::vector<bool> &allow) override;
     bool
-    advance_to(const unsigned int step,
-               const double       t_end,
-               unsigned int      &cuts,
-               unsigned int      &iterations);
+    may_linearise() const override;
+    void
+    linearise(const bool on) override;
+    MPI_Comm
+    get_communicator() const override
+    {
+      return communicator;
+    }
+    bool
+    stop_requested() const override;
     /// @}
 
     /// @name Adaptive refinement (refinement.cc)
@@ -424,12 +378,14 @@ namespace RingContact
     /// previous_solution) to the new mesh and set the problem up on it.
     void
     refine_mesh();
-    /// After a converged step, if refinement is due: 'Adaptive cycles'
-    /// times refine and solve the step again. False if a cycle fails.
+    /// After a converged step: 'Adaptive cycles' if refinement is due
+    /// (NonlinearProblem; the load stepper solves the step again after
+    /// each).
+    unsigned int
+    refinement_cycles(const unsigned int step) override;
     bool
-    refine_and_solve_again(const unsigned int step,
-                           unsigned int      &cuts,
-                           unsigned int      &iterations);
+    refine_mesh_after_step(const unsigned int step,
+                           const unsigned int cycle) override;
     /// @}
 
     /// @name Postprocessing (postprocessing.cc)
@@ -543,10 +499,9 @@ namespace RingContact
     std::string unbalanced_forces;
 
     /// The constraints of the first update of a load step: the same lines,
-    /// with the remaining boundary increment as inhomogeneity (step-44).
+    /// with the remaining boundary increment as inhomogeneity (step-44);
+    /// empty when the next update keeps the boundary.
     AffineConstraints<double> lifting_constraints;
-    /// Assemble and solve with lifting_constraints.
-    bool lifting = false;
     /// The imposed displacements at the current load state.
     std::map<types::global_dof_index, double> boundary_target;
     /// The normal displacements N . u = g of the scenario, each as the
@@ -595,73 +550,19 @@ namespace RingContact
       std::vector<double>                              JxW;
       std::vector<Tensor<1, 2>>                        gradients;
     } reference_geometry;
-    /// Whether the iterate after a Newton update is expected to converge,
-    /// from this run's record. Such an iterate is assembled without its
-    /// tangent first: the test of convergence does not need it, and after
-    /// the last update of a load step it would not be used. One that does
-    /// not converge needs it for its own update, and is assembled again.
-    struct ConvergenceRecord
-    {
-      /// Whether the last update that imposed a boundary increment led to
-      /// a converged iterate.
-      bool lifting_converged = false;
-      /// r_k+1 / r_k^2 of the last other update, r the relative residual
-      /// (the larger of the force and gap measures): Newton's quadratic
-      /// rate, from which the next residual is forecast. None (infinite)
-      /// before the first.
-      double rate = std::numeric_limits<double>::infinity();
-
-      bool
-      expects(const bool   lifting,
-              const double residual,
-              const double tolerance) const
-      {
-        return lifting ? lifting_converged :
-                         rate * residual * residual <= tolerance;
-      }
-      void
-      record(const bool   lifting,
-             const double from,
-             const double to,
-             const bool   converged)
-      {
-        if (lifting)
-          lifting_converged = converged;
-        else if (from > 0 && std::isfinite(from) && std::isfinite(to))
-          rate = to / (from * from);
-      }
-    } convergence_record;
     /// Linear solver = iterative: GMRES's iterations and solves in the run.
     unsigned int linear_iterations = 0;
     unsigned int linear_solves     = 0;
-    /// Why the last Newton solve stopped without converging.
-    std::string failure_reason;
     /// The largest factorization's memory estimate said in the log.
     double largest_estimate_said = 0;
-    /// The contact points keep their partners (pairing cycles).
-    bool keep_partners = false;
-    /// Whether this Newton iteration moves the contact zones' edges by
-    /// extrapolation (its first iterations, see newton.cc).
-    bool extrapolating_edges = false;
-    /// Whether the last update was damped and changed no state (friction
-    /// at small strain: the next update is taken whole if it changes
-    /// friction's states only), and the states this step's iterates have
-    /// met, to which no whole update goes back.
-    bool                       stalled_on_kink = false;
-    std::set<std::vector<int>> visited_states;
-    /// Whether the closed nodes are held in stick (a zone that grows from a
-    /// point with friction, see newton.cc), and the nodes that opened or
-    /// closed in the last update taken.
-    bool         holding_stick       = false;
-    unsigned int last_closed_changes = 0;
-    /// Whether the step is being solved linearised (linearise()), and the
-    /// model's own materials meanwhile.
-    bool                             linearised = false;
+    /// The model's own materials while the problem is linearised (empty
+    /// otherwise, see linearise()).
     std::map<unsigned int, Material> model_materials;
-    Vector<double>                   solution;
-    Vector<double>                   previous_solution;
-    double                           previous_time, current_time;
-    LoadState                        current_load;
+    /// The current iterate, the converged state the last increment started
+    /// from (both carried over by refine_mesh()), and the load state.
+    Vector<double> solution;
+    Vector<double> previous_solution;
+    LoadState      current_load;
 
     std::vector<HistoryRow>    history_rows;
     std::unique_ptr<VtuWriter> vtu_writer;

@@ -11,6 +11,7 @@
 #define ring_contact_problem_inspector_h
 
 #include <ring_contact/problem/contact_problem.h>
+#include <ring_contact/problem/newton_solver.h>
 
 namespace RingContact
 {
@@ -40,8 +41,7 @@ namespace RingContact
     /// Pair, choose the active set and assemble -R (and the tangent) at
     /// the current solution.
     unsigned int
-    assemble_newton_system(const ContactInterface::Pairing pairing =
-                             ContactInterface::Pairing::search,
+    assemble_newton_system(const Pairing                  pairing = Pairing::search,
                            const ContactProblem::Assembly what =
                              ContactProblem::Assembly::residual_and_tangent)
     {
@@ -108,11 +108,9 @@ namespace RingContact
     /// Whether a Newton iteration at the state last assembled must stop,
     /// and why ("" if it goes on).
     std::string
-    stop_reason()
+    stop_reason() const
     {
-      problem.failure_reason.clear();
-      problem.must_stop(0);
-      return problem.failure_reason;
+      return RingContact::stop_reason(problem);
     }
 
   private:

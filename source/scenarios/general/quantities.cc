@@ -92,7 +92,7 @@ namespace RingContact
           case ProblemQuantity::tangential_traction:
             {
               const auto dof =
-                state.contact_of(nearest).tangential_dof(nearest);
+                state.contact_of(nearest).nodes().tangential_dof(nearest);
               return dof == numbers::invalid_dof_index ?
                        0.0 :
                        state.get_solution()(dof);
@@ -203,7 +203,7 @@ namespace RingContact
             {
               const Point<2> x      = slave.reference_point(s, t[k]).x;
               const auto in_contact = [&](const types::global_dof_index dof) {
-                return state.contact_of(dof).is_active(dof) &&
+                return state.contact_of(dof).active_set().is_active(dof) &&
                        state.reported_pressure(dof) > 0;
               };
               const bool in = in_contact(dof_at(t[k]));
