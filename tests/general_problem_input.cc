@@ -75,17 +75,34 @@ namespace
              " set Print steps = false\nend\n"
           << "subsection Newton\n set Verbose = false\nend\n";
     }
-    const auto result = RingContactTests::run_command(
-      {"/bin/sh",
-       "-c",
-       "ulimit -v 4000000; exec " RING_CONTACT_EXECUTABLE " fill_in.prm"});
-    check(result.exit_code == 2, "fill_in: exit code 2");
-    check(result.printed("error: the direct solver's factorization of the "
-                         "24052 unknowns would need about"),
-          "fill_in: the estimate is said");
-    check(result.printed("the slave surface's segments are up to 857 times "
-                         "longer than the master's"),
-          "fill_in: the mesh ratio is named");
+    // An AddressSanitizer build reserves terabytes of address space for
+    // its shadow memory at start, which no address-space limit of 4 GB
+    // allows: the program could not start. There the case is not run; the
+    // Release suite runs it, and tests/memory_guard the guard without a
+    // limit.
+#ifdef __SANITIZE_ADDRESS__
+    const bool run_it = false;
+#else
+    const bool run_it = true;
+#endif
+    if (run_it)
+      {
+        const auto result = RingContactTests::run_command(
+          {"/bin/sh",
+           "-c",
+           "ulimit -v 4000000; exec " RING_CONTACT_EXECUTABLE " fill_in.prm"});
+        check(result.exit_code == 2, "fill_in: exit code 2");
+        check(result.printed("error: the direct solver's factorization of "
+                             "the 24052 unknowns would need about"),
+              "fill_in: the estimate is said");
+        check(result.printed("the slave surface's segments are up to 857 "
+                             "times longer than the master's"),
+              "fill_in: the mesh ratio is named");
+      }
+    else
+      std::cerr << "fill_in: not run under AddressSanitizer (no "
+                   "address-space limit possible)"
+                << std::endl;
     RingContactTests::deallog_file
       << "fill_in: exit code 2: error: the direct solver's factorization "
          "... would need about ... GB ...; contact pair 1: the slave "
