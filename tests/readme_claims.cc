@@ -1,11 +1,13 @@
-// The README's claims about the output, held against what a run writes
-// (issue 30): its table of the VTU arrays against the arrays in the files
-// of a ring run and of a general problem, its table of history.csv's
-// columns against the headers of four runs (the rings and a general
-// problem, each with and without friction), its sample of the terminal
-// against the program's first line and table header, and every line of the
-// terminal within 132 columns. (doc/parameters.prm against
-// --print-parameters is the test parameter_reference.)
+// The documents' claims about the output, held against what a run writes
+// (issue 30). doc/output.md, the output reference: its table of the VTU
+// arrays against the arrays in the files of a ring run and of a general
+// problem, its table of history.csv's columns against the headers of four
+// runs (the rings and a general problem, each with and without friction),
+// its sample of the terminal against the program's first line and table
+// header. README.md: its sample's table header too, and its sentence on
+// what --version prints. And every line of the terminal within 132
+// columns. (doc/parameters.prm against --print-parameters is the test
+// parameter_reference.)
 #include "run_program.h"
 
 #include <ring_contact/config.h>
@@ -16,16 +18,20 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 using RingContactTests::check;
 
 namespace
 {
-  // The README's table row that starts with `start`, whole.
+  // The table row of the document `name` (its text `text`) that starts
+  // with `start`, whole.
   std::string
-  readme_row(const std::string &readme, const std::string &start)
+  document_row(const std::string &text,
+               const std::string &name,
+               const std::string &start)
   {
-    std::istringstream in(readme);
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);)
       {
         const auto first = line.find_first_not_of(' ');
@@ -33,7 +39,7 @@ namespace
             line.compare(first, start.size(), start) == 0)
           return line.substr(first);
       }
-    check(false, "README.md has a row starting with " + start);
+    check(false, name + " has a row starting with " + start);
     return "";
   }
 
@@ -138,6 +144,11 @@ main()
 {
   const std::string readme =
     RingContactTests::file_contents(SOURCE_DIR "/../README.md");
+  const std::string output =
+    RingContactTests::file_contents(SOURCE_DIR "/../doc/output.md");
+  const auto output_row = [&](const std::string &start) {
+    return document_row(output, "doc/output.md", start);
+  };
 
   // The four runs: the rings with two steps, with and without friction;
   // the two-block problems of the problem language.
@@ -158,33 +169,34 @@ main()
          {"`solution-<scheme>.pvd`", "solution", "general", "segment-based-2"},
          {"`slave-<scheme>.pvd`", "slave", "general", "segment-based-2"}})
     {
-      const std::string row   = second_cell(readme_row(readme, "| " + files));
-      const auto        names = quoted_names(row);
+      const std::string           row   = second_cell(output_row("| " + files));
+      const auto                  names = quoted_names(row);
       const std::set<std::string> claimed(names.begin(), names.end());
       check(row.find("cell data") == std::string::npos,
-            "the README claims no cell data (the material id is written as "
-            "point data)");
+            "doc/output.md claims no cell data (the material id is written "
+            "as point data)");
       const std::string file = folder + "/" + stem + "-" + scheme + "-0001.vtu";
       const auto        point_data = vtu_arrays(file, "PointData");
       check(point_data == claimed,
-            file + ": the README's point data are the file's");
+            file + ": doc/output.md's point data are the file's");
       check(vtu_arrays(file, "CellData").empty(), file + ": no cell data");
     }
 
   // @sect4{The columns of history.csv}
   //
-  // The rows of the README's table: the rings' list, "the same with X, Y
-  // before equilibrium_error", and the general problem's list, in which
-  // the check columns stand where the README says "a column per check".
+  // The rows of doc/output.md's table: the rings' list, "the same with X,
+  // Y before equilibrium_error", and the general problem's list, in which
+  // the check columns stand where the table says "a column per check".
   const auto rings_claim =
-    quoted_names(second_cell(readme_row(readme, "| rings, patch test |")));
+    quoted_names(second_cell(output_row("| rings, patch test |")));
   check(header_of("rings/history.csv") == rings_claim,
         "the rings' columns: " + joined(header_of("rings/history.csv")));
 
   const auto with_friction = [&](std::vector<std::string> columns,
                                  const std::string       &row_start) {
-    const auto added = quoted_names(second_cell(readme_row(readme, row_start)));
-    // The README: "the same with <added...> before `equilibrium_error`".
+    const auto added = quoted_names(second_cell(output_row(row_start)));
+    // doc/output.md: "the same with <added...> before
+    // `equilibrium_error`".
     check(added.size() >= 2 && added.back() == "equilibrium_error",
           row_start + " names the columns added and where");
     columns.insert(std::find(columns.begin(),
@@ -199,7 +211,7 @@ main()
         "the rings' columns with friction");
 
   const std::string general_row =
-    second_cell(readme_row(readme, "| general problem |"));
+    second_cell(output_row("| general problem |"));
   const std::string placeholder = "a column per check";
   check(general_row.find(placeholder) != std::string::npos,
         "the general row says where the checks' columns go");
@@ -225,19 +237,27 @@ main()
 
   // @sect4{The terminal}
   //
-  // The README's sample shows the first line of a run and the table's
+  // doc/output.md's sample shows the first line of a run and the table's
   // header as the program prints them: the same version, the same words,
-  // the same columns.
-  const auto sample_header = readme_row(readme, "step       t  Newton");
-  bool       header_found  = false;
-  for (const auto &line : rings.lines)
-    header_found =
-      header_found || (line.find("step       t  Newton") != std::string::npos &&
-                       line.substr(line.find('s')) == sample_header);
-  check(header_found, "the README's table header is the program's");
-  check(readme.find("ring_contact " RING_CONTACT_VERSION
+  // the same columns. The README's shorter sample shows the header too.
+  for (const auto &[name, text] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"doc/output.md", output}, {"README.md", readme}})
+    {
+      const auto sample_header =
+        document_row(text, name, "step       t  Newton");
+      bool header_found = false;
+      for (const auto &line : rings.lines)
+        header_found =
+          header_found ||
+          (line.find("step       t  Newton") != std::string::npos &&
+           line.substr(line.find('s')) == sample_header);
+      check(header_found,
+            name + ": the sample's table header is the program's");
+    }
+  check(output.find("ring_contact " RING_CONTACT_VERSION
                     ": prm/ssnp152a.prm") != std::string::npos,
-        "the README's sample shows this version's first line");
+        "doc/output.md's sample shows this version's first line");
   check(rings.lines.front().rfind("ring_contact " RING_CONTACT_VERSION ": ",
                                   0) == 0,
         "the first line names the program and its version");
@@ -270,10 +290,10 @@ main()
   }
 
   RingContactTests::deallog_file
-    << "README.md: the VTU arrays of the bodies and the slave surfaces, the "
-       "columns of history.csv for the rings and a general problem with and "
-       "without friction, the sample's first line and table header hold; "
-       "every line within 132 columns; the --version sentence names no "
-       "other version"
+    << "doc/output.md: the VTU arrays of the bodies and the slave surfaces, "
+       "the columns of history.csv for the rings and a general problem with "
+       "and without friction, the sample's first line and table header "
+       "hold; README.md: the sample's table header holds, the --version "
+       "sentence names no other version; every line within 132 columns"
     << std::endl;
 }

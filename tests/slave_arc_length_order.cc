@@ -1,8 +1,8 @@
 // The slave surface's VTU file lists its points along the surface, piece
-// after piece, so that ParaView's Plot Data over arc_length (README's
-// recipe), which joins the points in the file's order, draws the pressure
-// along the interface. The points used to come in the order of the cells:
-// on a gmsh mesh (Hertz, prm/hertz.prm) that is no order along the
+// after piece, so that ParaView's Plot Data over arc_length (the recipe
+// of doc/output.md), which joins the points in the file's order, draws the
+// pressure along the interface. The points used to come in the order of the
+// cells: on a gmsh mesh (Hertz, prm/hertz.prm) that is no order along the
 // surface, and the plot was a zigzag. The files are read back with VTK
 // (slave_pieces.py): in each piece arc_length starts at 0 and increases
 // from point to point by its chord (to 1 %), a closed surface running to

@@ -47,7 +47,7 @@ namespace RingContact
     // Round-off within a factor 100 of the solve's bound (eps S > 1e-8;
     // past 1e-7 the run was refused) may explain a residual the solve
     // cannot reduce: named first. The free body's words are those the
-    // tests and README quote.
+    // tests and doc/user-guide.md quote.
     std::string
     StiffnessSpread::singular_tangent_advice() const
     {

@@ -27,7 +27,7 @@ namespace RingContact
 {
   namespace Driver
   {
-    /// The program's exit codes (README.md lists them); an interrupted run
+    /// The program's exit codes (doc/output.md lists them); an interrupted run
     /// ends with 128 + the signal (130 for SIGINT, 143 for SIGTERM).
     namespace ExitCode
     {
