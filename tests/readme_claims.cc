@@ -288,6 +288,14 @@ main()
             "the README's --version sentence names " + number->str() +
               ", not the version " RING_CONTACT_VERSION);
   }
+  // The citation file names the version too (it said 0.10.0 after 0.11.0).
+  {
+    const std::string citation =
+      RingContactTests::file_contents(SOURCE_DIR "/../CITATION.cff");
+    check(citation.find("\nversion: " RING_CONTACT_VERSION "\n") !=
+            std::string::npos,
+          "CITATION.cff names the version " RING_CONTACT_VERSION);
+  }
 
   RingContactTests::deallog_file
     << "doc/output.md: the VTU arrays of the bodies and the slave surfaces, "
