@@ -9,6 +9,7 @@
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_element.h>
 #include <ring_contact/contact/contact_interface.h>
 
@@ -148,7 +149,7 @@ namespace RingContact
     for (unsigned int k = 0; k < nodes.size(); ++k)
       {
         const auto   t = nodes.tangential_dofs[k], n = nodes.dofs[k];
-        const double w = nodes.reference_weight[k];
+        const double w         = nodes.reference_weight[k];
         const int    slip_sign = states.friction_state(k);
         if (!system.owned_rows().is_element(t))
           continue;
@@ -230,10 +231,10 @@ namespace RingContact
       const auto         &segment = surface.segments()[s];
       std::vector<double> N;
       surface.displacement_basis().evaluate(t, N);
-      const Tensor<1, 2> dx = surface.reference_point(s, t).dx;
+      const Tensor<1, dim> dx = surface.reference_point(s, t).dx;
       for (unsigned int j = 0; j < N.size(); ++j)
         if (std::abs(N[j] - 1) < 1e-12)
-          for (unsigned int axis = 0; axis < 2; ++axis)
+          for (unsigned int axis = 0; axis < dim; ++axis)
             {
               const auto dof =
                 axis == 0 ? segment.dofs_x[j] : segment.dofs_y[j];
@@ -254,17 +255,17 @@ namespace RingContact
       {
         const auto &[s, t] =
           multiplier_nodes.sites.at(multiplier_nodes.dofs[k]).front();
-        double    moved    = 0;
-        const int axis     = held_axis(slave, s, t, moved);
+        double    moved = 0;
+        const int axis  = held_axis(slave, s, t, moved);
         if (axis < 0)
           continue;
-        slave_axis[k]    = 1 + axis;
-        const Point<2> x = slave.reference_point(s, t).x;
+        slave_axis[k]      = 1 + axis;
+        const Point<dim> x = slave.reference_point(s, t).x;
         for (unsigned int m = 0; m < master.segments().size(); ++m)
           for (const double end : {0.0, 1.0})
             {
-              const Point<2> xm           = master.reference_point(m, end).x;
-              double         master_moved = 0;
+              const Point<dim> xm           = master.reference_point(m, end).x;
+              double           master_moved = 0;
               if (std::abs(xm[axis] - x[axis]) <=
                     1e-6 * segment_length +
                       SurfaceKernel::position_round_off(x) &&
@@ -311,7 +312,7 @@ namespace RingContact
   std::vector<double>
   ContactInterface::weighted_slips(const Vector<double> &solution) const
   {
-    std::vector<double> weighted_slip(multiplier_nodes.size(), 0.0);
+    std::vector<double>  weighted_slip(multiplier_nodes.size(), 0.0);
     const ConvergedState converged{converged_solution,
                                    *converged_slave,
                                    *converged_master,
@@ -418,4 +419,3 @@ namespace RingContact
     return blocks;
   }
 } // namespace RingContact
-

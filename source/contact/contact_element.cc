@@ -26,6 +26,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_element.h>
 
 #include <algorithm>
@@ -61,7 +62,7 @@ namespace RingContact
                    const bool                 with_displacement)
     {
       SurfaceKernel::CurvePoint<AD> p;
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         {
           p.x[d]   = reference.x[d];
           p.dx[d]  = reference.dx[d];
@@ -73,7 +74,7 @@ namespace RingContact
                                        with_displacement ? dN.data() : nullptr,
                                        with_displacement ? ddN.data() : nullptr,
                                        [&](const unsigned int i) {
-                                         Tensor<1, 2, AD> v;
+                                         Tensor<1, dim, AD> v;
                                          v[0] = u_x[i];
                                          v[1] = u_y[i];
                                          return v;
@@ -199,7 +200,8 @@ namespace RingContact
           const auto &seg = master.segments()[m];
           if (!seg.is_copy)
             continue;
-          const Tensor<2, 2> R  = back ? transpose(seg.rotation) : seg.rotation;
+          const Tensor<2, dim> R =
+            back ? transpose(seg.rotation) : seg.rotation;
           const unsigned int nm = seg.dofs_x.size();
           for (unsigned int i = 0; i < nm; ++i)
             {
@@ -231,7 +233,7 @@ namespace RingContact
 
     // Outward normal scaled by |x'| of a master segment at t.
     template <typename AD>
-    Tensor<1, 2, AD>
+    Tensor<1, dim, AD>
     ContactElement<AD>::scaled_normal(const unsigned int m,
                                       const double       t) const
     {
@@ -246,7 +248,7 @@ namespace RingContact
     // shared vertex; at the end of an open surface the normal is the partner's
     // own.
     template <typename AD>
-    Tensor<1, 2, AD>
+    Tensor<1, dim, AD>
     ContactElement<AD>::vertex_normal(const unsigned int end) const
     {
       const unsigned int b             = m_seg.neighbours[end];
@@ -297,6 +299,62 @@ namespace RingContact
             }
       return eta_of_end;
     }
+
+    namespace
+    {
+      // Friction: the tangential traction lambda_t = sum_k Psi_k lambda_t,k in
+      // the dual basis Psi_k = sum_j a_kj Phi_j, A = D M^-1 with M_jk = int
+      // Phi_j Phi_k dS and D_kk = int Phi_k dS over the slave segment
+      // (reference length, the rule of the weights w_k). The weighted slip
+      // s~_k = int Psi_k s dS is then D_k s_k wherever s lies in the span of
+      // the Phi_j: the stick of node k constrains its own slip only, as the
+      // nodal scheme's does. Weighted by Phi_k, it tied each node's stick to
+      // its neighbours' slips: beside a sliding node the sticking nodes'
+      // rows M s = 0 grow the slip and the traction away from it by 2 + sqrt
+      // 3 per node (two blocks, 7 nodes, Gauss 3, mu = 0.37: tangential
+      // tractions of +9e4, -4.8e4, +1.3e4, ... against a bound of 150, no
+      // step solved), and a node beside the Hertz zone's centre slid at the
+      // whole update and stuck at any fraction of it. With multipliers of
+      // the displacement's degree the force the traction puts on slave node
+      // j is then D_j lambda_t,j, and the Coulomb law per node
+      // (ActiveSet::choose_friction_states()) is that of the nodal scheme.
+      // The decoupling is exact where the scheme integrates Psi_k Phi_j
+      // exactly in the reference configuration; an under-integrating rule,
+      // the current length of finite strain and a partly covered
+      // segment-based segment leave a coupling of the order of their error.
+      // (Psi_k is not positive: a traction field, not a pressure, can be
+      // anything.)
+      // The coefficients a_kj = D_k (M^-1)_kj of the dual basis on slave
+      // segment `segment`, for its nl multiplier nodes.
+      FullMatrix<double>
+      dual_basis_coefficients(const ContactSurface &slave,
+                              const unsigned int    segment,
+                              const unsigned int    nl)
+      {
+        const QGauss<1>     exact(slave.geometry_basis().size() + nl);
+        FullMatrix<double>  M(nl, nl);
+        std::vector<double> D(nl, 0.0), P;
+        for (unsigned int q = 0; q < exact.size(); ++q)
+          {
+            slave.multiplier_basis().evaluate(exact.point(q)[0], P);
+            const double dS =
+              slave.reference_point(segment, exact.point(q)[0]).dx.norm() *
+              exact.weight(q);
+            for (unsigned int j = 0; j < nl; ++j)
+              {
+                D[j] += P[j] * dS;
+                for (unsigned int k = 0; k < nl; ++k)
+                  M(j, k) += P[j] * P[k] * dS;
+              }
+          }
+        M.gauss_jordan();
+        FullMatrix<double> A(nl, nl);
+        for (unsigned int k = 0; k < nl; ++k)
+          for (unsigned int j = 0; j < nl; ++j)
+            A(k, j) = D[k] * M(k, j);
+        return A;
+      }
+    } // namespace
 
     // The slave point: its parameter eta = eta_a + (eta_b - eta_a) xi on its
     // piece, written eta0 + d eta with d eta of value 0 and the derivative
@@ -382,54 +440,18 @@ namespace RingContact
           Phi_eta[k] = Phi[k] + dPhi[k] * d_eta;
           lambda += Phi_eta[k] * lambda_k[k];
         }
-      // Friction: the tangential traction lambda_t = sum_k Psi_k lambda_t,k in
-      // the dual basis Psi_k = sum_j a_kj Phi_j, A = D M^-1 with M_jk = int
-      // Phi_j Phi_k dS and D_kk = int Phi_k dS over the slave segment
-      // (reference length, the rule of the weights w_k). The weighted slip
-      // s~_k = int Psi_k s dS is then D_k s_k wherever s lies in the span of
-      // the Phi_j: the stick of node k constrains its own slip only, as the
-      // nodal scheme's does. Weighted by Phi_k, it tied each node's stick to
-      // its neighbours' slips: beside a sliding node the sticking nodes'
-      // rows M s = 0 grow the slip and the traction away from it by 2 + sqrt
-      // 3 per node (two blocks, 7 nodes, Gauss 3, mu = 0.37: tangential
-      // tractions of +9e4, -4.8e4, +1.3e4, ... against a bound of 150, no
-      // step solved), and a node beside the Hertz zone's centre slid at the
-      // whole update and stuck at any fraction of it. With multipliers of
-      // the displacement's degree the force the traction puts on slave node
-      // j is then D_j lambda_t,j, and the Coulomb law per node
-      // (ActiveSet::choose_friction_states()) is that of the nodal scheme.
-      // The decoupling is exact where the scheme integrates Psi_k Phi_j
-      // exactly in the reference configuration; an under-integrating rule,
-      // the current length of finite strain and a partly covered
-      // segment-based segment leave a coupling of the order of their error.
-      // (Psi_k is not positive: a traction field, not a pressure, can be
-      // anything.)
+      // Friction: the tangential traction in the dual basis Psi_k
+      // (dual_basis_coefficients()).
       Psi_eta = Phi_eta;
       if (converged && converged->dual_basis)
         {
-          const QGauss<1>     exact(slave.geometry_basis().size() + nl);
-          FullMatrix<double>  M(nl, nl);
-          std::vector<double> D(nl, 0.0), P;
-          for (unsigned int q = 0; q < exact.size(); ++q)
-            {
-              slave.multiplier_basis().evaluate(exact.point(q)[0], P);
-              const double dS =
-                slave.reference_point(point.slave_segment, exact.point(q)[0])
-                  .dx.norm() *
-                exact.weight(q);
-              for (unsigned int j = 0; j < nl; ++j)
-                {
-                  D[j] += P[j] * dS;
-                  for (unsigned int k = 0; k < nl; ++k)
-                    M(j, k) += P[j] * P[k] * dS;
-                }
-            }
-          M.gauss_jordan();
+          const FullMatrix<double> A =
+            dual_basis_coefficients(slave, point.slave_segment, nl);
           for (unsigned int k = 0; k < nl; ++k)
             {
               Psi_eta[k] = 0;
               for (unsigned int j = 0; j < nl; ++j)
-                Psi_eta[k] += D[k] * M(k, j) * Phi_eta[j];
+                Psi_eta[k] += A(k, j) * Phi_eta[j];
             }
         }
       if (converged)
@@ -487,15 +509,15 @@ namespace RingContact
             converged->slave.current_point(point.slave_segment, point.eta);
           const CurvePoint xm =
             converged->master.current_point(old.segment, old.t);
-          const Tensor<1, 2> d = xs.x - xm.x;
-          separation[0]        = d[0];
-          separation[1]        = d[1];
+          const Tensor<1, dim> d = xs.x - xm.x;
+          separation[0]          = d[0];
+          separation[1]          = d[1];
           double slope, along;
           if (smooth)
             {
-              const Tensor<1, 2> n0 =
+              const Tensor<1, dim> n0 =
                 converged->master.vertex_normal(old.segment, 0);
-              const Tensor<1, 2> n1 =
+              const Tensor<1, dim> n1 =
                 converged->master.vertex_normal(old.segment, 1);
               slope =
                 SurfaceKernel::smoothed_normal_residual(d, xm, n0, n1, old.t)
@@ -510,7 +532,7 @@ namespace RingContact
             }
           dxi_n = -along * d_eta / slope;
           // d_n of the moving point eta0 + d eta, to first order.
-          for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int c = 0; c < dim; ++c)
             separation[c] += xs.dx[c] * d_eta - xm.dx[c] * dxi_n;
         }
       // Minus the old partner's increment u_m(xi_n) - u_m,n(xi_n). The
@@ -531,7 +553,7 @@ namespace RingContact
       // tau . relative, tau = e_z x n = (-n_y, n_x) along the current master
       // normal: the slip is measured along the tangent on which the tangential
       // traction acts.
-      for (unsigned int c = 0; c < 2; ++c)
+      for (unsigned int c = 0; c < dim; ++c)
         relative[c] += separation[c];
       return -normal[1] * relative[0] + normal[0] * relative[1];
     }
@@ -567,8 +589,8 @@ namespace RingContact
           dxi = -r / slope;
         }
       ADVector x_m;
-      for (unsigned int dim = 0; dim < 2; ++dim)
-        x_m[dim] = xm.x[dim] + xm.dx[dim] * dxi;
+      for (unsigned int axis = 0; axis < dim; ++axis)
+        x_m[axis] = xm.x[axis] + xm.dx[axis] * dxi;
       // The normal, chosen as ContactSurface::normal(projection) chooses it for
       // the search, so that the active set (decided from the search's gaps) and
       // the residual (from the element's) see the same gap: the smoothed field
@@ -582,8 +604,8 @@ namespace RingContact
         // Outward normal scaled by |x_m'| (normalised below).
         {
           ADVector dx;
-          for (unsigned int dim = 0; dim < 2; ++dim)
-            dx[dim] = xm.dx[dim] + xm.ddx[dim] * dxi;
+          for (unsigned int axis = 0; axis < dim; ++axis)
+            dx[axis] = xm.dx[axis] + xm.ddx[axis] * dxi;
           normal = SurfaceKernel::scaled_normal(dx, m_seg.orientation);
         }
       normal = SurfaceKernel::unit(normal);
@@ -613,8 +635,9 @@ namespace RingContact
         {
           const CurvePoint Xm = master.reference_point(projection.segment, xi0);
           ADVector         difference;
-          for (unsigned int dim = 0; dim < 2; ++dim)
-            difference[dim] = xs_reference[dim] - Xm.x[dim] - Xm.dx[dim] * dxi;
+          for (unsigned int axis = 0; axis < dim; ++axis)
+            difference[axis] =
+              xs_reference[axis] - Xm.x[axis] - Xm.dx[axis] * dxi;
           reference_gap = difference[0] * normal[0] + difference[1] * normal[1];
           if (std::abs(reference_gap.val()) <=
               SurfaceKernel::position_round_off(Xm.x))
@@ -649,11 +672,11 @@ namespace RingContact
       tau[0] = -normal[1];
       tau[1] = normal[0];
       for (unsigned int i = 0; i < ns; ++i)
-        for (unsigned int dim = 0; dim < 2; ++dim)
+        for (unsigned int axis = 0; axis < dim; ++axis)
           {
-            r[dim * ns + i] = -lambda * N_eta[i] * normal[dim] * ds;
+            r[axis * ns + i] = -lambda * N_eta[i] * normal[axis] * ds;
             if (converged)
-              r[dim * ns + i] += lambda_t * N_eta[i] * tau[dim] * ds;
+              r[axis * ns + i] += lambda_t * N_eta[i] * tau[axis] * ds;
           }
       // The force on the master acts at the partner point, through the
       // partner's shape functions at the moved xi. The neighbours that enter
@@ -662,11 +685,11 @@ namespace RingContact
       for (unsigned int i = 0; i < nm; ++i)
         {
           const AD Nm_xi = Nm[i] + dNm[i] * dxi;
-          for (unsigned int dim = 0; dim < 2; ++dim)
+          for (unsigned int axis = 0; axis < dim; ++axis)
             {
-              r[mo + dim * nm + i] = lambda * Nm_xi * normal[dim] * ds;
+              r[mo + axis * nm + i] = lambda * Nm_xi * normal[axis] * ds;
               if (converged)
-                r[mo + dim * nm + i] -= lambda_t * Nm_xi * tau[dim] * ds;
+                r[mo + axis * nm + i] -= lambda_t * Nm_xi * tau[axis] * ds;
             }
         }
       // Closed nodes: c Phi_k g ds, which summed over the points is c g~_k, the

@@ -13,6 +13,7 @@
 // the L2 error of the pressure.
 #include <deal.II/base/quadrature_lib.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/contact/contact_quadrature.h>
 
@@ -51,7 +52,7 @@ namespace RingContact
   // surfaces: the same rule integrates the slave's and the master's rows, and a
   // rule that saw only a linear slave's vertices would give a quadratic
   // master's mid-side nodes no contact force (doc/theory.md).
-  ContactInterface::ContactInterface(const DoFHandler<2>     &dof_handler,
+  ContactInterface::ContactInterface(const DoFHandler<dim>   &dof_handler,
                                      const ContactParameters &parameters,
                                      const IntegrationScheme &scheme,
                                      const unsigned int slave_mapping_degree,
@@ -133,11 +134,8 @@ namespace RingContact
         master.update(solution);
       }
     point_pairing.pair(solution, pairing, geometrically_linear);
-    const unsigned int n_changed =
-      states.choose_closed_nodes(solution,
-                                 slave,
-                                 point_pairing.points(),
-                                 piecewise_linear());
+    const unsigned int n_changed = states.choose_closed_nodes(
+      solution, slave, point_pairing.points(), piecewise_linear());
     // A changed friction state counts as a change: Newton stops only when
     // neither the active set nor a state changed.
     if (friction_coefficient == 0)
@@ -151,10 +149,9 @@ namespace RingContact
     // From the contact element, values only (contact_assembly.cc): the slips
     // need the current tangent, the moving pieces and the old partners exactly
     // as the residual does.
-    return n_changed +
-           states.choose_friction_states(solution,
-                                         weighted_slips(solution),
-                                         geometrically_linear);
+    return n_changed + states.choose_friction_states(solution,
+                                                     weighted_slips(solution),
+                                                     geometrically_linear);
   }
 
   // @sect4{Friction: the converged state}
@@ -186,12 +183,12 @@ namespace RingContact
   // master overlaps it by 2/3 of the sagitta in g~_k / w_k, and modelisation H
   // so set up once gave 0 of 63 checks with no word of why. The mean gap is 0
   // where w_k is 0 (ActiveSet::mean_gaps()).
-  std::pair<double, Point<2>>
+  std::pair<double, Point<dim>>
   ContactInterface::deepest_interpenetration() const
   {
     const std::vector<double> mean_gap = states.mean_gaps();
     double                    depth    = 0;
-    Point<2>                  where;
+    Point<dim>                where;
     for (unsigned int k = 0; k < mean_gap.size(); ++k)
       if (-mean_gap[k] > depth)
         {
@@ -208,8 +205,8 @@ namespace RingContact
   // The node nearest to a reference point: the rings' node A is named by its
   // initial position (0.6, 0), a general problem's checks by theirs.
   types::global_dof_index
-  ContactInterface::multiplier_dof_nearest_to(const Point<2> &point,
-                                              double         *distance) const
+  ContactInterface::multiplier_dof_nearest_to(const Point<dim> &point,
+                                              double           *distance) const
   {
     double                  best = std::numeric_limits<double>::max();
     types::global_dof_index dof  = numbers::invalid_dof_index;

@@ -10,6 +10,7 @@
 // (Pairing).
 #include <deal.II/base/bounding_box.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_pairing.h>
 
 #include <algorithm>
@@ -90,11 +91,11 @@ namespace RingContact
   // test tiny_scales solves as it solves a load of 1e6.
   double
   ContactPairing::reference_gap_of(const unsigned int slave_segment,
-                                     const double       eta,
-                                     const Projection  &projection) const
+                                   const double       eta,
+                                   const Projection  &projection) const
   {
-    const Point<2> Xs = slave.reference_point(slave_segment, eta).x;
-    const Point<2> Xm =
+    const Point<dim> Xs = slave.reference_point(slave_segment, eta).x;
+    const Point<dim> Xm =
       master.reference_point(projection.segment, projection.t).x;
     const double gap = (Xs - Xm) * master.normal(projection);
     return std::abs(gap) <= SurfaceKernel::position_round_off(Xm) ? 0.0 : gap;
@@ -106,10 +107,10 @@ namespace RingContact
   // positions is not lost in X + u (see the contact element).
   double
   ContactPairing::gap_of(const unsigned int slave_segment,
-                           const double       eta,
-                           const Projection  &projection) const
+                         const double       eta,
+                         const Projection  &projection) const
   {
-    const Tensor<1, 2> jump =
+    const Tensor<1, dim> jump =
       slave.displacement_at(slave_segment, eta) -
       master.displacement_at(projection.segment, projection.t);
     return reference_gap_of(slave_segment, eta, projection) +
@@ -124,9 +125,9 @@ namespace RingContact
   // residual by a jump. So a point keeps its partner while its projection stays
   // on it (project()'s preferred segment), and after four iterations of a step,
   // or when the line search fails, the Newton solver holds the pairing
-  // altogether (Pairing; newton_solver.cc): on a faceted master that turns, the slave points sit
-  // in the grooves, where with one normal per point no root exists, and the
-  // pairing flipped between two segments at every iteration.
+  // altogether (Pairing; newton_solver.cc): on a faceted master that turns, the
+  // slave points sit in the grooves, where with one normal per point no root
+  // exists, and the pairing flipped between two segments at every iteration.
   void
   ContactPairing::pair_points(const Vector<double> &solution,
                               const Pairing         pairing,
@@ -142,45 +143,47 @@ namespace RingContact
           // Fixed rules put the same points on every segment in the same order:
           // the point at `index` is the one at that index in the last pairing,
           // and its partner there is the preferred one.
-          const unsigned int index     = new_points.size();
-          const unsigned int preferred = index < contact_points.size() ?
-                                           contact_points[index].projection.segment :
-                                           numbers::invalid_unsigned_int;
-          ContactPoint       point;
+          const unsigned int index = new_points.size();
+          const unsigned int preferred =
+            index < contact_points.size() ?
+              contact_points[index].projection.segment :
+              numbers::invalid_unsigned_int;
+          ContactPoint point;
           point.xi = quadrature.point(q)[0];
           point.w  = quadrature.weight(q);
-          complete_point(point, s, solution, linear_gaps, [&](const Point<2> &x) {
-            if (pairing == Pairing::search ||
-                preferred == numbers::invalid_unsigned_int)
-              return master.project(x, preferred);
-            Projection kept = contact_points[index].projection;
-            if (!kept.at_vertex)
-              {
-                // At an accepted iterate a held partner is followed along its
-                // segment, but not past its end onto the extension: with
-                // facet normals, past a vertex seen from a groove (a concave
-                // corner) the extension runs inside the neighbouring
-                // segment's body, and a point pushed along it by the
-                // segment's tilted normal converges to a state that
-                // penetrates the neighbour (measured: the nodal scheme
-                // turned one element per step ended 6.8 % below the same
-                // turn in smaller steps). It is held at the vertex instead,
-                // with the vertex normal, as project() pairs it. Not within
-                // the line search: the switch is a jump of the residual,
-                // which would stop the search (measured: nodal, 80 around,
-                // failed at step 5 of C's rotation).
-                const Projection p = master.project_onto(x, preferred);
-                if (pairing == Pairing::hold || master.smooths_normals() ||
-                    (p.t >= 0 && p.t <= 1))
-                  return p;
-                return master.project_onto_vertex(x,
-                                                  preferred,
-                                                  p.t < 0 ? 0 : 1);
-              }
-            kept.gap = (x - master.current_point(kept.segment, kept.t).x) *
-                       master.normal(kept);
-            return kept;
-          });
+          complete_point(
+            point, s, solution, linear_gaps, [&](const Point<dim> &x) {
+              if (pairing == Pairing::search ||
+                  preferred == numbers::invalid_unsigned_int)
+                return master.project(x, preferred);
+              Projection kept = contact_points[index].projection;
+              if (!kept.at_vertex)
+                {
+                  // At an accepted iterate a held partner is followed along its
+                  // segment, but not past its end onto the extension: with
+                  // facet normals, past a vertex seen from a groove (a concave
+                  // corner) the extension runs inside the neighbouring
+                  // segment's body, and a point pushed along it by the
+                  // segment's tilted normal converges to a state that
+                  // penetrates the neighbour (measured: the nodal scheme
+                  // turned one element per step ended 6.8 % below the same
+                  // turn in smaller steps). It is held at the vertex instead,
+                  // with the vertex normal, as project() pairs it. Not within
+                  // the line search: the switch is a jump of the residual,
+                  // which would stop the search (measured: nodal, 80 around,
+                  // failed at step 5 of C's rotation).
+                  const Projection p = master.project_onto(x, preferred);
+                  if (pairing == Pairing::hold || master.smooths_normals() ||
+                      (p.t >= 0 && p.t <= 1))
+                    return p;
+                  return master.project_onto_vertex(x,
+                                                    preferred,
+                                                    p.t < 0 ? 0 : 1);
+                }
+              kept.gap = (x - master.current_point(kept.segment, kept.t).x) *
+                         master.normal(kept);
+              return kept;
+            });
           new_points.push_back(point);
         }
     contact_points = std::move(new_points);
@@ -221,10 +224,11 @@ namespace RingContact
             const double eta_a = ends[i].first, eta_b = ends[i + 1].first;
             if (eta_b - eta_a < 1e-12)
               continue;
-            const unsigned int index     = new_points.size();
-            const unsigned int preferred = index < contact_points.size() ?
-                                             contact_points[index].projection.segment :
-                                             numbers::invalid_unsigned_int;
+            const unsigned int index = new_points.size();
+            const unsigned int preferred =
+              index < contact_points.size() ?
+                contact_points[index].projection.segment :
+                numbers::invalid_unsigned_int;
             // The partner from the piece's midpoint: no vertex-normal line
             // crosses the inside of a piece, so the whole piece faces one
             // master segment, and the midpoint is away from the ends, where two
@@ -256,9 +260,10 @@ namespace RingContact
                 // searched: at the ends of the piece the projection falls on
                 // the partner's end to round-off, where a search could pick the
                 // neighbour.
-                complete_point(point, s, solution, linear_gaps, [&](const Point<2> &x) {
-                  return master.project_onto(x, partner);
-                });
+                complete_point(
+                  point, s, solution, linear_gaps, [&](const Point<dim> &x) {
+                    return master.project_onto(x, partner);
+                  });
                 new_points.push_back(point);
               }
           }
@@ -279,15 +284,15 @@ namespace RingContact
     // the reference configuration, where they need not touch).
     // Half a segment alone missed the cuts of blocks meshed 0.2 apart
     // (uncut pieces, and a pressure 3 % off, silently).
-    std::vector<Point<2>> corners;
-    double                apart = 0;
+    std::vector<Point<dim>> corners;
+    double                  apart = 0;
     for (const double t : {0.0, 0.5, 1.0})
       {
         corners.push_back(slave.current_point(s, t).x);
         apart = std::max(apart, std::abs(master.project(corners.back()).gap));
       }
-    BoundingBox<2> box(corners);
-    const double   length = corners.front().distance(corners.back());
+    BoundingBox<dim> box(corners);
+    const double     length = corners.front().distance(corners.back());
     box.extend(0.5 * length + apart);
 
     // Crossings eta of h(eta) = (x_s(eta) - x_v) x n_v = 0.
@@ -299,8 +304,8 @@ namespace RingContact
           const unsigned int v = master.segments()[m].vertices[end];
           if (!seen.insert(v).second)
             continue;
-          const Point<2>     xv = master.current_point(m, end).x;
-          const Tensor<1, 2> nv = master.vertex_normal(m, end);
+          const Point<dim>     xv = master.current_point(m, end).x;
+          const Tensor<1, dim> nv = master.vertex_normal(m, end);
           // Newton's method from the middle of the segment: h is linear in
           // eta on a straight slave segment (one step), and a polynomial of
           // the segment's degree on a curved one. A zero slope (the segment
@@ -338,9 +343,9 @@ namespace RingContact
   // original's unknowns.
   double
   ContactPairing::linear_gap_increment(const Vector<double> &solution,
-                                         const unsigned int    slave_segment,
-                                         const double          t,
-                                         const Projection     &projection) const
+                                       const unsigned int    slave_segment,
+                                       const double          t,
+                                       const Projection     &projection) const
   {
     const auto displacement_at = [&](const ContactSurface &surface,
                                      const unsigned int    segment,
@@ -355,13 +360,13 @@ namespace RingContact
                                        (double *)nullptr,
                                        (double *)nullptr,
                                        [&](const unsigned int i) {
-                                         return Tensor<1, 2>(
+                                         return Tensor<1, dim>(
                                            {solution(seg.dofs_x[i]),
                                             solution(seg.dofs_y[i])});
                                        });
-      return Tensor<1, 2>(seg.rotation * Tensor<1, 2>(u.x));
+      return Tensor<1, dim>(seg.rotation * Tensor<1, dim>(u.x));
     };
-    const Tensor<1, 2> jump =
+    const Tensor<1, dim> jump =
       displacement_at(slave, slave_segment, t) -
       displacement_at(master, projection.segment, projection.t);
     // The surfaces hold the reference configuration here.

@@ -5,10 +5,11 @@
 // are both ContactSurfaces: the slave's segments carry the quadrature points
 // and the multipliers, the master's give the partners and the normal. The
 // geometry of a segment is written once, for any number type, in
-// surface_kernel.h; this file is its double path: the Lagrange bases of a
-// segment, the surface built from the mesh's faces (continued by rotated copies
-// under cyclic symmetry), its current state with the vertex normals and a
-// search tree, and the closest-point projection. The contact element
+// surface_kernel.h; this file is its double path (the Lagrange bases of a
+// segment are in lagrange_basis.cc): the surface built from the mesh's
+// faces (continued by rotated copies under cyclic symmetry), its current
+// state with the vertex normals and a search tree, and the closest-point
+// projection. The contact element
 // (contact_assembly.cc) linearises in AD numbers what is computed here, so the
 // two make the same choices: which normal, which partner.
 #include <deal.II/base/quadrature_lib.h>
@@ -17,6 +18,7 @@
 #include <deal.II/physics/transformations.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/contact/contact_surface.h>
 
@@ -31,95 +33,6 @@
 
 namespace RingContact
 {
-  // @sect4{The Lagrange basis of a segment}
-  //
-  // Along a segment, t in [0, 1], the reference geometry interpolates the
-  // mapping's support points, the displacement the face's displacement nodes
-  // and the multiplier its own nodes: three one-dimensional Lagrange bases,
-  // each evaluated as a product of linear factors (contact_surface.h says why
-  // not with deal.II's Polynomial).
-
-  LagrangeBasis1D::LagrangeBasis1D(const std::vector<double> &nodes)
-      : n_nodes(nodes.size())
-  {
-    // At most five nodes (degree 4): the arrays of the allocation-free curve
-    // evaluation below have that size, and the contact element's AD numbers
-    // are sized for displacements of at most that degree (contact_assembly.cc).
-    AssertThrow(nodes.size() <= max_size,
-                ExcMessage("a segment's basis has at most " +
-                           std::to_string(max_size) + " nodes"));
-    // The divisions 1 / (t_i - t_j) are done once, here: evaluating a basis is
-    // then multiplications only.
-    for (unsigned int i = 0; i < n_nodes; ++i)
-      {
-        this->nodes[i] = nodes[i];
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          if (j != i)
-            {
-              AssertThrow(nodes[i] != nodes[j],
-                          ExcMessage("the nodes of a basis must differ"));
-              inverse_differences[i][j] = 1. / (nodes[i] - nodes[j]);
-            }
-      }
-  }
-
-  void
-  LagrangeBasis1D::evaluate(const double         t,
-                            std::vector<double> &values,
-                            std::vector<double> &first,
-                            std::vector<double> &second) const
-  {
-    values.resize(size());
-    first.resize(size());
-    second.resize(size());
-    evaluate(t, values.data(), first.data(), second.data());
-  }
-
-  // Values, first and second derivatives at any t, inside the segment or beyond
-  // it: the projection onto a held partner's extension evaluates the
-  // polynomials from t = -1 to t = 2.
-  void
-  LagrangeBasis1D::evaluate(const double t,
-                            double      *values,
-                            double      *first,
-                            double      *second) const
-  {
-    for (unsigned int i = 0; i < n_nodes; ++i)
-      {
-        // (v, v', v'') of the product so far, times each linear factor
-        // f = (t - t_j) w with f' = w, f'' = 0.
-        double v = 1, d1 = 0, d2 = 0;
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          if (j != i)
-            {
-              const double w = inverse_differences[i][j];
-              const double f = (t - nodes[j]) * w;
-              d2             = d2 * f + 2 * d1 * w;
-              d1             = d1 * f + v * w;
-              v              = v * f;
-            }
-        values[i] = v;
-        first[i]  = d1;
-        second[i] = d2;
-      }
-  }
-
-  // Values alone: the weighted gaps, the multiplier values and the weights w_k
-  // need no derivatives.
-  void
-  LagrangeBasis1D::evaluate(const double t, std::vector<double> &values) const
-  {
-    values.resize(size());
-    for (unsigned int i = 0; i < n_nodes; ++i)
-      {
-        double v = 1;
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          if (j != i)
-            v *= (t - nodes[j]) * inverse_differences[i][j];
-        values[i] = v;
-      }
-  }
-
   // @sect4{Building a contact surface}
   //
   // Every boundary face with the surface's boundary id becomes a segment: its
@@ -176,7 +89,7 @@ namespace RingContact
     // the position t in [0, 1] along the face of each displacement and
     // multiplier node.
     void
-    sort_face_dofs(const FiniteElement<2>                     &fe,
+    sort_face_dofs(const FiniteElement<dim>                   &fe,
                    const std::vector<types::global_dof_index> &face_dofs,
                    SurfaceSegment                             &segment,
                    std::vector<double>                        &u_nodes,
@@ -217,17 +130,17 @@ namespace RingContact
     // surface closes there into one curve.
     void
     number_vertices_by_angle(
-      std::vector<SurfaceSegment>                   &segment_list,
-      const std::function<double(const Point<2> &)> &angle_of_point)
+      std::vector<SurfaceSegment>                     &segment_list,
+      const std::function<double(const Point<dim> &)> &angle_of_point)
     {
       std::vector<std::pair<double, unsigned int>> ends; // angle, 2 s + end
       for (unsigned int s = 0; s < segment_list.size(); ++s)
         for (unsigned int side = 0; side < 2; ++side)
           {
-            const Point<2> x     = side == 0 ?
-                                     segment_list[s].reference_nodes.front() :
-                                     segment_list[s].reference_nodes.back();
-            double         angle = angle_of_point(x);
+            const Point<dim> x     = side == 0 ?
+                                       segment_list[s].reference_nodes.front() :
+                                       segment_list[s].reference_nodes.back();
+            double           angle = angle_of_point(x);
             if (angle > 2 * numbers::PI - 1e-10)
               angle = 0;
             ends.emplace_back(angle, 2 * s + side);
@@ -246,7 +159,7 @@ namespace RingContact
     }
   } // namespace
 
-  ContactSurface::ContactSurface(const DoFHandler<2>     &dof_handler,
+  ContactSurface::ContactSurface(const DoFHandler<dim>   &dof_handler,
                                  const types::boundary_id boundary_id,
                                  const unsigned int       mapping_degree,
                                  const bool               smooth_normals,
@@ -272,7 +185,7 @@ namespace RingContact
             cell->face(f)->boundary_id() == boundary_id)
           {
             const auto                           face = cell->face(f);
-            const FiniteElement<2>              &fe   = cell->get_fe();
+            const FiniteElement<dim>            &fe   = cell->get_fe();
             std::vector<types::global_dof_index> face_dofs(
               fe.n_dofs_per_face());
             face->get_dof_indices(face_dofs, cell->active_fe_index());
@@ -311,7 +224,7 @@ namespace RingContact
             // The vertices are taken as they are, not through the manifold,
             // whose chart would return them to round-off only: adjacent
             // segments share their end points exactly.
-            const Point<2> v0 = face->vertex(0), v1 = face->vertex(1);
+            const Point<dim> v0 = face->vertex(0), v1 = face->vertex(1);
             for (const double t : geometry_nodes)
               segment.reference_nodes.push_back(
                 (t == 0.0) ?
@@ -395,7 +308,7 @@ namespace RingContact
     // The two open ends of the sector's surface: the vertices that only one
     // segment has; `start` at angle 0, `end` at the sector angle.
     std::map<unsigned int, unsigned int> count;
-    std::map<unsigned int, Point<2>>     position;
+    std::map<unsigned int, Point<dim>>   position;
     for (const auto &segment : segment_list)
       for (unsigned int end = 0; end < 2; ++end)
         {
@@ -415,13 +328,13 @@ namespace RingContact
     // other; the sides must be images of each other to 1e-10 of the radius, or
     // the sector's ties would join points that are not images.
     using Physics::Transformations::Rotations::rotation_matrix_2d;
-    const Tensor<2, 2> R_sector = rotation_matrix_2d(sector_angle);
-    unsigned int       start = open_ends[0], end = open_ends[1];
-    if (position[start].distance(Point<2>(R_sector * position[end])) <
-        position[end].distance(Point<2>(R_sector * position[start])))
+    const Tensor<2, dim> R_sector = rotation_matrix_2d(sector_angle);
+    unsigned int         start = open_ends[0], end = open_ends[1];
+    if (position[start].distance(Point<dim>(R_sector * position[end])) <
+        position[end].distance(Point<dim>(R_sector * position[start])))
       std::swap(start, end);
     const double tolerance = 1e-10 * position[start].norm();
-    AssertThrow(position[end].distance(Point<2>(R_sector * position[start])) <
+    AssertThrow(position[end].distance(Point<dim>(R_sector * position[start])) <
                   tolerance,
                 ExcMessage("cyclic symmetry: the ends of the contact surface "
                            "are not images of each other"));
@@ -430,8 +343,8 @@ namespace RingContact
     // in (0, sector_angle).
     // Measured from the start vertex with atan2 of the cross and dot products:
     // the start side is at 0 wherever the mesh puts it.
-    const Point<2> origin         = position[start];
-    const auto     angle_of_point = [&](const Point<2> &x) {
+    const Point<dim> origin         = position[start];
+    const auto       angle_of_point = [&](const Point<dim> &x) {
       const double angle =
         std::atan2(origin[0] * x[1] - origin[1] * x[0], origin * x);
       return angle < 0 ? angle + 2 * numbers::PI : angle;
@@ -471,7 +384,7 @@ namespace RingContact
               segment.is_copy  = true;
               segment.rotation = rotation_matrix_2d(j * sector_angle);
               for (auto &node : segment.reference_nodes)
-                node = Point<2>(segment.rotation * node);
+                node = Point<dim>(segment.rotation * node);
             }
           segment_list.push_back(segment);
         }
@@ -521,15 +434,15 @@ namespace RingContact
 
   // u(t) alone, in the current state: the gaps are computed as a reference part
   // plus the normal jump of this displacement.
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::displacement_at(const unsigned int segment,
                                   const double       t) const
   {
     double N[LagrangeBasis1D::max_size], dN[LagrangeBasis1D::max_size],
       ddN[LagrangeBasis1D::max_size];
     displacement.evaluate(t, N, dN, ddN);
-    const auto  &u = segment_list[segment].nodal_displacements;
-    Tensor<1, 2> value;
+    const auto    &u = segment_list[segment].nodal_displacements;
+    Tensor<1, dim> value;
     for (unsigned int i = 0; i < u.size(); ++i)
       value += N[i] * u[i];
     return value;
@@ -537,7 +450,7 @@ namespace RingContact
 
   // The segment's outward unit normal at a point, from its current tangent: n =
   // o (x'_y, -x'_x) / |x'|, o the orientation fixed at construction.
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::normal(const unsigned int segment,
                          const CurvePoint  &point) const
   {
@@ -549,10 +462,10 @@ namespace RingContact
   // The turn at each shared vertex, from the two segments' own normals there
   // (not the vertex normal, their average). Rotated copies are left out:
   // they repeat the sector's own vertices.
-  std::pair<double, Point<2>>
+  std::pair<double, Point<dim>>
   ContactSurface::sharpest_turn() const
   {
-    std::pair<double, Point<2>> sharpest{0.0, Point<2>()};
+    std::pair<double, Point<dim>> sharpest{0.0, Point<dim>()};
     for (unsigned int s = 0; s < segment_list.size(); ++s)
       for (unsigned int end = 0; end < 2; ++end)
         {
@@ -561,10 +474,10 @@ namespace RingContact
           if (segment.is_copy || neighbour == numbers::invalid_unsigned_int ||
               segment_list[neighbour].is_copy)
             continue;
-          const CurvePoint   here = reference_point(s, end);
-          const Tensor<1, 2> a =
+          const CurvePoint     here = reference_point(s, end);
+          const Tensor<1, dim> a =
             SurfaceKernel::scaled_normal(here.dx, segment.orientation);
-          const Tensor<1, 2> b = SurfaceKernel::scaled_normal(
+          const Tensor<1, dim> b = SurfaceKernel::scaled_normal(
             reference_point(neighbour, segment.neighbour_t[end]).dx,
             segment_list[neighbour].orientation);
           const double angle =
@@ -576,7 +489,7 @@ namespace RingContact
   }
 
   // Not normalised, |x'| n: the weight of the segment in a vertex normal.
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::scaled_normal(const unsigned int segment,
                                 const double       t) const
   {
@@ -584,7 +497,7 @@ namespace RingContact
                                         segment_list[segment].orientation);
   }
 
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::vertex_normal(const unsigned int segment,
                                 const unsigned int end) const
   {
@@ -596,7 +509,7 @@ namespace RingContact
   // vertex sees no jump of its normal and no vertex rule is needed. Not
   // normalised: the projection condition (x - x(t)) x m(t) = 0 takes the
   // direction as it is.
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::smoothed_normal_direction(const unsigned int segment,
                                             const double       t) const
   {
@@ -609,7 +522,7 @@ namespace RingContact
   // (evaluate_partner_and_normal()): the smoothed field, the vertex normal at a
   // vertex, else the segment's own. The two must agree, or the gaps of the
   // active set and those of the residual would differ.
-  Tensor<1, 2>
+  Tensor<1, dim>
   ContactSurface::normal(const Projection &projection) const
   {
     if (smooth_normals)
@@ -625,7 +538,7 @@ namespace RingContact
   }
 
   Projection
-  ContactSurface::project_along_smoothed_normal(const Point<2>    &x,
+  ContactSurface::project_along_smoothed_normal(const Point<dim>  &x,
                                                 const unsigned int segment,
                                                 const double extension) const
   {
@@ -633,9 +546,9 @@ namespace RingContact
     // from the orthogonal projection.
     // The orthogonal projection is a close start: on a straight stretch of the
     // surface, where the vertex normals are the segment's, the two coincide.
-    const Tensor<1, 2> n0 = vertex_normal(segment, 0);
-    const Tensor<1, 2> n1 = vertex_normal(segment, 1);
-    const double       t  = solve_on_segment(
+    const Tensor<1, dim> n0 = vertex_normal(segment, 0);
+    const Tensor<1, dim> n1 = vertex_normal(segment, 1);
+    const double         t  = solve_on_segment(
       project_onto_segment(x, segment, 1.0).t, [&](const double t) {
         const CurvePoint p = current_point(segment, t);
         return SurfaceKernel::smoothed_normal_residual(x - p.x, p, n0, n1, t);
@@ -661,14 +574,14 @@ namespace RingContact
         // own segments the identity.
         for (unsigned int i = 0; i < segment.dofs_x.size(); ++i)
           segment.nodal_displacements[i] =
-            segment.rotation * Tensor<1, 2>({solution(segment.dofs_x[i]),
-                                             solution(segment.dofs_y[i])});
+            segment.rotation * Tensor<1, dim>({solution(segment.dofs_x[i]),
+                                               solution(segment.dofs_y[i])});
         // Box around the current segment: its end points and a few points
         // in between, extended by a margin for the curvature.
-        std::vector<Point<2>> points;
+        std::vector<Point<dim>> points;
         for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0})
           points.push_back(current_point(s, t).x);
-        BoundingBox<2> box(points);
+        BoundingBox<dim> box(points);
         box.extend(0.1 * points.front().distance(points.back()));
         boxes.emplace_back(box, s);
       }
@@ -692,22 +605,22 @@ namespace RingContact
             scaled_normal(s, end),
             has_neighbour ?
                 scaled_normal(neighbour, segment_list[s].neighbour_t[end]) :
-                Tensor<1, 2>(),
+                Tensor<1, dim>(),
             has_neighbour);
         }
   }
 
   Projection
-  ContactSurface::project_onto_segment(const Point<2>    &x,
+  ContactSurface::project_onto_segment(const Point<dim>  &x,
                                        const unsigned int segment,
                                        const double       extension) const
   {
     // Newton on r(t) = (x - x(t)) . x'(t) = 0, from the chord projection.
     // On a straight segment the start is already the answer; on a curved one
     // Newton's method corrects it in a few steps.
-    const Point<2> a = current_point(segment, 0).x;
-    const Point<2> b = current_point(segment, 1).x;
-    const double   t = solve_on_segment(
+    const Point<dim> a = current_point(segment, 0).x;
+    const Point<dim> b = current_point(segment, 1).x;
+    const double     t = solve_on_segment(
       ((x - a) * (b - a)) / (b - a).norm_square(), [&](const double t) {
         const CurvePoint p = current_point(segment, t);
         return SurfaceKernel::closest_point_residual(x - p.x, p);
@@ -720,7 +633,7 @@ namespace RingContact
   // of positions, provisional: ContactInterface replaces it by the reference
   // part plus the displacement jump (gap_of()).
   Projection
-  ContactSurface::finish_projection(const Point<2>    &x,
+  ContactSurface::finish_projection(const Point<dim>  &x,
                                     const unsigned int segment,
                                     double             t,
                                     const double       extension) const
@@ -746,7 +659,8 @@ namespace RingContact
   // wins, and the vertex rule below, decide the pairing and with it which rows
   // the contact element writes.
   Projection
-  ContactSurface::project(const Point<2> &x, const unsigned int preferred) const
+  ContactSurface::project(const Point<dim>  &x,
+                          const unsigned int preferred) const
   {
     namespace bgi = boost::geometry::index;
     std::vector<Box> candidates;
@@ -812,6 +726,16 @@ namespace RingContact
         throw NonFiniteState(what.str());
       }
 
+    return settle_at_vertex(x, best, valid);
+  }
+
+  // The best projection of project() settled where a vertex decides it.
+  Projection
+  ContactSurface::settle_at_vertex(
+    const Point<dim>                                 &x,
+    Projection                                        best,
+    const std::vector<std::pair<Projection, double>> &valid) const
+  {
     // At a vertex (a corner of the faceted surface, or a point sitting on
     // one as slave nodes do on a node-matching interface) the segment normal
     // is not defined: use the vertex normal, so that the result does not
@@ -883,7 +807,7 @@ namespace RingContact
   // meets it, clamped at the end of an open surface. For project(), and for a
   // held partner that has run past its end (ContactPairing::pair_points()).
   Projection
-  ContactSurface::project_onto_vertex(const Point<2>    &x,
+  ContactSurface::project_onto_vertex(const Point<dim>  &x,
                                       const unsigned int segment,
                                       const unsigned int end) const
   {
@@ -901,7 +825,7 @@ namespace RingContact
   // Projection onto a known partner: the pieces of segment-based integration
   // and the partners held by the Newton loop.
   Projection
-  ContactSurface::project_onto(const Point<2>    &x,
+  ContactSurface::project_onto(const Point<dim>  &x,
                                const unsigned int segment) const
   {
     // No clamping: an extension of 100 % of the segment is accepted.
@@ -920,7 +844,7 @@ namespace RingContact
   // order depends on its packing): the master vertices near a slave segment,
   // for the segment-based cuts.
   std::vector<unsigned int>
-  ContactSurface::segments_near(const BoundingBox<2> &box) const
+  ContactSurface::segments_near(const BoundingBox<dim> &box) const
   {
     namespace bgi = boost::geometry::index;
     std::vector<Box> found;

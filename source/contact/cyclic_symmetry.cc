@@ -15,6 +15,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/physics/transformations.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/cyclic_symmetry.h>
 #include <ring_contact/input/parameters.h>
 
@@ -89,16 +90,16 @@ namespace RingContact
     // the same place (the interface nodes are duplicated: the rings are two
     // bodies), so a node is known by its ring and its position.
     std::vector<NodePair>
-    find_node_pairs(const DoFHandler<2>            &dof_handler,
-                    const hp::MappingCollection<2> &mapping,
-                    const double                    sector_angle,
-                    const types::boundary_id        start_side,
-                    const types::boundary_id        end_side)
+    find_node_pairs(const DoFHandler<dim>            &dof_handler,
+                    const hp::MappingCollection<dim> &mapping,
+                    const double                      sector_angle,
+                    const types::boundary_id          start_side,
+                    const types::boundary_id          end_side)
     {
       // The nodes of each side: position, ring, and dof per component.
       struct Node
       {
-        Point<2>                                                      position;
+        Point<dim>                                                    position;
         types::material_id                                            ring;
         std::array<types::global_dof_index, Components::n_components> dofs;
       };
@@ -115,7 +116,7 @@ namespace RingContact
                                          face->boundary_id() != end_side))
               continue;
             auto &nodes = side_nodes[face->boundary_id() == end_side];
-            const FiniteElement<2>              &fe = cell->get_fe();
+            const FiniteElement<dim>            &fe = cell->get_fe();
             std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
             cell->get_dof_indices(dofs);
             // Support points of the cell's dofs that lie on the side: on
@@ -123,16 +124,16 @@ namespace RingContact
             // The sides are straight radial lines: a cell with a face on a side
             // has dofs off it too, and those on the line through the face's
             // vertices are the side's.
-            const Point<2>     a = face->vertex(0), b = face->vertex(1);
-            const Tensor<1, 2> along = (b - a) / (b - a).norm();
+            const Point<dim>     a = face->vertex(0), b = face->vertex(1);
+            const Tensor<1, dim> along = (b - a) / (b - a).norm();
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
                 const unsigned int component =
                   fe.system_to_component_index(i).first;
-                const Point<2> x =
+                const Point<dim> x =
                   mapping[cell->active_fe_index()].transform_unit_to_real_cell(
                     cell, fe.unit_support_point(i));
-                const Tensor<1, 2> d = x - a;
+                const Tensor<1, dim> d = x - a;
                 if (std::abs(d[0] * along[1] - d[1] * along[0]) > tolerance)
                   continue;
                 // A node is met again through its other components and through
@@ -161,7 +162,7 @@ namespace RingContact
           }
 
       // Each end node and the start node it is the image of.
-      const Tensor<2, 2> R =
+      const Tensor<2, dim> R =
         Physics::Transformations::Rotations::rotation_matrix_2d(sector_angle);
       std::vector<NodePair> pairs;
       // Within the same ring, by turning each start node through Phi.
@@ -169,8 +170,8 @@ namespace RingContact
         {
           const Node *image = nullptr;
           for (const Node &start : side_nodes[0])
-            if (start.ring == end.ring &&
-                end.position.distance(Point<2>(R * start.position)) < tolerance)
+            if (start.ring == end.ring && end.position.distance(Point<dim>(
+                                            R * start.position)) < tolerance)
               image = &start;
           // Sides that do not match under the rotation cannot be tied: refused
           // with the reason, rather than tied wrongly.
@@ -213,22 +214,22 @@ namespace RingContact
                     const double                 sector_angle,
                     AffineConstraints<double>   &constraints)
     {
-      const Tensor<2, 2> R =
+      const Tensor<2, dim> R =
         Physics::Transformations::Rotations::rotation_matrix_2d(sector_angle);
       for (const auto &pair : pairs)
         {
           // A node whose displacement is constrained already keeps its
           // constraint: the corners on r = R1 and r = R3 have their imposed
           // values, which satisfy the same relation (the imposed data are
-          // symmetric themselves). In the rings' case, the only problem with a sector,
-          // those corners have both components imposed, so one test serves
-          // both.
+          // symmetric themselves). In the rings' case, the only problem with a
+          // sector, those corners have both components imposed, so one test
+          // serves both.
           if (!constraints.is_constrained(pair.end[0]) &&
               !constraints.is_constrained(pair.end[1]))
-            for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int i = 0; i < dim; ++i)
               {
                 constraints.add_line(pair.end[i]);
-                for (unsigned int j = 0; j < 2; ++j)
+                for (unsigned int j = 0; j < dim; ++j)
                   constraints.add_entry(pair.end[i], pair.start[j], R[i][j]);
               }
           // The multiplier is tied where it is an unknown; on the layer's nodes

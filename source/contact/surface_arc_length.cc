@@ -10,6 +10,7 @@
 // reference curve from that start.
 #include <deal.II/base/quadrature_lib.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/surface_arc_length.h>
 
 #include <algorithm>
@@ -45,7 +46,7 @@ namespace RingContact
     }
 
     // The position of the vertex at which a step enters its segment.
-    Point<2>
+    Point<dim>
     entry_point(const ContactSurface &surface, const Step &step)
     {
       return surface.reference_point(step.first, step.second).x;
@@ -90,9 +91,9 @@ namespace RingContact
     std::vector<Step>
     oriented_open(const ContactSurface &surface, const std::vector<Step> &chain)
     {
-      const Point<2> first     = entry_point(surface, chain.front());
-      const auto    &last_step = chain.back();
-      const Point<2> last =
+      const Point<dim> first     = entry_point(surface, chain.front());
+      const auto      &last_step = chain.back();
+      const Point<dim> last =
         surface.reference_point(last_step.first, 1 - last_step.second).x;
       const bool reverse =
         last[0] < first[0] || (last[0] == first[0] && last[1] < first[1]);
@@ -104,23 +105,23 @@ namespace RingContact
     std::vector<Step>
     oriented_closed(const ContactSurface &surface, std::vector<Step> chain)
     {
-      std::vector<Point<2>> vertices;
+      std::vector<Point<dim>> vertices;
       for (const auto &step : chain)
         vertices.push_back(entry_point(surface, step));
       double area = 0;
       for (unsigned int i = 0; i < vertices.size(); ++i)
         {
-          const Point<2> &p = vertices[i];
-          const Point<2> &q = vertices[(i + 1) % vertices.size()];
+          const Point<dim> &p = vertices[i];
+          const Point<dim> &q = vertices[(i + 1) % vertices.size()];
           area += p[0] * q[1] - q[0] * p[1];
         }
       if (area < 0)
         chain = reversed(chain);
-      Point<2> centre;
+      Point<dim> centre;
       for (const auto &step : chain)
         centre += entry_point(surface, step) / double(chain.size());
       const auto angle = [&](const Step &step) {
-        const Tensor<1, 2> r = entry_point(surface, step) - centre;
+        const Tensor<1, dim> r = entry_point(surface, step) - centre;
         // A vertex on the positive x axis through the centre (node A of
         // the rings) is the start, whatever the round-off of the centre.
         const double a = std::atan2(r[1], r[0]);

@@ -16,6 +16,7 @@
 #include <deal.II/hp/q_collection.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/equilibrium.h>
 
 #include <algorithm>
@@ -76,7 +77,7 @@ namespace RingContact
     // every sum. The bodies share no vertex, so each unknown has one
     // body.
     std::vector<types::material_id>
-    body_of_unknowns(const DoFHandler<2> &dof_handler)
+    body_of_unknowns(const DoFHandler<dim> &dof_handler)
     {
       std::vector<types::material_id>      body(dof_handler.n_dofs(),
                                            numbers::invalid_material_id);
@@ -97,7 +98,7 @@ namespace RingContact
     // The component (0 or 1) of each displacement unknown: the sums are of
     // vectors, one per body.
     std::vector<unsigned int>
-    component_of_unknowns(const DoFHandler<2> &dof_handler)
+    component_of_unknowns(const DoFHandler<dim> &dof_handler)
     {
       std::vector<unsigned int>            component(dof_handler.n_dofs(),
                                           Components::n_components);
@@ -119,9 +120,9 @@ namespace RingContact
     // only): 0 when nothing acts.
     struct Sum
     {
-      Tensor<1, 2> total;
-      double       magnitude = 0;
-      double       round_off = 0;
+      Tensor<1, dim> total;
+      double         magnitude = 0;
+      double         round_off = 0;
 
       void
       add(const unsigned int component, const double value)
@@ -147,7 +148,7 @@ namespace RingContact
 
   Balance
   measure_balance(
-    const DoFHandler<2>                                           &dof_handler,
+    const DoFHandler<dim>                                         &dof_handler,
     const NodalForces                                             &forces,
     const std::vector<std::pair<types::material_id, std::string>> &bodies,
     const std::vector<std::pair<types::material_id, types::material_id>>

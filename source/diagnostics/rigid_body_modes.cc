@@ -25,6 +25,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
 
 #include <algorithm>
@@ -50,7 +51,7 @@ namespace RingContact
       // and w = mode[2] / size, P = X_c + (-a_y, a_x) / w.
       std::string
       describe_mode(const Tensor<1, 3> &mode,
-                    const Point<2>     &centre,
+                    const Point<dim>   &centre,
                     const double        size)
       {
         std::ostringstream what;
@@ -76,7 +77,7 @@ namespace RingContact
       // its supports' constraints on its rigid modes.
       struct Frame
       {
-        Point<2>              centre;
+        Point<dim>            centre;
         double                size;
         SymmetricTensor<2, 3> G;
       };
@@ -86,9 +87,9 @@ namespace RingContact
       // its null space is the free motions, each noted in `log`. The bodies
       // some motion leaves free go into `held_by_contact`.
       std::map<types::material_id, Frame>
-      body_frames(const DoFHandler<2>            &dof_handler,
-                  const hp::MappingCollection<2> &mapping_collection,
-                  const std::vector<Body>        &bodies,
+      body_frames(const DoFHandler<dim>            &dof_handler,
+                  const hp::MappingCollection<dim> &mapping_collection,
+                  const std::vector<Body>          &bodies,
                   const std::vector<types::global_dof_index> &imposed_dofs,
                   const std::vector<NormalDisplacement>      &normal_target,
                   const std::vector<unsigned int>            &normal_component,
@@ -97,8 +98,8 @@ namespace RingContact
       {
         // The reference position of each displacement unknown: where its
         // support acts.
-        std::map<types::material_id, Frame>         frames;
-        std::map<types::global_dof_index, Point<2>> support_points;
+        std::map<types::material_id, Frame>           frames;
+        std::map<types::global_dof_index, Point<dim>> support_points;
         DoFTools::map_dofs_to_support_points(mapping_collection,
                                              dof_handler,
                                              support_points,
@@ -111,7 +112,7 @@ namespace RingContact
         // not give it twice.
         std::set<types::global_dof_index> imposed(imposed_dofs.begin(),
                                                   imposed_dofs.end());
-        std::map<types::global_dof_index, Tensor<1, 2>> normal_at;
+        std::map<types::global_dof_index, Tensor<1, dim>> normal_at;
         for (unsigned int k = 0; k < normal_target.size(); ++k)
           {
             imposed.erase(normal_target[k].dofs[normal_component[k]]);
@@ -120,10 +121,10 @@ namespace RingContact
         for (const Body &body : bodies)
           {
             // The body's extent and centre, to scale the rotation.
-            Point<2>                                       lower, upper;
-            bool                                           first = true;
-            std::vector<std::pair<Point<2>, Tensor<1, 2>>> fixed;
-            std::vector<types::global_dof_index>           dofs;
+            Point<dim>                                         lower, upper;
+            bool                                               first = true;
+            std::vector<std::pair<Point<dim>, Tensor<1, dim>>> fixed;
+            std::vector<types::global_dof_index>               dofs;
             // One pass over the body's cells: its bounding box from the
             // vertices (`first` stays true until both coordinates of the
             // first vertex are in), and its supported directions from the
@@ -133,7 +134,7 @@ namespace RingContact
               if (cell->material_id() == body.material_id)
                 {
                   for (const unsigned int v : cell->vertex_indices())
-                    for (unsigned int d = 0; d < 2; ++d)
+                    for (unsigned int d = 0; d < dim; ++d)
                       {
                         const double x = cell->vertex(v)[d];
                         lower[d]       = first ? x : std::min(lower[d], x);
@@ -151,7 +152,7 @@ namespace RingContact
                       // An imposed component c: e_c . u = 0 for the motion.
                       if (imposed.count(dofs[i]))
                         fixed.emplace_back(support_points.at(dofs[i]),
-                                           Point<2>::unit_vector(c));
+                                           Point<dim>::unit_vector(c));
                       // A normal condition: N . u = 0.
                       if (normal_at.count(dofs[i]))
                         fixed.emplace_back(support_points.at(dofs[i]),
@@ -164,8 +165,8 @@ namespace RingContact
             // The centre of the bounding box, about which the rotation is
             // measured: near the body, so that its column does not mix a
             // large translation into the rotation.
-            const Point<2> centre = 0.5 * (lower + upper);
-            const double   size =
+            const Point<dim> centre = 0.5 * (lower + upper);
+            const double     size =
               std::max(upper[0] - lower[0], upper[1] - lower[1]);
             // G = M^T M, M the rigid modes (translation x, y, rotation scaled
             // by the body's size) along the imposed directions e: its null
@@ -175,10 +176,10 @@ namespace RingContact
             SymmetricTensor<2, 3> G;
             for (const auto &[X, e] : fixed)
               {
-                const Tensor<1, 2> r      = X - centre;
-                const double       row[3] = {e[0],
-                                             e[1],
-                                             (-e[0] * r[1] + e[1] * r[0]) / size};
+                const Tensor<1, dim> r      = X - centre;
+                const double         row[3] = {e[0],
+                                               e[1],
+                                               (-e[0] * r[1] + e[1] * r[0]) / size};
                 for (unsigned int i = 0; i < 3; ++i)
                   for (unsigned int j = i; j < 3; ++j)
                     G[i][j] += row[i] * row[j];
@@ -217,10 +218,10 @@ namespace RingContact
       {
         // n . u(x) of a body's rigid modes, as the row of a support above.
         const auto mode_row = [&](const types::material_id id,
-                                  const Point<2>          &x,
-                                  const Tensor<1, 2>      &n) {
-          const Frame       &frame = frames.at(id);
-          const Tensor<1, 2> r     = x - frame.centre;
+                                  const Point<dim>        &x,
+                                  const Tensor<1, dim>    &n) {
+          const Frame         &frame = frames.at(id);
+          const Tensor<1, dim> r     = x - frame.centre;
           return std::array<double, 3>{
             {n[0], n[1], (-n[0] * r[1] + n[1] * r[0]) / frame.size}};
         };
@@ -259,7 +260,8 @@ namespace RingContact
                     // matter, the row enters H squared. The row is the
                     // relative normal motion: the slave's modes minus the
                     // master's, both evaluated at the same point.
-                    const Tensor<1, 2> n({p.dx[1] / length, -p.dx[0] / length});
+                    const Tensor<1, dim> n(
+                      {p.dx[1] / length, -p.dx[0] / length});
                     std::vector<std::pair<unsigned int, double>> row;
                     const auto a = mode_row(s_id, p.x, n);
                     const auto b = mode_row(m_id, p.x, n);
@@ -347,7 +349,8 @@ namespace RingContact
                 throw std::runtime_error(
                   alone +
                   ": no imposed displacement fixes it, and the frictionless "
-                  "contact, which pushes along its normals only, does not resist "
+                  "contact, which pushes along its normals only, does not "
+                  "resist "
                   "it either; the problem has no unique solution (impose a "
                   "displacement on a boundary of the body that fixes this "
                   "motion)");
@@ -361,8 +364,8 @@ namespace RingContact
     } // namespace
 
     std::set<types::material_id>
-    rigid_body_modes(const DoFHandler<2>                        &dof_handler,
-                     const hp::MappingCollection<2>             &mapping,
+    rigid_body_modes(const DoFHandler<dim>                      &dof_handler,
+                     const hp::MappingCollection<dim>           &mapping,
                      const std::vector<Body>                    &bodies,
                      const std::vector<types::global_dof_index> &imposed_dofs,
                      const std::vector<NormalDisplacement>      &normal,

@@ -8,6 +8,7 @@
 // free to move rigidly", the advice for a singular tangent. The refusal at
 // eps S = 1e-7 (S = 4.5e8) keeps a margin below that, for meshes whose
 // round-off sums over more cells.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/stiffness_spread.h>
 
 #include <algorithm>
@@ -61,8 +62,8 @@ namespace RingContact
     // body (E smallest). A cell's thickness is its area over its longest
     // edge, so a square has a = 1 and a cell L long and h thick a = L / h.
     StiffnessSpread
-    stiffness_spread(const Triangulation<2>  &triangulation,
-                     const std::vector<Body> &bodies)
+    stiffness_spread(const Triangulation<dim> &triangulation,
+                     const std::vector<Body>  &bodies)
     {
       const auto body_of = [&bodies](const types::material_id id) {
         return std::find_if(bodies.begin(), bodies.end(), [id](const Body &b) {

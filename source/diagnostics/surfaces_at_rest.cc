@@ -11,6 +11,7 @@
 // modelisation H with a Q1 outer ring and Mapping degree = 0 failed all 63
 // of its checks without a word. update() pairs the surfaces at `solution`,
 // the unloaded state, before the depth is read.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/surfaces_at_rest.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -36,7 +37,7 @@ namespace RingContact
     {
       contact.update(solution);
       const auto [depth, where] = contact.deepest_interpenetration();
-      const double h = contact.slave_surface().min_segment_length();
+      const double h            = contact.slave_surface().min_segment_length();
       if (!(depth > 1e-4 * h))
         return false;
       log << "Warning: the contact surfaces interpenetrate before any "
@@ -99,21 +100,21 @@ namespace RingContact
       const auto departure         = [](const ContactSurface &surface,
                                 const unsigned int    s,
                                 const double          t) {
-        const auto    &segment = surface.segments()[s];
-        const auto     face    = segment.cell->face(segment.face_no);
-        const Point<2> on_curve =
+        const auto      &segment = surface.segments()[s];
+        const auto       face    = segment.cell->face(segment.face_no);
+        const Point<dim> on_curve =
           face->get_manifold().get_intermediate_point(face->vertex(0),
                                                       face->vertex(1),
                                                       t);
         return on_curve - surface.reference_point(s, t).x;
       };
-      double   worst = 0;
-      Point<2> where;
+      double     worst = 0;
+      Point<dim> where;
       for (unsigned int s = 0; s < slave.segments().size(); ++s)
         if (!slave.segments()[s].is_copy)
           for (const double t : {0.25, 0.5, 0.75})
             {
-              const Point<2>   x = slave.reference_point(s, t).x;
+              const Point<dim> x = slave.reference_point(s, t).x;
               const Projection p = master.project(x);
               if (p.clamped)
                 continue;
@@ -191,8 +192,8 @@ namespace RingContact
       const ContactSurface &master = pointwise.master_surface();
       const QGauss<1>       rule(6);
       std::vector<double>   phi(master.displacement_basis().size());
-      std::map<types::global_dof_index, double>   share;
-      std::map<types::global_dof_index, Point<2>> where;
+      std::map<types::global_dof_index, double>     share;
+      std::map<types::global_dof_index, Point<dim>> where;
       for (unsigned int s = 0; s < master.segments().size(); ++s)
         {
           const SurfaceSegment &segment = master.segments()[s];
@@ -238,9 +239,9 @@ namespace RingContact
           if (e == exact.end() || !(e->second >= 0.99 * median * own_share &&
                                     e->second <= 1.5 * median * own_share))
             continue;
-          const auto   s     = sampled.find(node);
-          const double ratio = (s == sampled.end() ? 0.0 : s->second) /
-                               e->second;
+          const auto   s = sampled.find(node);
+          const double ratio =
+            (s == sampled.end() ? 0.0 : s->second) / e->second;
           ++transfer.n_nodes;
           if (ratio < transfer.lowest)
             {
@@ -289,7 +290,7 @@ namespace RingContact
               master.project(slave.reference_point(s, 0.5).x);
             if (p.segment == numbers::invalid_unsigned_int || p.clamped)
               continue;
-            const Tensor<1, 2> n = slave.scaled_normal(s, 0.5);
+            const Tensor<1, dim> n = slave.scaled_normal(s, 0.5);
             if (!(n * master.normal(p) < -0.5 * n.norm()))
               continue;
             facing.push_back({p.gap, h, h / length(master, p.segment)});
@@ -334,12 +335,12 @@ namespace RingContact
               if (p.segment == numbers::invalid_unsigned_int || p.clamped ||
                   p.at_vertex)
                 continue;
-              const Tensor<1, 2> n = from.scaled_normal(s, end);
+              const Tensor<1, dim> n = from.scaled_normal(s, end);
               if (!(n * onto.normal(p) < -0.5 * n.norm()))
                 continue;
-              const double h = onto.reference_point(p.segment, 0)
-                                 .x.distance(
-                                   onto.reference_point(p.segment, 1).x);
+              const double h =
+                onto.reference_point(p.segment, 0)
+                  .x.distance(onto.reference_point(p.segment, 1).x);
               if (std::min(p.t, 1 - p.t) * h > 1e-6 * x.dx.norm())
                 return false;
             }
@@ -366,11 +367,10 @@ namespace RingContact
                         const types::boundary_id master_id,
                         std::ostream            &log)
     {
-      const double defect =
-        std::max(1 - transfer.lowest, transfer.highest - 1);
+      const double defect = std::max(1 - transfer.lowest, transfer.highest - 1);
       if (conforming || transfer.n_nodes == 0 || !(defect > 1e-3))
         return false;
-      const auto at = [](const Point<2> &x) {
+      const auto at = [](const Point<dim> &x) {
         std::ostringstream text;
         text << "(" << x[0] << ", " << x[1] << ")";
         return text.str();

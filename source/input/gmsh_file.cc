@@ -14,6 +14,7 @@
 // replaced lost 19 of 40 fixed segments of a format-1 file with a low
 // count, crashed on a triangle and read a short element past its end: each
 // of those is now a one-line error that names the file.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/gmsh_process.h>
@@ -541,10 +542,10 @@ namespace RingContact
               int sign = 0;
               for (unsigned int i = 0; i < 4; ++i)
                 {
-                  const Point<2> a     = mesh.nodes.at(e.nodes[i]);
-                  const Point<2> b     = mesh.nodes.at(e.nodes[(i + 1) % 4]);
-                  const Point<2> c     = mesh.nodes.at(e.nodes[(i + 2) % 4]);
-                  const double   cross = (b[0] - a[0]) * (c[1] - b[1]) -
+                  const Point<dim> a     = mesh.nodes.at(e.nodes[i]);
+                  const Point<dim> b     = mesh.nodes.at(e.nodes[(i + 1) % 4]);
+                  const Point<dim> c     = mesh.nodes.at(e.nodes[(i + 2) % 4]);
+                  const double     cross = (b[0] - a[0]) * (c[1] - b[1]) -
                                        (b[1] - a[1]) * (c[0] - b[0]);
                   const double scale = (b - a).norm() * (c - b).norm();
                   const int    s     = cross > 1e-12 * scale  ? 1 :
@@ -623,7 +624,7 @@ namespace RingContact
               fail(filename,
                    "node " + std::to_string(node_tags[i]) +
                      " has a coordinate that is not a finite number");
-            if (!mesh.nodes.emplace(node_tags[i], Point<2>(x, y)).second)
+            if (!mesh.nodes.emplace(node_tags[i], Point<dim>(x, y)).second)
               fail(filename,
                    "node " + std::to_string(node_tags[i]) +
                      " is defined twice");
@@ -781,7 +782,7 @@ namespace RingContact
         check_cells(mesh);
         for (const auto &[tag, xyz] : model.curves)
           {
-            std::vector<Point<2>> points;
+            std::vector<Point<dim>> points;
             for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
               points.emplace_back(xyz[i], xyz[i + 1]);
             mesh.curves.emplace_back(tag, std::move(points));

@@ -11,6 +11,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_mesh.h>
 
@@ -43,9 +44,9 @@ namespace RingContact
       // the middle of its line (a curved quadratic mesh would otherwise be
       // silently straightened).
       void
-      build_triangulation(Triangulation<2> &triangulation,
-                          GmshMesh         &mesh,
-                          const bool        on_circles)
+      build_triangulation(Triangulation<dim> &triangulation,
+                          GmshMesh           &mesh,
+                          const bool          on_circles)
       {
         // The corner nodes become the vertices: gmsh lists an element's corners
         // first at every order, the first two nodes of a line and the first
@@ -59,7 +60,7 @@ namespace RingContact
                i < (element.type == 1 || element.type == 8 ? 2u : 4u);
                ++i)
             vertex_of_node[element.nodes[i]] = 0;
-        std::vector<Point<2>> vertices;
+        std::vector<Point<dim>> vertices;
         mesh.node_of_vertex.clear();
         for (auto &[node, vertex] : vertex_of_node)
           {
@@ -67,8 +68,8 @@ namespace RingContact
             vertices.push_back(mesh.nodes.at(node));
             mesh.node_of_vertex.push_back(node);
           }
-        std::vector<CellData<2>> cells;
-        SubCellData              lines;
+        std::vector<CellData<dim>> cells;
+        SubCellData                lines;
         for (const auto &element : mesh.elements)
           // Quadrilaterals of 4, 9 and 8 nodes (gmsh types 3, 10, 16) are cells
           // of their physical group's material id; lines of 2 and 3 nodes
@@ -77,8 +78,8 @@ namespace RingContact
           if (element.type == 3 || element.type == 10 || element.type == 16)
             {
               // gmsh: corners counterclockwise; deal.II: lexicographic.
-              const auto &n = element.nodes;
-              CellData<2> cell;
+              const auto   &n = element.nodes;
+              CellData<dim> cell;
               cell.vertices    = {vertex_of_node.at(n[0]),
                                   vertex_of_node.at(n[1]),
                                   vertex_of_node.at(n[3]),
@@ -96,9 +97,9 @@ namespace RingContact
               lines.boundary_lines.push_back(segment);
               if (element.type == 8)
                 {
-                  const Point<2> mid   = mesh.nodes.at(n[2]),
-                                 end   = mesh.nodes.at(n[0]),
-                                 other = mesh.nodes.at(n[1]);
+                  const Point<dim> mid   = mesh.nodes.at(n[2]),
+                                   end   = mesh.nodes.at(n[0]),
+                                   other = mesh.nodes.at(n[1]);
                   if (!on_circles && mid.distance(0.5 * (end + other)) >
                                        1e-8 * end.distance(other))
                     throw std::runtime_error(
@@ -157,8 +158,8 @@ namespace RingContact
     // file, the entity and the element. (A tagged line that is no edge of
     // a cell, or an inner edge, is refused by the reader and by deal.II.)
     void
-    check_boundary_tags(const Triangulation<2> &triangulation,
-                        const GmshMesh         &mesh)
+    check_boundary_tags(const Triangulation<dim> &triangulation,
+                        const GmshMesh           &mesh)
     {
       // A line and a face are the same when they join the same two
       // nodes: by node, not by position (the two copies of a contact
@@ -175,7 +176,7 @@ namespace RingContact
         return "element " + std::to_string(e.tag) + " (gmsh entity " +
                std::to_string(e.entity) + ")";
       };
-      const auto near = [](const Point<2> &x) {
+      const auto near = [](const Point<dim> &x) {
         std::ostringstream where;
         where << "(" << x[0] << ", " << x[1] << ")";
         return where.str();
@@ -188,7 +189,7 @@ namespace RingContact
       // says how many there are and where the first is, which tells a whole
       // boundary that the file lacks from a crack of a few faces.
       unsigned int untagged = 0;
-      Point<2>     example;
+      Point<dim>   example;
       for (const auto &face : triangulation.active_face_iterators())
         if (face->at_boundary())
           {
@@ -236,11 +237,11 @@ namespace RingContact
     // read_gmsh_file() runs gmsh's library in a child process and checks what
     // it read (gmsh_file.cc, gmsh_process.cc); here it only becomes cells.
     GmshMesh
-    read_gmsh(Triangulation<2>  &triangulation,
-              const std::string &filename,
-              const GeoNumbers  &geo_numbers,
-              const unsigned int element_order,
-              const bool         on_circles)
+    read_gmsh(Triangulation<dim> &triangulation,
+              const std::string  &filename,
+              const GeoNumbers   &geo_numbers,
+              const unsigned int  element_order,
+              const bool          on_circles)
     {
       GmshMesh mesh = read_gmsh_file(filename, geo_numbers, element_order);
       build_triangulation(triangulation, mesh, on_circles);

@@ -13,6 +13,7 @@
 // an exit(), a hang past the time limit or a Ctrl-C all end the child, and
 // each becomes one line that names the file. The cost is one fork per
 // read, a few milliseconds.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_process.h>
 
@@ -307,6 +308,106 @@ namespace RingContact
         out.value(factor);
       }
 
+      // gmsh started in the child, as by its command line.
+      void
+      start_gmsh(const GeoNumbers &geo_numbers)
+      {
+        // A script's numbers (Mesh/Geo parameters) as gmsh's command
+        // line `-setnumber name value`: gmsh 4.8's API has no other way
+        // to reach a script's DefineConstant[]. %.17g writes a double
+        // that reads back to the same bits.
+        std::vector<std::string> arguments = {"gmsh"};
+        for (const auto &[name, value] : geo_numbers)
+          {
+            char number[64];
+            std::snprintf(number, sizeof(number), "%.17g", value);
+            arguments.insert(arguments.end(), {"-setnumber", name, number});
+          }
+        std::vector<char *> argv;
+        for (auto &argument : arguments)
+          argv.push_back(argument.data());
+        argv.push_back(nullptr);
+        // No configuration file: a user's gmshrc must not change how a
+        // mesh is read. Quiet, errors thrown (not printed, not exit()),
+        // and one thread: under MPI every core has a process already.
+        gmsh::initialize(static_cast<int>(arguments.size()),
+                         argv.data(),
+                         /*readConfigFiles=*/false);
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.AbortOnError", 3); // throw
+        gmsh::option::setNumber("General.NumThreads", 1);
+      }
+
+      // Per entity of the model its dimension, tag, physical groups and
+      // elements by type: the parent checks and assembles them.
+      void
+      write_entities(Writer &out, const gmsh::vectorpair &entities)
+      {
+        for (const auto &[entity_dim, tag] : entities)
+          {
+            std::vector<int> physicals;
+            gmsh::model::getPhysicalGroupsForEntity(entity_dim, tag, physicals);
+            std::vector<int>                      types;
+            std::vector<std::vector<std::size_t>> element_tags, nodes;
+            gmsh::model::mesh::getElements(
+              types, element_tags, nodes, entity_dim, tag);
+            out.value<std::int32_t>(entity_dim);
+            out.value<std::int32_t>(tag);
+            out.vector(physicals);
+            out.vector(types);
+            for (unsigned int t = 0; t < types.size(); ++t)
+              {
+                out.vector(element_tags[t]);
+                out.vector(nodes[t]);
+              }
+          }
+      }
+
+      // The curves of a script's model, sampled for the parent.
+      void
+      write_curves(Writer &out, const gmsh::vectorpair &entities)
+      {
+        // A script's curves as the CAD kernel has them: each sampled at
+        // `curve_samples` points evenly spaced in its parameter
+        // (gmsh::model::getValue), from which the parent recognises a
+        // straight line or a circle and otherwise interpolates
+        // (model_curves.cc): the geometry that refinement and a curved
+        // mapping follow. A mesh file has no CAD: none.
+        std::vector<std::pair<int, std::vector<double>>> curves;
+        for (const auto &[entity_dim, tag] : entities)
+          if (entity_dim == 1)
+            // A curve the kernel cannot evaluate (a discrete or
+            // compound curve) stays straight-sided: the status byte
+            // has gone out, and an error now would lose the mesh.
+            try
+              {
+                std::vector<double> low, high;
+                gmsh::model::getParametrizationBounds(1, tag, low, high);
+                if (low.size() != 1 || high.size() != 1 ||
+                    !std::isfinite(low[0]) || !std::isfinite(high[0]) ||
+                    !(high[0] > low[0]))
+                  continue;
+                std::vector<double> t(curve_samples), xyz;
+                for (unsigned int i = 0; i < curve_samples; ++i)
+                  t[i] =
+                    low[0] + (high[0] - low[0]) * i / (curve_samples - 1.0);
+                gmsh::model::getValue(1, tag, t, xyz);
+                if (xyz.size() == 3 * curve_samples &&
+                    std::all_of(xyz.begin(), xyz.end(), [](double v) {
+                      return std::isfinite(v);
+                    }))
+                  curves.emplace_back(tag, std::move(xyz));
+              }
+            catch (...)
+              {}
+        out.value<std::uint64_t>(curves.size());
+        for (const auto &[tag, xyz] : curves)
+          {
+            out.value<std::int32_t>(tag);
+            out.vector(xyz);
+          }
+      }
+
       // The child: gmsh reads (or meshes) the file and the model is
       // written to `fd`. Never returns.
       [[noreturn]] void
@@ -321,30 +422,7 @@ namespace RingContact
         std::set_terminate(answer_last_error);
         try
           {
-            // A script's numbers (Mesh/Geo parameters) as gmsh's command
-            // line `-setnumber name value`: gmsh 4.8's API has no other way
-            // to reach a script's DefineConstant[]. %.17g writes a double
-            // that reads back to the same bits.
-            std::vector<std::string> arguments = {"gmsh"};
-            for (const auto &[name, value] : geo_numbers)
-              {
-                char number[64];
-                std::snprintf(number, sizeof(number), "%.17g", value);
-                arguments.insert(arguments.end(), {"-setnumber", name, number});
-              }
-            std::vector<char *> argv;
-            for (auto &argument : arguments)
-              argv.push_back(argument.data());
-            argv.push_back(nullptr);
-            // No configuration file: a user's gmshrc must not change how a
-            // mesh is read. Quiet, errors thrown (not printed, not exit()),
-            // and one thread: under MPI every core has a process already.
-            gmsh::initialize(static_cast<int>(arguments.size()),
-                             argv.data(),
-                             /*readConfigFiles=*/false);
-            gmsh::option::setNumber("General.Terminal", 0);
-            gmsh::option::setNumber("General.AbortOnError", 3); // throw
-            gmsh::option::setNumber("General.NumThreads", 1);
+            start_gmsh(geo_numbers);
             const auto stage = [&out](const std::string &what) {
               out.value<std::uint8_t>(stage_marker);
               out.string(what);
@@ -388,64 +466,9 @@ namespace RingContact
             out.vector(node_tags);
             out.vector(coordinates);
             out.value<std::uint64_t>(entities.size());
-            for (const auto &[dim, tag] : entities)
-              {
-                std::vector<int> physicals;
-                gmsh::model::getPhysicalGroupsForEntity(dim, tag, physicals);
-                std::vector<int>                      types;
-                std::vector<std::vector<std::size_t>> element_tags, nodes;
-                gmsh::model::mesh::getElements(
-                  types, element_tags, nodes, dim, tag);
-                out.value<std::int32_t>(dim);
-                out.value<std::int32_t>(tag);
-                out.vector(physicals);
-                out.vector(types);
-                for (unsigned int t = 0; t < types.size(); ++t)
-                  {
-                    out.vector(element_tags[t]);
-                    out.vector(nodes[t]);
-                  }
-              }
-            // A script's curves as the CAD kernel has them: each sampled at
-            // `curve_samples` points evenly spaced in its parameter
-            // (gmsh::model::getValue), from which the parent recognises a
-            // straight line or a circle and otherwise interpolates
-            // (model_curves.cc): the geometry that refinement and a curved
-            // mapping follow. A mesh file has no CAD: none.
-            std::vector<std::pair<int, std::vector<double>>> curves;
-            if (geo)
-              for (const auto &[dim, tag] : entities)
-                if (dim == 1)
-                  // A curve the kernel cannot evaluate (a discrete or
-                  // compound curve) stays straight-sided: the status byte
-                  // has gone out, and an error now would lose the mesh.
-                  try
-                    {
-                      std::vector<double> low, high;
-                      gmsh::model::getParametrizationBounds(1, tag, low, high);
-                      if (low.size() != 1 || high.size() != 1 ||
-                          !std::isfinite(low[0]) || !std::isfinite(high[0]) ||
-                          !(high[0] > low[0]))
-                        continue;
-                      std::vector<double> t(curve_samples), xyz;
-                      for (unsigned int i = 0; i < curve_samples; ++i)
-                        t[i] = low[0] +
-                               (high[0] - low[0]) * i / (curve_samples - 1.0);
-                      gmsh::model::getValue(1, tag, t, xyz);
-                      if (xyz.size() == 3 * curve_samples &&
-                          std::all_of(xyz.begin(), xyz.end(), [](double v) {
-                            return std::isfinite(v);
-                          }))
-                        curves.emplace_back(tag, std::move(xyz));
-                    }
-                  catch (...)
-                    {}
-            out.value<std::uint64_t>(curves.size());
-            for (const auto &[tag, xyz] : curves)
-              {
-                out.value<std::int32_t>(tag);
-                out.vector(xyz);
-              }
+            write_entities(out, entities);
+            // A mesh file has no CAD: no curves (their count, 0, is sent).
+            write_curves(out, geo ? entities : gmsh::vectorpair());
             out.value(end_of_answer);
             _exit(0);
           }
@@ -535,6 +558,57 @@ namespace RingContact
 #endif
       }
 
+      // The child's answer, read from `fd` until the child closes it, while
+      // watching the clock (`timed_out` past the limit, if any) and the stop
+      // flag (`interrupted`): both end the wait at once.
+      std::string
+      read_answer(const int    fd,
+                  const double time_limit_seconds,
+                  bool        &timed_out,
+                  bool        &interrupted)
+      {
+        std::string answer;
+        const auto  start = std::chrono::steady_clock::now();
+        char        buffer[1 << 16];
+        while (true)
+          {
+            const double elapsed = std::chrono::duration<double>(
+                                     std::chrono::steady_clock::now() - start)
+                                     .count();
+            if (time_limit_seconds > 0 && elapsed > time_limit_seconds)
+              {
+                timed_out = true;
+                break;
+              }
+            // Ctrl-C: gmsh (deaf to it) is stopped here, at once, not
+            // when a script that may never end has been meshed.
+            if (stop_signal.load() != 0)
+              {
+                interrupted = true;
+                break;
+              }
+            // At most 200 ms of waiting between looks at the clock and the
+            // stop flag: the limit and a Ctrl-C act within a fifth of a
+            // second, and an idle wait costs nothing.
+            pollfd    wait_for{fd, POLLIN, 0};
+            const int ready = poll(&wait_for, 1, 200);
+            if (ready < 0 && errno != EINTR)
+              break;
+            if (ready <= 0)
+              continue;
+            // 0: the child closed the pipe (it ended); an error other than
+            // an interruption ends the wait too, and the child's status
+            // below says what happened.
+            const ssize_t n = read(fd, buffer, sizeof(buffer));
+            if (n < 0 && (errno == EINTR || errno == EAGAIN))
+              continue;
+            if (n <= 0)
+              break;
+            answer.append(buffer, static_cast<std::size_t>(n));
+          }
+        return answer;
+      }
+
       // The parent's side of the fork: start the child, gather its answer
       // while watching the clock and the stop flag, and turn the way the
       // child ended into a message. The answer is only returned when the
@@ -577,46 +651,9 @@ namespace RingContact
         // when the child has closed its own, by ending.
         close(ends[1]);
 
-        std::string answer;
-        const auto  start     = std::chrono::steady_clock::now();
-        bool        timed_out = false, interrupted = false;
-        char        buffer[1 << 16];
-        while (true)
-          {
-            const double elapsed = std::chrono::duration<double>(
-                                     std::chrono::steady_clock::now() - start)
-                                     .count();
-            if (time_limit_seconds > 0 && elapsed > time_limit_seconds)
-              {
-                timed_out = true;
-                break;
-              }
-            // Ctrl-C: gmsh (deaf to it) is stopped here, at once, not
-            // when a script that may never end has been meshed.
-            if (stop_signal.load() != 0)
-              {
-                interrupted = true;
-                break;
-              }
-            // At most 200 ms of waiting between looks at the clock and the
-            // stop flag: the limit and a Ctrl-C act within a fifth of a
-            // second, and an idle wait costs nothing.
-            pollfd    wait_for{ends[0], POLLIN, 0};
-            const int ready = poll(&wait_for, 1, 200);
-            if (ready < 0 && errno != EINTR)
-              break;
-            if (ready <= 0)
-              continue;
-            // 0: the child closed the pipe (it ended); an error other than
-            // an interruption ends the wait too, and the child's status
-            // below says what happened.
-            const ssize_t n = read(ends[0], buffer, sizeof(buffer));
-            if (n < 0 && (errno == EINTR || errno == EAGAIN))
-              continue;
-            if (n <= 0)
-              break;
-            answer.append(buffer, static_cast<std::size_t>(n));
-          }
+        bool              timed_out = false, interrupted = false;
+        const std::string answer =
+          read_answer(ends[0], time_limit_seconds, timed_out, interrupted);
         // The child is always waited for, killed or not: no zombie is left,
         // and its status is known before anything is reported.
         close(ends[0]);

@@ -21,6 +21,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/model_curves.h>
 
 #include <algorithm>
@@ -39,7 +40,7 @@ namespace RingContact
     // three of them. The tolerances are far below any mesh's chord sag and
     // far above gmsh's evaluation round-off.
     ModelCurve
-    recognise_curve(const int tag, const std::vector<Point<2>> &samples)
+    recognise_curve(const int tag, const std::vector<Point<dim>> &samples)
     {
       ModelCurve curve;
       curve.tag           = tag;
@@ -54,11 +55,11 @@ namespace RingContact
         return curve;
 
       // Straight: every sample on the line through the ends.
-      const Point<2> &a = samples.front(), &b = samples.back();
+      const Point<dim> &a = samples.front(), &b = samples.back();
       if (a.distance(b) > 1e-12 * size)
         {
-          const Tensor<1, 2> d        = (b - a) / (b - a).norm();
-          bool               straight = true;
+          const Tensor<1, dim> d        = (b - a) / (b - a).norm();
+          bool                 straight = true;
           for (const auto &p : samples)
             straight = straight &&
                        std::abs(cross_product_2d(d) * (p - a)) <= 1e-10 * size;
@@ -68,14 +69,14 @@ namespace RingContact
 
       // A circle through three samples a third of the curve apart (a
       // closed curve has its ends on each other).
-      const Point<2> &p = samples[0], &q = samples[n / 3],
-                     &r = samples[(2 * n) / 3];
+      const Point<dim> &p = samples[0], &q = samples[n / 3],
+                       &r = samples[(2 * n) / 3];
       const double d =
         2 * ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
       if (std::abs(d) > 1e-14 * size * size)
         {
-          const double   qq = (q - p).norm_square(), rr = (r - p).norm_square();
-          const Point<2> centre(
+          const double qq = (q - p).norm_square(), rr = (r - p).norm_square();
+          const Point<dim> centre(
             p[0] + ((r[1] - p[1]) * qq - (q[1] - p[1]) * rr) / d,
             p[1] + ((q[0] - p[0]) * rr - (r[0] - p[0]) * qq) / d);
           const double radius = centre.distance(p);
@@ -102,7 +103,7 @@ namespace RingContact
     namespace
     {
       bool
-      is_closed(const std::vector<Point<2>> &samples)
+      is_closed(const std::vector<Point<dim>> &samples)
       {
         return samples.front().distance(samples.back()) <=
                1e-12 * samples.front().distance(samples[samples.size() / 2]);
@@ -110,14 +111,14 @@ namespace RingContact
     } // namespace
 
     SampledCurveManifold::SampledCurveManifold(
-      const std::vector<Point<2>> &samples)
+      const std::vector<Point<dim>> &samples)
         : ChartManifold<2, 2, 1>(is_closed(samples) ? Tensor<1, 1>({1.0}) :
                                                       Tensor<1, 1>())
         , samples(samples)
         , closed(is_closed(samples))
     {}
 
-    std::unique_ptr<Manifold<2, 2>>
+    std::unique_ptr<Manifold<dim, dim>>
     SampledCurveManifold::clone() const
     {
       return std::make_unique<SampledCurveManifold>(samples);
@@ -139,7 +140,7 @@ namespace RingContact
 
     // Catmull-Rom: the tangent at a sample from its two neighbours (per unit
     // of the sample index), one-sided at the ends of an open curve.
-    Tensor<1, 2>
+    Tensor<1, dim>
     SampledCurveManifold::tangent_at_sample(const unsigned int i) const
     {
       const unsigned int last = samples.size() - 1;
@@ -152,18 +153,18 @@ namespace RingContact
       return 0.5 * (samples[i + 1] - samples[i - 1]);
     }
 
-    Point<2>
+    Point<dim>
     SampledCurveManifold::push_forward(const Point<1> &chart_point) const
     {
       const auto [i, s] = locate(chart_point[0]);
       const double s2 = s * s, s3 = s2 * s;
       const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s,
                    h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-      return Point<2>(h00 * samples[i] + h10 * tangent_at_sample(i) +
-                      h01 * samples[i + 1] + h11 * tangent_at_sample(i + 1));
+      return Point<dim>(h00 * samples[i] + h10 * tangent_at_sample(i) +
+                        h01 * samples[i + 1] + h11 * tangent_at_sample(i + 1));
     }
 
-    DerivativeForm<1, 1, 2>
+    DerivativeForm<1, dim - 1, dim>
     SampledCurveManifold::push_forward_gradient(
       const Point<1> &chart_point) const
     {
@@ -171,11 +172,11 @@ namespace RingContact
       const double s2   = s * s;
       const double d00 = 6 * s2 - 6 * s, d10 = 3 * s2 - 4 * s + 1,
                    d01 = -6 * s2 + 6 * s, d11 = 3 * s2 - 2 * s;
-      const Tensor<1, 2> dx_ds = d00 * samples[i] + d10 * tangent_at_sample(i) +
-                                 d01 * samples[i + 1] +
-                                 d11 * tangent_at_sample(i + 1);
-      DerivativeForm<1, 1, 2> gradient;
-      for (unsigned int d = 0; d < 2; ++d)
+      const Tensor<1, dim> dx_ds =
+        d00 * samples[i] + d10 * tangent_at_sample(i) + d01 * samples[i + 1] +
+        d11 * tangent_at_sample(i + 1);
+      DerivativeForm<1, dim - 1, dim> gradient;
+      for (unsigned int d = 0; d < dim; ++d)
         gradient[d][0] = dx_ds[d] * (samples.size() - 1.0);
       return gradient;
     }
@@ -184,7 +185,7 @@ namespace RingContact
     // the closer of the two chords beside it, then Newton on
     // (x(t) - p) . x'(t) = 0.
     Point<1>
-    SampledCurveManifold::pull_back(const Point<2> &space_point) const
+    SampledCurveManifold::pull_back(const Point<dim> &space_point) const
     {
       const unsigned int n_intervals = samples.size() - 1;
       unsigned int       nearest     = 0;
@@ -199,8 +200,8 @@ namespace RingContact
           const int i = static_cast<int>(nearest) + side;
           if (i < 0 || i >= static_cast<int>(n_intervals))
             continue;
-          const Tensor<1, 2> chord = samples[i + 1] - samples[i];
-          const double       s =
+          const Tensor<1, dim> chord = samples[i + 1] - samples[i];
+          const double         s =
             std::clamp((space_point - samples[i]) * chord / chord.norm_square(),
                        0.0,
                        1.0);
@@ -215,11 +216,11 @@ namespace RingContact
       double t = best_t / n_intervals;
       for (unsigned int it = 0; it < 4; ++it)
         {
-          const Point<2>     x = push_forward(Point<1>(t));
-          const auto         g = push_forward_gradient(Point<1>(t));
-          const Tensor<1, 2> dx({g[0][0], g[1][0]});
-          const double       f  = (x - space_point) * dx;
-          const double       df = dx.norm_square();
+          const Point<dim>     x = push_forward(Point<1>(t));
+          const auto           g = push_forward_gradient(Point<1>(t));
+          const Tensor<1, dim> dx({g[0][0], g[1][0]});
+          const double         f  = (x - space_point) * dx;
+          const double         df = dx.norm_square();
           if (df == 0)
             break;
           t -= f / df;
@@ -234,7 +235,7 @@ namespace RingContact
     // (GmshMesh::node_of_vertex). Manifold ids from 1 up are the curves; the
     // cells stay flat (see the top of the file).
     std::vector<ModelCurve>
-    attach_model_curves(Triangulation<2> &triangulation, const GmshMesh &mesh)
+    attach_model_curves(Triangulation<dim> &triangulation, const GmshMesh &mesh)
     {
       std::vector<ModelCurve>           curves;
       std::map<int, types::manifold_id> id_of_entity;
@@ -247,7 +248,7 @@ namespace RingContact
           const types::manifold_id id = 1 + id_of_entity.size();
           id_of_entity[tag]           = id;
           if (curve.kind == ModelCurve::Kind::circle)
-            triangulation.set_manifold(id, PolarManifold<2>(curve.centre));
+            triangulation.set_manifold(id, PolarManifold<dim>(curve.centre));
           else
             triangulation.set_manifold(id, SampledCurveManifold(curve.samples));
         }

@@ -15,6 +15,7 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameter_file.h>
@@ -386,7 +387,7 @@ namespace RingContact
     {
       const auto            xy = Utilities::split_string_list(text);
       std::array<double, 2> point;
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         {
           double value = 0;
           try

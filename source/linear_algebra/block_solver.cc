@@ -14,6 +14,7 @@
 // somewhat less memory (3.1 against MUMPS's 3.6 GB per process at
 // 2560 x 192, validation.md section 7): it is the option for a mesh whose
 // factorization does not fit.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -89,8 +90,8 @@ namespace RingContact
   {}
 
   void
-  BlockSolver::set_kinds(const std::vector<Kind>     &new_kinds,
-                         const std::vector<Point<2>> &new_positions)
+  BlockSolver::set_kinds(const std::vector<Kind>       &new_kinds,
+                         const std::vector<Point<dim>> &new_positions)
   {
     kinds     = new_kinds;
     positions = new_positions;

@@ -15,6 +15,7 @@
 // The assembly's hot path is add_cell(): a cell that needs neither the
 // constraints nor another process goes straight to the places of its
 // entries in the matrix's storage, found once per sparsity pattern.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/linear_algebra/memory_estimate.h>
@@ -117,7 +118,7 @@ namespace RingContact
 
   void
   LinearSystem::set_kinds(const std::vector<BlockSolver::Kind> &kinds,
-                          const std::vector<Point<2>>          &positions)
+                          const std::vector<Point<dim>>        &positions)
   {
     if (block_solver)
       block_solver->set_kinds(kinds, positions);

@@ -11,6 +11,7 @@
 // its tangent is the constant Hooke tensor; the finite-strain laws all
 // tend to it at small H (the Hencky and neo-Hookean tests check this at
 // strains of 1e-7).
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 namespace RingContact
@@ -24,27 +25,27 @@ namespace RingContact
           : c(constants)
       {}
 
-      Tensor<2, 2>
-      stress(const Tensor<2, 2> &H) const override
+      Tensor<2, dim>
+      stress(const Tensor<2, dim> &H) const override
       {
-        const Tensor<2, 2> I   = unit_symmetric_tensor<2>();
-        const Tensor<2, 2> eps = 0.5 * (H + transpose(H));
+        const Tensor<2, dim> I   = unit_symmetric_tensor<dim>();
+        const Tensor<2, dim> eps = 0.5 * (H + transpose(H));
         return c.lambda * trace(eps) * I + 2 * c.mu * eps;
       }
 
       // A_iJkL = lambda d_iJ d_kL + mu (d_ik d_JL + d_iL d_Jk), independent
       // of H: the tangent is the same at every Newton iteration.
       void
-      stress_and_tangent(const Tensor<2, 2> &H,
-                         Tensor<2, 2>       &P,
-                         Tensor<4, 2>       &A) const override
+      stress_and_tangent(const Tensor<2, dim> &H,
+                         Tensor<2, dim>       &P,
+                         Tensor<4, dim>       &A) const override
       {
-        const Tensor<2, 2> I = unit_symmetric_tensor<2>();
-        P                    = stress(H);
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int J = 0; J < 2; ++J)
-            for (unsigned int k = 0; k < 2; ++k)
-              for (unsigned int L = 0; L < 2; ++L)
+        const Tensor<2, dim> I = unit_symmetric_tensor<dim>();
+        P                      = stress(H);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int L = 0; L < dim; ++L)
                 A[i][J][k][L] = c.lambda * I[i][J] * I[k][L] +
                                 c.mu * (I[i][k] * I[J][L] + I[i][L] * I[J][k]);
       }
@@ -52,15 +53,15 @@ namespace RingContact
       // Not P F^T / det F: in a geometrically linear theory the stress is
       // already the Cauchy stress, and applying F to it would add a
       // second-order term that the theory does not have.
-      Tensor<2, 2>
-      cauchy_stress(const Tensor<2, 2> &H) const override
+      Tensor<2, dim>
+      cauchy_stress(const Tensor<2, dim> &H) const override
       {
         return stress(H);
       }
 
       // Plane strain: eps33 = 0, sigma33 = lambda (eps11 + eps22).
       double
-      out_of_plane_stress(const Tensor<2, 2> &H) const override
+      out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
@@ -71,7 +72,7 @@ namespace RingContact
       // stress is already the Cauchy stress: the thinning of plane stress,
       // eps33 = -lambda / (lambda + 2 mu) tr(eps), enters no result.
       double
-      thickness_stretch(const Tensor<2, 2> &) const override
+      thickness_stretch(const Tensor<2, dim> &) const override
       {
         return 1.0;
       }

@@ -36,6 +36,7 @@
 // N = (2 J (cof F - F) + (kappa - 2 J) cof F) / (J kappa), cof F - F
 // written in H.
 // At small strain P -> lambda tr(H) I + mu (H + H^T), linear elasticity.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <cmath>
@@ -51,10 +52,10 @@ namespace RingContact
     // tangent and the out-of-plane quantities.
     struct Invariants
     {
-      explicit Invariants(const Tensor<2, 2> &H)
+      explicit Invariants(const Tensor<2, dim> &H)
       {
-        const Tensor<2, 2> I = unit_symmetric_tensor<2>();
-        F                    = I + H;
+        const Tensor<2, dim> I = unit_symmetric_tensor<dim>();
+        F                      = I + H;
         const double dilatation =
           H[0][0] + H[1][1] + H[0][0] * H[1][1] - H[0][1] * H[1][0];
         J               = 1 + dilatation;
@@ -69,7 +70,7 @@ namespace RingContact
         // at small strain N is O(H), and G - 2 F / kappa would leave it to
         // the round-off of O(1) terms (steel at p = 1e2: a stress noise of
         // 1e-7 of the stress, and Newton stalled there).
-        Tensor<2, 2> cofactor, cofactor_minus_F;
+        Tensor<2, dim> cofactor, cofactor_minus_F;
         cofactor[0][0]         = 1 + H[1][1];
         cofactor[0][1]         = -H[1][0];
         cofactor[1][0]         = -H[0][1];
@@ -106,8 +107,8 @@ namespace RingContact
           }
       }
 
-      Tensor<2, 2> F, G, N;
-      double       J, log_J, kappa, u2, r, w, w_prime;
+      Tensor<2, dim> F, G, N;
+      double         J, log_J, kappa, u2, r, w, w_prime;
     };
 
     // @sect4{The law}
@@ -122,26 +123,26 @@ namespace RingContact
           : c(constants)
       {}
 
-      Tensor<2, 2>
-      stress(const Tensor<2, 2> &H) const override
+      Tensor<2, dim>
+      stress(const Tensor<2, dim> &H) const override
       {
         const Invariants k(H);
         return (c.lambda + c.mu) * k.log_J * k.G + c.mu * k.w * k.N;
       }
 
       void
-      stress_and_tangent(const Tensor<2, 2> &H,
-                         Tensor<2, 2>       &P,
-                         Tensor<4, 2>       &A) const override
+      stress_and_tangent(const Tensor<2, dim> &H,
+                         Tensor<2, dim>       &P,
+                         Tensor<4, dim>       &A) const override
       {
-        const Invariants    k(H);
-        const Tensor<2, 2> &F = k.F, &G = k.G, &N = k.N;
+        const Invariants      k(H);
+        const Tensor<2, dim> &F = k.F, &G = k.G, &N = k.N;
         P = (c.lambda + c.mu) * k.log_J * G + c.mu * k.w * N;
         const double volumetric = c.lambda + c.mu;
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int J = 0; J < 2; ++J)
-            for (unsigned int m = 0; m < 2; ++m)
-              for (unsigned int L = 0; L < 2; ++L)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int m = 0; m < dim; ++m)
+              for (unsigned int L = 0; L < dim; ++L)
                 A[i][J][m][L] =
                   volumetric *
                     (G[m][L] * G[i][J] - k.log_J * G[i][L] * G[m][J]) +
@@ -154,7 +155,7 @@ namespace RingContact
       // Plane strain: T33 = lambda tr(E) = lambda ln J is the Kirchhoff
       // stress tau33 (3 is a principal direction), sigma33 = tau33 / J.
       double
-      out_of_plane_stress(const Tensor<2, 2> &H) const override
+      out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
@@ -164,7 +165,7 @@ namespace RingContact
 
       // Plane stress: F33 = exp(E33), E33 = -lambda / (lambda + 2 mu) ln J.
       double
-      thickness_stretch(const Tensor<2, 2> &H) const override
+      thickness_stretch(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_strain)
           return 1.0;

@@ -11,6 +11,7 @@
 // Cauchy stress and the von Mises stress written to the VTU files.
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <algorithm>
@@ -108,17 +109,17 @@ namespace RingContact
   // in plane strain F33 = 1. Written once here for Saint Venant-Kirchhoff,
   // Hencky and neo-Hookean alike (each had its own copy before); small
   // strain overrides it, its stress being sigma already.
-  Tensor<2, 2>
-  MaterialLaw::cauchy_stress(const Tensor<2, 2> &H) const
+  Tensor<2, dim>
+  MaterialLaw::cauchy_stress(const Tensor<2, dim> &H) const
   {
-    const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+    const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
     return stress(H) * transpose(F) / (determinant(F) * thickness_stretch(H));
   }
 
   // Every law has a state wherever det F > 0, but one: Saint Venant-
   // Kirchhoff in plane stress (saint_venant_kirchhoff.cc) overrides these.
   bool
-  MaterialLaw::in_range(const Tensor<2, 2> &) const
+  MaterialLaw::in_range(const Tensor<2, dim> &) const
   {
     return true;
   }
@@ -139,11 +140,11 @@ namespace RingContact
   // the VTU files showed a von Mises stress of zero beside stresses of
   // 1e-200.
   double
-  Material::von_mises_stress(const Tensor<2, 2> &grad_u) const
+  Material::von_mises_stress(const Tensor<2, dim> &grad_u) const
   {
-    const Tensor<2, 2> s     = cauchy_stress(grad_u);
-    const double       s33   = out_of_plane_stress(grad_u);
-    const double       scale = std::max(
+    const Tensor<2, dim> s     = cauchy_stress(grad_u);
+    const double         s33   = out_of_plane_stress(grad_u);
+    const double         scale = std::max(
       {std::abs(s[0][0]), std::abs(s[1][1]), std::abs(s33), std::abs(s[0][1])});
     if (!(scale > 0))
       return scale; // zero, or not a number

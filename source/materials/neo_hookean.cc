@@ -23,6 +23,7 @@
 // bracket of the root), and the in-plane
 // tangent is condensed: dP/dF2 = dP/dF2|_F33 - dP/dF33 (dP33/dF33)^-1
 // dP33/dF2.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <algorithm>
@@ -42,34 +43,34 @@ namespace RingContact
 
       // P without its tangent: an iterate expected to converge is assembled
       // without the tangent (design.md), and the output needs none.
-      Tensor<2, 2>
-      stress(const Tensor<2, 2> &H) const override
+      Tensor<2, dim>
+      stress(const Tensor<2, dim> &H) const override
       {
-        Tensor<2, 2> P;
+        Tensor<2, dim> P;
         evaluate(H, P, nullptr);
         return P;
       }
 
       void
-      stress_and_tangent(const Tensor<2, 2> &H,
-                         Tensor<2, 2>       &P,
-                         Tensor<4, 2>       &A) const override
+      stress_and_tangent(const Tensor<2, dim> &H,
+                         Tensor<2, dim>       &P,
+                         Tensor<4, dim>       &A) const override
       {
         evaluate(H, P, &A);
       }
 
       // Plane strain: sigma33 = P33 / J = lambda ln J / J.
       double
-      out_of_plane_stress(const Tensor<2, 2> &H) const override
+      out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
         return c.lambda_3d * log_J2(H) /
-               determinant(unit_symmetric_tensor<2>() + H);
+               determinant(unit_symmetric_tensor<dim>() + H);
       }
 
       double
-      thickness_stretch(const Tensor<2, 2> &H) const override
+      thickness_stretch(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_strain)
           return 1.0;
@@ -83,7 +84,7 @@ namespace RingContact
       // round-off of det F ~ 1), a noise in the stress that kept Newton's
       // residual above its tolerance (found by the standing probe).
       static double
-      log_J2(const Tensor<2, 2> &H)
+      log_J2(const Tensor<2, dim> &H)
       {
         return std::log1p(trace(H) + determinant(H));
       }
@@ -99,9 +100,9 @@ namespace RingContact
       // first step (J2 below 1e-150 or so), f / f' is inf / inf, and a
       // step out of the bracket (or not a number) is replaced by bisection.
       double
-      log_plane_stress_stretch(const Tensor<2, 2> &H) const
+      log_plane_stress_stretch(const Tensor<2, dim> &H) const
       {
-        if (!(determinant(unit_symmetric_tensor<2>() + H) > 0))
+        if (!(determinant(unit_symmetric_tensor<dim>() + H) > 0))
           return 0; // an inverted element: rejected by the caller
         const double lnJ2 = log_J2(H);
         const double mu = c.mu, lambda = c.lambda_3d;
@@ -128,18 +129,20 @@ namespace RingContact
       // and in plane stress minus (lambda / F33)^2 Fi_Ji Fi_Lk / (dP33/dF33),
       // dP33/dF33 = mu (1 + 1/F33^2) + lambda (1 - ln J) / F33^2.
       void
-      evaluate(const Tensor<2, 2> &H, Tensor<2, 2> &P, Tensor<4, 2> *A) const
+      evaluate(const Tensor<2, dim> &H,
+               Tensor<2, dim>       &P,
+               Tensor<4, dim>       *A) const
       {
-        const Tensor<2, 2> I      = unit_symmetric_tensor<2>();
-        const Tensor<2, 2> F      = I + H;
-        const Tensor<2, 2> Fi     = invert(F);
-        const Tensor<2, 2> FiT    = transpose(Fi);
-        const double       lnF33  = c.plane == PlaneAssumption::plane_strain ?
-                                      0.0 :
-                                      log_plane_stress_stretch(H);
-        const double       F33    = std::exp(lnF33);
-        const double       lambda = c.lambda_3d;
-        const double       lnJ    = log_J2(H) + lnF33;
+        const Tensor<2, dim> I      = unit_symmetric_tensor<dim>();
+        const Tensor<2, dim> F      = I + H;
+        const Tensor<2, dim> Fi     = invert(F);
+        const Tensor<2, dim> FiT    = transpose(Fi);
+        const double         lnF33  = c.plane == PlaneAssumption::plane_strain ?
+                                        0.0 :
+                                        log_plane_stress_stretch(H);
+        const double         F33    = std::exp(lnF33);
+        const double         lambda = c.lambda_3d;
+        const double         lnJ    = log_J2(H) + lnF33;
         // F - F^-T written in H: H + (I - F^-T) = H + F^-T (F^T - I) =
         // H + F^-T H^T, without the cancellation of F - F^-T at small H.
         P = c.mu * (H + FiT * transpose(H)) + lambda * lnJ * FiT;
@@ -150,10 +153,10 @@ namespace RingContact
             0.0 :
             (lambda / F33) * (lambda / F33) /
               (c.mu * (1 + 1 / (F33 * F33)) + lambda * (1 - lnJ) / (F33 * F33));
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int J = 0; J < 2; ++J)
-            for (unsigned int k = 0; k < 2; ++k)
-              for (unsigned int L = 0; L < 2; ++L)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int L = 0; L < dim; ++L)
                 (*A)[i][J][k][L] =
                   c.mu * I[i][k] * I[J][L] +
                   (lambda - condensed) * FiT[i][J] * FiT[k][L] +

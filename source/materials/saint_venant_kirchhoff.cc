@@ -19,6 +19,7 @@
 // over E33 is at the bound F33 = 0, where S33 is not zero): the state is
 // outside the law (in_range()), rejected by the Newton iteration as an
 // inverted one; F33 was its square root, a NaN in the Cauchy stress.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <cmath>
@@ -34,8 +35,8 @@ namespace RingContact
     // E = (F^T F - I) / 2 written in H = Grad u: F^T F - I loses the digits
     // of small strains (at |H| = 1e-7 it keeps 9 of 16, and Newton stalled
     // at a relative residual of 1e-9 on steel at p = 1e4).
-    Tensor<2, 2>
-    green_lagrange(const Tensor<2, 2> &H)
+    Tensor<2, dim>
+    green_lagrange(const Tensor<2, dim> &H)
     {
       return 0.5 * (H + transpose(H) + transpose(H) * H);
     }
@@ -49,13 +50,13 @@ namespace RingContact
 
       // P = F S: the stress conjugate to Grad u in the reference
       // configuration, which is where the bulk is integrated.
-      Tensor<2, 2>
-      stress(const Tensor<2, 2> &H) const override
+      Tensor<2, dim>
+      stress(const Tensor<2, dim> &H) const override
       {
-        const Tensor<2, 2> I = unit_symmetric_tensor<2>();
-        const Tensor<2, 2> F = I + H;
-        const Tensor<2, 2> E = green_lagrange(H);
-        const Tensor<2, 2> S = c.lambda * trace(E) * I + 2 * c.mu * E;
+        const Tensor<2, dim> I = unit_symmetric_tensor<dim>();
+        const Tensor<2, dim> F = I + H;
+        const Tensor<2, dim> E = green_lagrange(H);
+        const Tensor<2, dim> S = c.lambda * trace(E) * I + 2 * c.mu * E;
         return F * S;
       }
 
@@ -64,20 +65,20 @@ namespace RingContact
       //        = delta_ik S_LJ + lambda F_iJ F_kL + mu F_iL F_kJ
       //          + mu (F F^T)_ik delta_JL.
       void
-      stress_and_tangent(const Tensor<2, 2> &H,
-                         Tensor<2, 2>       &P,
-                         Tensor<4, 2>       &A) const override
+      stress_and_tangent(const Tensor<2, dim> &H,
+                         Tensor<2, dim>       &P,
+                         Tensor<4, dim>       &A) const override
       {
-        const Tensor<2, 2> I   = unit_symmetric_tensor<2>();
-        const Tensor<2, 2> F   = I + H;
-        const Tensor<2, 2> E   = green_lagrange(H);
-        const Tensor<2, 2> S   = c.lambda * trace(E) * I + 2 * c.mu * E;
-        const Tensor<2, 2> FFt = F * transpose(F);
-        P                      = F * S;
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int J = 0; J < 2; ++J)
-            for (unsigned int k = 0; k < 2; ++k)
-              for (unsigned int L = 0; L < 2; ++L)
+        const Tensor<2, dim> I   = unit_symmetric_tensor<dim>();
+        const Tensor<2, dim> F   = I + H;
+        const Tensor<2, dim> E   = green_lagrange(H);
+        const Tensor<2, dim> S   = c.lambda * trace(E) * I + 2 * c.mu * E;
+        const Tensor<2, dim> FFt = F * transpose(F);
+        P                        = F * S;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int L = 0; L < dim; ++L)
                 A[i][J][k][L] =
                   I[i][k] * S[L][J] + c.lambda * F[i][J] * F[k][L] +
                   c.mu * F[i][L] * F[k][J] + c.mu * FFt[i][k] * I[J][L];
@@ -86,16 +87,16 @@ namespace RingContact
       // Plane strain: E33 = 0, S33 = lambda (E11 + E22), F33 = 1, so
       // sigma33 = S33 / det F.
       double
-      out_of_plane_stress(const Tensor<2, 2> &H) const override
+      out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
-        const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+        const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
         return c.lambda_3d * trace(green_lagrange(H)) / determinant(F);
       }
 
       double
-      thickness_stretch(const Tensor<2, 2> &H) const override
+      thickness_stretch(const Tensor<2, dim> &H) const override
       {
         if (c.plane == PlaneAssumption::plane_strain)
           return 1.0;
@@ -111,7 +112,7 @@ namespace RingContact
       }
 
       bool
-      in_range(const Tensor<2, 2> &H) const override
+      in_range(const Tensor<2, dim> &H) const override
       {
         return c.plane == PlaneAssumption::plane_strain ||
                thickness_stretch_squared(H) > 0;
@@ -140,7 +141,7 @@ namespace RingContact
       // S33 = 0: E33 = -lambda/(lambda + 2 mu) (E11 + E22) (3d lambda),
       // and F33^2 = 1 + 2 E33.
       double
-      thickness_stretch_squared(const Tensor<2, 2> &H) const
+      thickness_stretch_squared(const Tensor<2, dim> &H) const
       {
         const double E33 =
           -c.lambda_3d / (c.lambda_3d + 2 * c.mu) * trace(green_lagrange(H));

@@ -27,6 +27,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/output/output_folder.h>
@@ -49,14 +50,14 @@ namespace RingContact
     // vertex to its second. The mapping places them, curved where the
     // geometry is, in the cell's interior as well (the polar manifold
     // curves every cell of a ring, not only those on its boundary).
-    Quadrature<2>
+    Quadrature<dim>
     patch_points(const unsigned int n)
     {
-      std::vector<Point<2>> points;
+      std::vector<Point<dim>> points;
       for (unsigned int j = 0; j <= n; ++j)
         for (unsigned int i = 0; i <= n; ++i)
           points.emplace_back(double(i) / n, double(j) / n);
-      return Quadrature<2>(points);
+      return Quadrature<dim>(points);
     }
 
     Quadrature<1>
@@ -116,8 +117,8 @@ namespace RingContact
     // physical group of a gmsh model, constant on the cell. Under MPI the
     // cells of the process's subdomain alone.
     VtuGrid
-    bulk_grid(const DoFHandler<2>                    &dof_handler,
-              const hp::MappingCollection<2>         &mapping,
+    bulk_grid(const DoFHandler<dim>                  &dof_handler,
+              const hp::MappingCollection<dim>       &mapping,
               const Vector<double>                   &solution,
               const std::map<unsigned int, Material> &materials,
               const unsigned int                      n,
@@ -134,20 +135,20 @@ namespace RingContact
       auto &von_mises    = grid.point_data[2].values;
       auto &material_id  = grid.point_data[3].values;
 
-      hp::FEValues<2>                  hp_values(mapping,
-                                dof_handler.get_fe_collection(),
-                                hp::QCollection<2>(patch_points(n)),
-                                update_values | update_gradients |
-                                  update_quadrature_points);
+      hp::FEValues<dim>                hp_values(mapping,
+                                  dof_handler.get_fe_collection(),
+                                  hp::QCollection<dim>(patch_points(n)),
+                                  update_values | update_gradients |
+                                    update_quadrature_points);
       const FEValuesExtractors::Vector u(Components::ux);
-      std::vector<Tensor<1, 2>>        values;
-      std::vector<Tensor<2, 2>>        gradients;
+      std::vector<Tensor<1, dim>>      values;
+      std::vector<Tensor<2, dim>>      gradients;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           if (n_pieces > 1 && cell->subdomain_id() != piece)
             continue;
           hp_values.reinit(cell);
-          const FEValues<2> &v = hp_values.get_present_fe_values();
+          const FEValues<dim> &v = hp_values.get_present_fe_values();
           values.resize(v.n_quadrature_points);
           gradients.resize(v.n_quadrature_points);
           v[u].get_function_values(solution, values);
@@ -156,7 +157,7 @@ namespace RingContact
           const std::int64_t first    = grid.n_points();
           for (unsigned int q = 0; q < v.n_quadrature_points; ++q)
             {
-              const Point<2> x = v.quadrature_point(q);
+              const Point<dim> x = v.quadrature_point(q);
               grid.points.values.insert(grid.points.values.end(),
                                         {x[0], x[1], 0});
               displacement.insert(displacement.end(),
@@ -175,7 +176,7 @@ namespace RingContact
                 }
               else
                 {
-                  const Tensor<2, 2> s = material.cauchy_stress(gradients[q]);
+                  const Tensor<2, dim> s = material.cauchy_stress(gradients[q]);
                   stress.insert(
                     stress.end(),
                     {s[0][0], s[0][1], 0, s[1][0], s[1][1], 0, 0, 0, 0});
@@ -209,8 +210,8 @@ namespace RingContact
     // slave cells.
     VtuGrid
     slave_surface_grid(
-      const DoFHandler<2>                        &dof_handler,
-      const hp::MappingCollection<2>             &mapping,
+      const DoFHandler<dim>                      &dof_handler,
+      const hp::MappingCollection<dim>           &mapping,
       const Vector<double>                       &solution,
       const std::vector<VtuWriter::SurfaceField> &surface_fields,
       const std::vector<VtuWriter::SlaveFace>    &faces,
@@ -223,19 +224,19 @@ namespace RingContact
       for (const auto &field : surface_fields)
         grid.point_data.push_back({field.name, 1});
 
-      hp::FEFaceValues<2>              hp_values(mapping,
-                                    dof_handler.get_fe_collection(),
-                                    hp::QCollection<1>(segment_points(n)),
-                                    update_values | update_quadrature_points);
+      hp::FEFaceValues<dim>            hp_values(mapping,
+                                      dof_handler.get_fe_collection(),
+                                      hp::QCollection<1>(segment_points(n)),
+                                      update_values | update_quadrature_points);
       const FEValuesExtractors::Vector u(Components::ux);
       const FEValuesExtractors::Scalar pressure(Components::multiplier);
       const FEValuesExtractors::Scalar traction(Components::tangential);
-      std::vector<Tensor<1, 2>>        displacement(n + 1);
+      std::vector<Tensor<1, dim>>      displacement(n + 1);
       std::vector<double>              scalar(n + 1);
       for (const auto &face : faces)
         {
           hp_values.reinit(face.cell, face.face_no);
-          const FEFaceValues<2> &v = hp_values.get_present_fe_values();
+          const FEFaceValues<dim> &v = hp_values.get_present_fe_values();
           v[u].get_function_values(solution, displacement);
           // The face's points in the chain's direction; its first is the
           // last of the face before, but at a chain's start.
@@ -247,10 +248,10 @@ namespace RingContact
             static_cast<std::int64_t>(grid.n_points()) - first_new;
           for (unsigned int k = first_new; k <= n; ++k)
             {
-              const Point<2> x = v.quadrature_point(point(k));
+              const Point<dim> x = v.quadrature_point(point(k));
               grid.points.values.insert(grid.points.values.end(),
                                         {x[0], x[1], 0});
-              const Tensor<1, 2> &d = displacement[point(k)];
+              const Tensor<1, dim> &d = displacement[point(k)];
               grid.point_data[0].values.insert(grid.point_data[0].values.end(),
                                                {d[0], d[1], 0});
             }
@@ -316,8 +317,8 @@ namespace RingContact
   // Any process's failure is every process's: write() is collective, and
   // a process that threw alone would leave the others waiting.
   void
-  VtuWriter::write(const DoFHandler<2>                    &dof_handler,
-                   const hp::MappingCollection<2>         &mapping,
+  VtuWriter::write(const DoFHandler<dim>                  &dof_handler,
+                   const hp::MappingCollection<dim>       &mapping,
                    const Vector<double>                   &solution,
                    const std::vector<SurfaceField>        &surface_fields,
                    const std::map<unsigned int, Material> &materials,
@@ -430,13 +431,13 @@ namespace RingContact
   // length, and the .pvd that lists them.
   void
   VtuWriter::write_slave_surface(
-    const DoFHandler<2>             &dof_handler,
-    const hp::MappingCollection<2>  &mapping,
-    const Vector<double>            &solution,
-    const std::vector<SurfaceField> &surface_fields,
-    const std::vector<SlaveFace>    &slave_faces,
-    const unsigned int               step,
-    const double                     time)
+    const DoFHandler<dim>            &dof_handler,
+    const hp::MappingCollection<dim> &mapping,
+    const Vector<double>             &solution,
+    const std::vector<SurfaceField>  &surface_fields,
+    const std::vector<SlaveFace>     &slave_faces,
+    const unsigned int                step,
+    const double                      time)
   {
     VtuGrid surface = slave_surface_grid(dof_handler,
                                          mapping,

@@ -16,6 +16,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -48,9 +49,9 @@ namespace RingContact
     geometry.layout.resize(fe_collection.size());
     for (unsigned int k = 0; k < fe_collection.size(); ++k)
       {
-        const FiniteElement<2> &fe     = fe_collection[k];
-        auto                   &layout = geometry.layout[k];
-        layout.n_q_points              = q_collection[k].size();
+        const FiniteElement<dim> &fe     = fe_collection[k];
+        auto                     &layout = geometry.layout[k];
+        layout.n_q_points                = q_collection[k].size();
         layout.component.resize(fe.n_dofs_per_cell());
         layout.u_dofs.clear();
         layout.base.clear();
@@ -69,10 +70,10 @@ namespace RingContact
     // Through each body's mapping: on curved rings (mapping degree 2 and
     // more) the reference geometry is the polar manifold's, not the
     // straight cells'.
-    hp::FEValues<2> hp_fe_values(mapping_collection,
-                                 fe_collection,
-                                 q_collection,
-                                 update_gradients | update_JxW_values);
+    hp::FEValues<dim> hp_fe_values(mapping_collection,
+                                   fe_collection,
+                                   q_collection,
+                                   update_gradients | update_JxW_values);
     geometry.start.assign(triangulation.n_active_cells(), {0, 0});
     geometry.JxW.clear();
     geometry.gradients.clear();
@@ -83,8 +84,8 @@ namespace RingContact
         if (cell->subdomain_id() != this_process)
           continue;
         hp_fe_values.reinit(cell);
-        const FEValues<2> &fe_values = hp_fe_values.get_present_fe_values();
-        const auto        &layout    = geometry.layout[cell->active_fe_index()];
+        const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+        const auto          &layout = geometry.layout[cell->active_fe_index()];
         geometry.start[cell->active_cell_index()] = {geometry.JxW.size(),
                                                      geometry.gradients.size()};
         for (unsigned int q = 0; q < layout.n_q_points; ++q)
@@ -213,7 +214,7 @@ namespace RingContact
           Utilities::MPI::min(static_cast<unsigned int>(outside_law_body),
                               communicator);
         for (const BoundaryLoad &load : boundary_loads)
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int d = 0; d < dim; ++d)
             applied_resultant[load.boundary_id][d] =
               Utilities::MPI::sum(applied_resultant[load.boundary_id][d],
                                   communicator);
@@ -284,16 +285,16 @@ namespace RingContact
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
-    std::vector<Tensor<2, 2>>            grad_u;
-    std::vector<Tensor<1, 2>>            grad_phi;
+    std::vector<Tensor<2, dim>>          grad_u;
+    std::vector<Tensor<1, dim>>          grad_phi;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (cell->subdomain_id() != this_process)
           continue;
-        const FiniteElement<2> &fe       = cell->get_fe();
-        const unsigned int      n        = fe.n_dofs_per_cell();
-        const Material         &material = materials.at(cell->material_id());
+        const FiniteElement<dim> &fe       = cell->get_fe();
+        const unsigned int        n        = fe.n_dofs_per_cell();
+        const Material           &material = materials.at(cell->material_id());
         const auto &layout = reference_geometry.layout[cell->active_fe_index()];
         const auto &u_dofs = layout.u_dofs;
         const auto &component         = layout.component;
@@ -301,8 +302,8 @@ namespace RingContact
         // This cell's stored values: JxW per point, and the gradient of
         // scalar function k at point q at gradients[q * n_bases + k].
         const auto start = reference_geometry.start[cell->active_cell_index()];
-        const double       *JxW_values = &reference_geometry.JxW[start.first];
-        const Tensor<1, 2> *gradients =
+        const double         *JxW_values = &reference_geometry.JxW[start.first];
+        const Tensor<1, dim> *gradients =
           &reference_geometry.gradients[start.second];
         cell_matrix.reinit(n, n);
         cell_rhs.reinit(n);
@@ -314,7 +315,7 @@ namespace RingContact
         // what FEValues' get_function_gradients() gave after a reinit(),
         // without either.
         grad_phi.resize(u_dofs.size());
-        grad_u.assign(n_q_points, Tensor<2, 2>());
+        grad_u.assign(n_q_points, Tensor<2, dim>());
         for (unsigned int q = 0; q < n_q_points; ++q)
           for (unsigned int a = 0; a < u_dofs.size(); ++a)
             grad_u[q][component[u_dofs[a]]] +=
@@ -332,7 +333,7 @@ namespace RingContact
             // std::min() skips a NaN, and min_det_F, still its initial
             // max(), would have been reported as "det F = 1.79769e+308 <= 0".
             const double det_F =
-              determinant(unit_symmetric_tensor<2>() + grad_u[q]);
+              determinant(unit_symmetric_tensor<dim>() + grad_u[q]);
             min_det_F = std::min(min_det_F, det_F);
             if (!(det_F > 0))
               {
@@ -345,8 +346,8 @@ namespace RingContact
               continue;
             // Without the tangent the law gives the stress alone, and no
             // cell matrix is formed.
-            Tensor<2, 2> P;
-            Tensor<4, 2> A;
+            Tensor<2, dim> P;
+            Tensor<4, dim> A;
             if (tangent)
               material.stress_and_tangent(grad_u[q], P, A);
             else
@@ -363,10 +364,10 @@ namespace RingContact
                   continue;
                 // A_cJdL grad_phi_a[J], for each d and L: contracted once
                 // per a, it leaves a 2 x 2 product per entry (a, b).
-                Tensor<2, 2> Ag;
-                for (unsigned int J = 0; J < 2; ++J)
-                  for (unsigned int d = 0; d < 2; ++d)
-                    for (unsigned int L = 0; L < 2; ++L)
+                Tensor<2, dim> Ag;
+                for (unsigned int J = 0; J < dim; ++J)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    for (unsigned int L = 0; L < dim; ++L)
                       Ag[d][L] += grad_phi[a][J] * A[c][J][d][L];
                 // The upper triangle: the laws are hyperelastic, A_cJdL =
                 // A_dLcJ, and the bulk's tangent is symmetric.
@@ -403,7 +404,7 @@ namespace RingContact
   // body of the smallest material id is named.
   bool
   ContactProblem::outside_law(const Material          &material,
-                              const Tensor<2, 2>      &grad_u,
+                              const Tensor<2, dim>    &grad_u,
                               const types::material_id body)
   {
     if (material.in_range(grad_u))
@@ -507,8 +508,8 @@ namespace RingContact
     // cof(G) = det(G) G^-T, in two dimensions [[G11, -G10], [-G01, G00]]:
     // linear in G, so that cof(I + Grad u) = I + cof(Grad u) and its
     // derivative along phi_j is cof(Grad phi_j), exactly.
-    const auto cofactor = [](const Tensor<2, 2> &G) {
-      Tensor<2, 2> C;
+    const auto cofactor = [](const Tensor<2, dim> &G) {
+      Tensor<2, dim> C;
       C[0][0] = G[1][1];
       C[0][1] = -G[1][0];
       C[1][0] = -G[0][1];
@@ -521,15 +522,15 @@ namespace RingContact
     hp::QCollection<1> face_q;
     for (unsigned int i = 0; i < q_collection.size(); ++i)
       face_q.push_back(QGauss<1>(fe_collection[i].degree + 1));
-    hp::FEFaceValues<2>                  hp_face_values(mapping_collection,
-                                       fe_collection,
-                                       face_q,
-                                       update_values | update_gradients |
-                                         update_normal_vectors |
-                                         update_quadrature_points |
-                                         update_JxW_values);
+    hp::FEFaceValues<dim>                hp_face_values(mapping_collection,
+                                         fe_collection,
+                                         face_q,
+                                         update_values | update_gradients |
+                                           update_normal_vectors |
+                                           update_quadrature_points |
+                                           update_JxW_values);
     std::vector<types::global_dof_index> dofs;
-    std::vector<Tensor<2, 2>>            grad_u;
+    std::vector<Tensor<2, dim>>          grad_u;
     FullMatrix<double>                   face_matrix;
     Vector<double>                       face_rhs;
     for (const BoundaryLoad &load : boundary_loads)
@@ -540,10 +541,10 @@ namespace RingContact
               cell->face(f)->boundary_id() == load.boundary_id)
             {
               hp_face_values.reinit(cell, f);
-              const FEFaceValues<2> &fv =
+              const FEFaceValues<dim> &fv =
                 hp_face_values.get_present_fe_values();
-              const FiniteElement<2> &fe = cell->get_fe();
-              const unsigned int      n  = fe.n_dofs_per_cell();
+              const FiniteElement<dim> &fe = cell->get_fe();
+              const unsigned int        n  = fe.n_dofs_per_cell();
               const bool pressure = load.type == BoundaryLoad::Type::pressure;
               // Each body's kinematics: a body in finite (or logarithmic)
               // strain carries the pressure on its current surface.
@@ -560,24 +561,24 @@ namespace RingContact
               fv[displacement].get_function_gradients(solution, grad_u);
               for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
                 {
-                  const Tensor<1, 2> value =
+                  const Tensor<1, dim> value =
                     load.value(fv.quadrature_point(q), current_load);
                   // A pressure load's value is p in its first component; a
                   // traction's is the vector t itself.
-                  const double       p  = value[0];
-                  const Tensor<1, 2> N  = fv.normal_vector(q);
-                  const double       dA = fv.JxW(q);
+                  const double         p  = value[0];
+                  const Tensor<1, dim> N  = fv.normal_vector(q);
+                  const double         dA = fv.JxW(q);
                   // The force per unit of the face's measure, times dA.
-                  const Tensor<1, 2> force =
+                  const Tensor<1, dim> force =
                     pressure ?
-                      Tensor<1, 2>(
+                      Tensor<1, dim>(
                         -p *
                         ((follower ?
-                            cofactor(unit_symmetric_tensor<2>() + grad_u[q]) :
-                            Tensor<2, 2>(unit_symmetric_tensor<2>())) *
+                            cofactor(unit_symmetric_tensor<dim>() + grad_u[q]) :
+                            Tensor<2, dim>(unit_symmetric_tensor<dim>())) *
                          N) *
                         dA) :
-                      Tensor<1, 2>(value * dA);
+                      Tensor<1, dim>(value * dA);
                   // The integral of the load over its boundary, for the
                   // scenario's resultant checks.
                   applied_resultant[load.boundary_id] += force;
@@ -598,7 +599,7 @@ namespace RingContact
                           if (!Components::is_displacement(d))
                             continue;
                           // Grad phi_j = e_d (x) grad(phi_j): its row d.
-                          Tensor<2, 2> G;
+                          Tensor<2, dim> G;
                           G[d] = fv.shape_grad(j, q);
                           face_matrix(i, j) += p * fv.shape_value(i, q) *
                                                (cofactor(G) * N)[c] * dA;

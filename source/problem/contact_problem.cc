@@ -10,6 +10,7 @@
 // it to disk before the next step starts.
 #include <deal.II/base/timer.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
 #include <ring_contact/problem/load_stepper.h>
@@ -23,8 +24,8 @@ namespace RingContact
   // Everything the problem is made of comes from the scenario, which the
   // parameter file names (the rings of doc/intro.md, the patch test, or a
   // general problem written in the file): the bodies with their materials,
-  // the boundary loads and the load program. The constructor only stores them; the mesh
-  // and the unknowns are made by run() (setup.cc).
+  // the boundary loads and the load program. The constructor only stores them;
+  // the mesh and the unknowns are made by run() (setup.cc).
   ContactProblem::ContactProblem(const Parameters        &parameters,
                                  const IntegrationScheme &scheme,
                                  std::ostream            &log,
@@ -42,7 +43,7 @@ namespace RingContact
       // Adaptive refinement (refinement.cc) keeps neighbouring cells within
       // one level at every vertex, so that a refined patch grades into the
       // mesh around it; uniform refinement is unaffected.
-      , triangulation(Triangulation<2>::limit_level_difference_at_vertices)
+      , triangulation(Triangulation<dim>::limit_level_difference_at_vertices)
       , dof_handler(triangulation)
       , displacement(0)
       , current_load{0, 0}

@@ -6,6 +6,7 @@
 // before the first step, and what the scenarios read of the state
 // (SolutionState): the contact nodes, the reported pressure, the nodal
 // forces.
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/contact/surface_arc_length.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
@@ -188,7 +189,7 @@ namespace RingContact
   // point is found. A point farther from every node than a slave segment
   // is refused by the scenario before the first step.
   types::global_dof_index
-  ContactProblem::contact_node_nearest_to(const Point<2> &point) const
+  ContactProblem::contact_node_nearest_to(const Point<dim> &point) const
   {
     double                  best = std::numeric_limits<double>::infinity();
     types::global_dof_index node = numbers::invalid_dof_index;

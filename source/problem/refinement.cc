@@ -43,6 +43,7 @@
 #include <deal.II/numerics/solution_transfer.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -66,7 +67,7 @@ namespace RingContact
     // reused once coarsening frees them, its place is not.
     using FaceKey = std::array<double, 4>;
     FaceKey
-    key_of(const Triangulation<2>::face_iterator &face)
+    key_of(const Triangulation<dim>::face_iterator &face)
     {
       return {{face->vertex(0)[0],
                face->vertex(0)[1],
@@ -84,7 +85,7 @@ namespace RingContact
     };
 
     std::vector<FacePoint>
-    multiplier_face_points(const FiniteElement<2> &fe)
+    multiplier_face_points(const FiniteElement<dim> &fe)
     {
       std::vector<FacePoint> points;
       for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
@@ -148,10 +149,10 @@ namespace RingContact
 
     // The multipliers of `u` on face f of a slave layer's cell.
     FaceValues
-    face_multipliers(const DoFHandler<2>::active_cell_iterator &cell,
-                     const unsigned int                         f,
-                     const std::vector<FacePoint>              &points,
-                     const Vector<double>                      &u)
+    face_multipliers(const DoFHandler<dim>::active_cell_iterator &cell,
+                     const unsigned int                           f,
+                     const std::vector<FacePoint>                &points,
+                     const Vector<double>                        &u)
     {
       const auto                          &fe = cell->get_fe();
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -170,8 +171,8 @@ namespace RingContact
     // Which half of its parent face a child cell's face f is: the cell's
     // face is the parent's face f's child 0 or 1.
     unsigned int
-    half_of_parent_face(const Triangulation<2>::cell_iterator &cell,
-                        const unsigned int                     f)
+    half_of_parent_face(const Triangulation<dim>::cell_iterator &cell,
+                        const unsigned int                       f)
     {
       const auto parent_face = cell->parent()->face(f);
       return parent_face->child(0) == cell->face(f) ? 0 : 1;
@@ -196,7 +197,7 @@ namespace RingContact
         return cell->refine_flag_set() ? length / 2 : length;
       };
       const auto refine =
-        [&](const Triangulation<2>::active_cell_iterator &cell) {
+        [&](const Triangulation<dim>::active_cell_iterator &cell) {
           if (!cell->refine_flag_set() &&
               cell->level() < static_cast<int>(maximum_level))
             cell->set_refine_flag();
@@ -212,9 +213,9 @@ namespace RingContact
               const auto &master_segment = master_segments[m];
               if (master_segment.is_copy)
                 continue;
-              const Triangulation<2>::active_cell_iterator slave =
+              const Triangulation<dim>::active_cell_iterator slave =
                 slave_segment.cell;
-              const Triangulation<2>::active_cell_iterator master =
+              const Triangulation<dim>::active_cell_iterator master =
                 master_segment.cell;
               slave->clear_coarsen_flag();
               master->clear_coarsen_flag();
@@ -240,11 +241,11 @@ namespace RingContact
     // or back, cell by cell: the same FE_Q(p) for each component. The two
     // handlers share the mesh and walk its active cells in one order.
     void
-    copy_displacement(const DoFHandler<2> &problem_dofs,
-                      const DoFHandler<2> &displacement_dofs,
-                      Vector<double>      &u,
-                      Vector<double>      &v,
-                      const bool           to)
+    copy_displacement(const DoFHandler<dim> &problem_dofs,
+                      const DoFHandler<dim> &displacement_dofs,
+                      Vector<double>        &u,
+                      Vector<double>        &v,
+                      const bool             to)
     {
       std::vector<types::global_dof_index> dofs, u_dofs;
       auto other = displacement_dofs.begin_active();
@@ -288,7 +289,7 @@ namespace RingContact
     // that coarsening makes active again finds its own.
     using FaceRecord = std::map<FaceKey, FaceValues>;
     FaceRecord
-    record_multipliers(const DoFHandler<2>                &dof_handler,
+    record_multipliers(const DoFHandler<dim>              &dof_handler,
                        const std::set<types::boundary_id> &slave_ids,
                        const Vector<double>               &u)
     {
@@ -303,8 +304,8 @@ namespace RingContact
               record[key_of(cell->face(f))] = values;
               // Up the ancestors: t on this face is (half + t) / 2 on its
               // parent's, and so on up.
-              Triangulation<2>::cell_iterator c  = cell;
-              double                          lo = 0, hi = 1;
+              Triangulation<dim>::cell_iterator c  = cell;
+              double                            lo = 0, hi = 1;
               while (c->level() > 0)
                 {
                   const unsigned int half = half_of_parent_face(c, f);
@@ -325,7 +326,7 @@ namespace RingContact
     // a face's own values, or its nearest recorded ancestor's interpolated
     // where the face lies on it.
     void
-    restore_multipliers(const DoFHandler<2>                &dof_handler,
+    restore_multipliers(const DoFHandler<dim>              &dof_handler,
                         const std::set<types::boundary_id> &slave_ids,
                         const FaceRecord                   &record,
                         Vector<double>                     &u)
@@ -341,8 +342,8 @@ namespace RingContact
               face_dofs.resize(fe.n_dofs_per_face());
               cell->face(f)->get_dof_indices(face_dofs,
                                              cell->active_fe_index());
-              Triangulation<2>::cell_iterator c  = cell;
-              double                          lo = 0, hi = 1;
+              Triangulation<dim>::cell_iterator c  = cell;
+              double                            lo = 0, hi = 1;
               while (record.count(key_of(c->face(f))) == 0)
                 {
                   Assert(c->level() > 0, ExcInternalError());
@@ -363,6 +364,51 @@ namespace RingContact
                     ++k;
                   }
             }
+    }
+
+    // Contact weighted: the error that matters is the contact's. A cell's
+    // error reaches the contact pressure through the dual solution of a
+    // functional on the contact zone, whose second derivatives (which
+    // weigh the cell's residual) fall like 1 / r^2 away from a zone of
+    // length l: each indicator is weighed by (l / (l + d))^2, d the
+    // distance from the cell to the nearest active slave face. Hertz
+    // (a = R / 30, 11 cycles of 5 %): the pressure's L2 error 0.15 % with
+    // 25 000 unknowns, against 0.28 % unweighted (doc/validation.md).
+    // The faces in contact: a multiplier above 1e-8 of the largest (an open
+    // node's multiplier is zero up to the linear solver's round-off, which
+    // differs between one process and several).
+    void
+    weigh_by_distance_from_contact(
+      const Triangulation<dim>                                  &triangulation,
+      const std::vector<std::tuple<Point<dim>, double, double>> &slave_faces,
+      Vector<float>                                             &indicator)
+    {
+      double largest = 0;
+      for (const auto &face : slave_faces)
+        largest = std::max(largest, std::get<2>(face));
+      std::vector<Point<dim>> active_points;
+      double                  active_length = 0;
+      for (const auto &[center, length, multiplier] : slave_faces)
+        if (multiplier > 1e-8 * largest)
+          {
+            active_points.push_back(center);
+            active_length += length;
+          }
+      if (!active_points.empty())
+        {
+          const auto tree = pack_rtree(active_points);
+          for (const auto &cell : triangulation.active_cell_iterators())
+            {
+              std::vector<Point<dim>> nearest;
+              tree.query(boost::geometry::index::nearest(cell->center(), 1),
+                         std::back_inserter(nearest));
+              const double d = std::max(0.0,
+                                        nearest[0].distance(cell->center()) -
+                                          cell->diameter() / 2);
+              indicator[cell->active_cell_index()] *=
+                Utilities::fixed_power<2>(active_length / (active_length + d));
+            }
+        }
     }
 
   } // namespace
@@ -394,37 +440,37 @@ namespace RingContact
     unsigned int mapping_degree = 1;
     for (const Body &body : bodies)
       mapping_degree = std::max(mapping_degree, body.mapping_degree);
-    KellyErrorEstimator<2>::estimate(MappingQ<2>(mapping_degree),
-                                     dof_handler,
-                                     face_quadrature,
-                                     {},
-                                     solution,
-                                     indicator,
-                                     Components::displacement_mask());
+    KellyErrorEstimator<dim>::estimate(MappingQ<dim>(mapping_degree),
+                                       dof_handler,
+                                       face_quadrature,
+                                       {},
+                                       solution,
+                                       indicator,
+                                       Components::displacement_mask());
     if (parameters.refinement.estimator == RefinementEstimator::kelly)
       return indicator;
 
-    const auto          slave_ids = slave_boundaries(parameters);
-    const bool          friction  = parameters.contact.friction_coefficient > 0;
-    hp::FEFaceValues<2> face_values(mapping_collection,
-                                    fe_collection,
-                                    face_quadrature,
-                                    update_values | update_gradients |
-                                      update_normal_vectors |
-                                      update_JxW_values);
+    const auto slave_ids = slave_boundaries(parameters);
+    const bool friction  = parameters.contact.friction_coefficient > 0;
+    hp::FEFaceValues<dim>            face_values(mapping_collection,
+                                      fe_collection,
+                                      face_quadrature,
+                                      update_values | update_gradients |
+                                        update_normal_vectors |
+                                        update_JxW_values);
     const FEValuesExtractors::Scalar pressure(Components::multiplier);
-    std::vector<Tensor<2, 2>>        grad_u;
+    std::vector<Tensor<2, dim>>      grad_u;
     std::vector<double>              lambda;
     struct Slope
     {
-      Tensor<1, 2> slope;
-      unsigned int cell;
-      double       length, E;
+      Tensor<1, dim> slope;
+      unsigned int   cell;
+      double         length, E;
     };
     std::map<unsigned int, std::vector<Slope>> slopes;
     // The slave faces with their largest |multiplier|, for the weight of
-    // 'Contact weighted' below.
-    std::vector<std::tuple<Point<2>, double, double>> slave_faces;
+    // 'Contact weighted' (weigh_by_distance_from_contact()).
+    std::vector<std::tuple<Point<dim>, double, double>> slave_faces;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
@@ -441,13 +487,13 @@ namespace RingContact
             double     sum    = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
-                const Tensor<1, 2> N = fv.normal_vector(q);
-                Tensor<2, 2>       F = unit_symmetric_tensor<2>();
+                const Tensor<1, dim> N = fv.normal_vector(q);
+                Tensor<2, dim>       F = unit_symmetric_tensor<dim>();
                 F += grad_u[q];
                 // cof(F) = det(F) F^-T; the reference normal in small strain.
-                const Tensor<1, 2> area =
+                const Tensor<1, dim> area =
                   linear ? N : determinant(F) * transpose(invert(F)) * N;
-                Tensor<1, 2> residual =
+                Tensor<1, dim> residual =
                   material.stress(grad_u[q]) * N + lambda[q] * area;
                 if (friction)
                   residual =
@@ -471,8 +517,8 @@ namespace RingContact
             const auto       points = multiplier_face_points(cell->get_fe());
             const FaceValues values =
               face_multipliers(cell, f, points, solution);
-            const Tensor<1, 2> along  = face->vertex(1) - face->vertex(0);
-            const double       length = along.norm();
+            const Tensor<1, dim> along  = face->vertex(1) - face->vertex(0);
+            const double         length = along.norm();
             for (unsigned int end = 0; end < 2; ++end)
               slopes[face->vertex_index(end)].push_back(
                 {derivative(values, points, Components::multiplier, end) /
@@ -494,46 +540,9 @@ namespace RingContact
                                             jump / (end.E * end.E));
             }
         }
-    // Contact weighted: the error that matters is the contact's. A cell's
-    // error reaches the contact pressure through the dual solution of a
-    // functional on the contact zone, whose second derivatives (which
-    // weigh the cell's residual) fall like 1 / r^2 away from a zone of
-    // length l: each indicator is weighed by (l / (l + d))^2, d the
-    // distance from the cell to the nearest active slave face. Hertz
-    // (a = R / 30, 11 cycles of 5 %): the pressure's L2 error 0.15 % with
-    // 25 000 unknowns, against 0.28 % unweighted (doc/validation.md).
-    // The faces in contact: a multiplier above 1e-8 of the largest (an open
-    // node's multiplier is zero up to the linear solver's round-off, which
-    // differs between one process and several).
-    double largest = 0;
-    for (const auto &face : slave_faces)
-      largest = std::max(largest, std::get<2>(face));
-    std::vector<Point<2>> active_points;
-    double                active_length = 0;
-    for (const auto &[center, length, multiplier] : slave_faces)
-      if (multiplier > 1e-8 * largest)
-        {
-          active_points.push_back(center);
-          active_length += length;
-        }
     if (parameters.refinement.estimator ==
-          RefinementEstimator::contact_weighted &&
-        !active_points.empty())
-      {
-        const auto tree = pack_rtree(active_points);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          {
-            std::vector<Point<2>> nearest;
-            tree.query(boost::geometry::index::nearest(cell->center(), 1),
-                       std::back_inserter(nearest));
-            const double d =
-              std::max(0.0,
-                       nearest[0].distance(cell->center()) -
-                         cell->diameter() / 2);
-            indicator[cell->active_cell_index()] *=
-              Utilities::fixed_power<2>(active_length / (active_length + d));
-          }
-      }
+        RefinementEstimator::contact_weighted)
+      weigh_by_distance_from_contact(triangulation, slave_faces, indicator);
     return indicator;
   }
 
@@ -564,11 +573,11 @@ namespace RingContact
 
     // The displacement on a DoFHandler of its own: one FE_Q(p)^2 per body,
     // each cell the element of its body.
-    hp::FECollection<2> displacement_fe;
+    hp::FECollection<dim> displacement_fe;
     for (const Body &body : bodies)
-      displacement_fe.push_back(FESystem<2>(FE_Q<2>(body.degree), 2));
-    DoFHandler<2> displacement_dofs(triangulation);
-    const auto    set_bodies = [&]() {
+      displacement_fe.push_back(FESystem<dim>(FE_Q<dim>(body.degree), 2));
+    DoFHandler<dim> displacement_dofs(triangulation);
+    const auto      set_bodies = [&]() {
       for (const auto &cell : displacement_dofs.active_cell_iterators())
         cell->set_active_fe_index(fe_index_of.at(cell->material_id()));
       displacement_dofs.distribute_dofs(displacement_fe);

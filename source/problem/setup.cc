@@ -18,6 +18,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
 
@@ -128,7 +129,7 @@ namespace RingContact
     DynamicSparsityPattern graph;
     GridTools::get_face_connectivity_of_cells(triangulation, graph);
     std::vector<unsigned int> weights(triangulation.n_active_cells(), 1);
-    using FaceCentre = std::pair<Point<2>, unsigned int>; // centre, cell
+    using FaceCentre = std::pair<Point<dim>, unsigned int>; // centre, cell
     for (const auto &[slave, master] : parameters.contact_pairs())
       {
         std::vector<FaceCentre> slave_faces, master_faces;
@@ -210,37 +211,37 @@ namespace RingContact
       // The tangential traction: as the pressure with friction; without,
       // FE_Nothing, which adds no unknown. A frictionless run then has the
       // same unknowns, numbering and digits as before friction existed.
-      const std::unique_ptr<FiniteElement<2>> tangential =
+      const std::unique_ptr<FiniteElement<dim>> tangential =
         parameters.contact.friction_coefficient > 0 ?
-           std::unique_ptr<FiniteElement<2>>(
-            std::make_unique<FE_Q<2>>(fe.multiplier_degree)) :
-           std::make_unique<FE_Nothing<2>>();
+           std::unique_ptr<FiniteElement<dim>>(
+            std::make_unique<FE_Q<dim>>(fe.multiplier_degree)) :
+           std::make_unique<FE_Nothing<dim>>();
       // The multiplier's degree q is at most the slave's displacement
       // degree (the scenario checks it): a linear multiplier against
       // quadratic displacements satisfies the inf-sup (LBB) condition,
       // where a multiplier as rich as a quadratic slave's displacement
       // would not.
       if (layer)
-        fe_collection.push_back(FESystem<2>(FE_Q<2>(degree),
-                                            2,
-                                            FE_Q<2>(fe.multiplier_degree),
-                                            1,
-                                            *tangential,
-                                            1));
+        fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree),
+                                              2,
+                                              FE_Q<dim>(fe.multiplier_degree),
+                                              1,
+                                              *tangential,
+                                              1));
       else
-        fe_collection.push_back(FESystem<2>(
-          FE_Q<2>(degree), 2, FE_Nothing<2>(), 1, FE_Nothing<2>(), 1));
+        fe_collection.push_back(FESystem<dim>(
+          FE_Q<dim>(degree), 2, FE_Nothing<dim>(), 1, FE_Nothing<dim>(), 1));
       // (p+1) x (p+1) Gauss points are the full rule; p x p is
       // the reduced integration of modelisation H (Code_Aster's
       // C_PLAN_SI: 2 x 2 points on Q2), whose zero-energy modes the test
       // reduced_integration looks at. The layer takes its body's rule and
       // mapping: it is part of that body, only its multiplier differs.
       q_collection.push_back(
-        QGauss<2>(fe.reduced_integration ? degree : degree + 1));
+        QGauss<dim>(fe.reduced_integration ? degree : degree + 1));
       // One mapping per body: with Mapping degree = 0 each body takes its
       // displacement degree, a linear ring faceted and a quadratic one
       // curved, as the original's meshes are.
-      mapping_collection.push_back(MappingQ<2>(body.mapping_degree));
+      mapping_collection.push_back(MappingQ<dim>(body.mapping_degree));
       body_of_fe_index.push_back(fe_index_of.at(body.material_id));
     };
     for (const Body &body : bodies)
@@ -350,12 +351,12 @@ namespace RingContact
         // The reference position of each displacement unknown, through
         // the bodies' mappings; the multipliers keep the origin, which the
         // preconditioner does not read.
-        std::map<types::global_dof_index, Point<2>> support_points;
+        std::map<types::global_dof_index, Point<dim>> support_points;
         DoFTools::map_dofs_to_support_points(mapping_collection,
                                              dof_handler,
                                              support_points,
                                              Components::displacement_mask());
-        std::vector<Point<2>> positions(dof_handler.n_dofs());
+        std::vector<Point<dim>> positions(dof_handler.n_dofs());
         for (const auto &[i, point] : support_points)
           positions[i] = point;
         system->set_kinds(kinds, positions);

@@ -9,6 +9,7 @@
 // here and each scenario passes its reference. A general problem, whose
 // references are expressions given per check, has its own quantities
 // (scenarios/general/quantities.cc).
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/reference_pressure.h>
 
 #include <cmath>
@@ -57,7 +58,7 @@ namespace RingContact
 
     void
     report(const SolutionState     &state,
-           const Point<2>          &probe,
+           const Point<dim>        &probe,
            const double             reference,
            const PressureMeasure    measure,
            std::vector<NamedValue> &into)
@@ -221,7 +222,7 @@ namespace RingContact
 
     void
     report(const SolutionState     &state,
-           const Point<2>          &probe,
+           const Point<dim>        &probe,
            std::vector<NamedValue> &into)
     {
       const auto node = state.contact_node_nearest_to(probe);

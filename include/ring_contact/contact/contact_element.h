@@ -12,9 +12,10 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_pairing.h>
-#include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/contact/surface_kernel.h>
+#include <ring_contact/linear_algebra/linear_system.h>
 
 #include <array>
 #include <functional>
@@ -126,7 +127,7 @@ namespace RingContact
     {
     public:
       using ADPoint  = SurfaceKernel::CurvePoint<AD>;
-      using ADVector = Tensor<1, 2, AD>;
+      using ADVector = Tensor<1, dim, AD>;
 
       /// The layout's unknowns must fit the AD numbers' capacity.
       explicit ContactElement(const ElementLayout &layout)

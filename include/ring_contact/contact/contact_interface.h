@@ -48,6 +48,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/active_set.h>
 #include <ring_contact/contact/contact_pairing.h>
 #include <ring_contact/contact/contact_surface.h>
@@ -70,7 +71,7 @@ namespace RingContact
     /// continued by rotated copies, and the two multiplier nodes of a pair
     /// of `sector.multiplier_twins` are one contact node (the end one is
     /// tied to the start one by the constraints).
-    ContactInterface(const DoFHandler<2>          &dof_handler,
+    ContactInterface(const DoFHandler<dim>        &dof_handler,
                      const ContactParameters      &parameters,
                      const IntegrationScheme      &scheme,
                      const unsigned int            slave_mapping_degree,
@@ -198,8 +199,8 @@ namespace RingContact
     /// The multiplier dof at the slave vertex nearest to a reference point
     /// (and, if asked, its distance from the point).
     types::global_dof_index
-    multiplier_dof_nearest_to(const Point<2> &point,
-                              double         *distance = nullptr) const;
+    multiplier_dof_nearest_to(const Point<dim> &point,
+                              double           *distance = nullptr) const;
 
     /// Current over reference length of the slave surface at a multiplier
     /// node (average over the segments that share it): converts the Cauchy
@@ -215,7 +216,7 @@ namespace RingContact
     /// The deepest interpenetration of the surfaces at the last update():
     /// the most negative mean gap g~_k / w_k over the multiplier nodes
     /// (a depth >= 0; 0 when none is negative), and that node's position.
-    std::pair<double, Point<2>>
+    std::pair<double, Point<dim>>
     deepest_interpenetration() const;
 
     /// sqrt(int (p_h - p_ref)^2) / sqrt(int p_ref^2) over the slave surface,

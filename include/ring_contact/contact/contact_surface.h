@@ -17,11 +17,13 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/surface_kernel.h>
 #include <ring_contact/input/parameters.h>
 
 #include <array>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace RingContact
@@ -82,12 +84,12 @@ namespace RingContact
   /// One boundary face of a contact surface.
   struct SurfaceSegment
   {
-    DoFHandler<2>::active_cell_iterator cell;
-    unsigned int                        face_no;
+    DoFHandler<dim>::active_cell_iterator cell;
+    unsigned int                          face_no;
     /// Global vertex indices at t = 0 and t = 1.
     std::array<unsigned int, 2> vertices;
     /// Reference positions of the mapping's support points on the face.
-    std::vector<Point<2>> reference_nodes;
+    std::vector<Point<dim>> reference_nodes;
     /// Displacement dofs (x and y) at the displacement nodes of the face.
     std::vector<types::global_dof_index> dofs_x, dofs_y;
     /// Multiplier dofs at the multiplier nodes (slave surface only).
@@ -100,11 +102,11 @@ namespace RingContact
     /// Cyclic symmetry: a rotated copy of a segment of the sector carries
     /// the original's unknowns turned by this rotation (identity for the
     /// segments of the mesh itself): x = R (X + u).
-    Tensor<2, 2> rotation = unit_symmetric_tensor<2>();
+    Tensor<2, dim> rotation = unit_symmetric_tensor<dim>();
     /// True for a rotated copy.
     bool is_copy = false;
     /// Current nodal displacements R u (set by ContactSurface::update()).
-    std::vector<Tensor<1, 2>> nodal_displacements;
+    std::vector<Tensor<1, dim>> nodal_displacements;
     /// The segments that share the vertex at t = 0 and t = 1 (invalid at
     /// the end of an open surface), and the vertex's parameter on them.
     std::array<unsigned int, 2> neighbours = {
@@ -140,7 +142,7 @@ namespace RingContact
     /// window_after) from the sector's start side; the copies share the
     /// originals' unknowns. A surface that closes the circle is one closed
     /// curve.
-    ContactSurface(const DoFHandler<2>     &dof_handler,
+    ContactSurface(const DoFHandler<dim>   &dof_handler,
                    const types::boundary_id boundary_id,
                    const unsigned int       mapping_degree,
                    const bool               smooth_normals = false,
@@ -203,31 +205,31 @@ namespace RingContact
 
     /// The displacement at parameter t of a segment (the current state of
     /// update()), apart from the reference position.
-    Tensor<1, 2>
+    Tensor<1, dim>
     displacement_at(const unsigned int segment, const double t) const;
 
     /// Outward unit normal of a segment at a current-configuration point.
-    Tensor<1, 2>
+    Tensor<1, dim>
     normal(const unsigned int segment, const CurvePoint &point) const;
 
     /// Outward unit normal at a projection: the segment's, the vertex
     /// normal when the projection is at a vertex, the smoothed normal when
     /// normals are smoothed.
-    Tensor<1, 2>
+    Tensor<1, dim>
     normal(const Projection &projection) const;
 
     /// Outward normal scaled by |dx/dt|: orientation (dx_y, -dx_x).
-    Tensor<1, 2>
+    Tensor<1, dim>
     scaled_normal(const unsigned int segment, const double t) const;
 
     /// Unit vertex normal at the end `end` (0 or 1) of a segment: the
     /// length-weighted average of the normals of the segments there.
-    Tensor<1, 2>
+    Tensor<1, dim>
     vertex_normal(const unsigned int segment, const unsigned int end) const;
 
     /// Smoothed normal field (the original's LISSAGE): the vertex normals
     /// interpolated linearly along the segment, not normalised.
-    Tensor<1, 2>
+    Tensor<1, dim>
     smoothed_normal_direction(const unsigned int segment, const double t) const;
 
     /// True if this surface uses the smoothed normal field.
@@ -243,26 +245,36 @@ namespace RingContact
     /// projection stays on it or close to it, so that a point sitting on a
     /// vertex is not paired back and forth between its two segments.
     Projection
-    project(const Point<2>    &x,
+    project(const Point<dim>  &x,
             const unsigned int preferred = numbers::invalid_unsigned_int) const;
 
     /// Projection onto a given segment, whatever the others: orthogonal
     /// (or along the smoothed normal field), not clamped to [0, 1]. Used
     /// where the partner is known (segment-based integration).
     Projection
-    project_onto(const Point<2> &x, const unsigned int segment) const;
+    project_onto(const Point<dim> &x, const unsigned int segment) const;
+
+    /// The best projection of x among the valid ones (`valid`, with their
+    /// distances) settled where a vertex decides it: with the smoothed
+    /// normal as it is; at a tie between the two segments of a groove, or
+    /// within 1e-6 of a segment's end, the vertex with its normal.
+    Projection
+    settle_at_vertex(
+      const Point<dim>                                 &x,
+      Projection                                        best,
+      const std::vector<std::pair<Projection, double>> &valid) const;
 
     /// x paired with the end `end` (0 or 1) of `segment`: with the vertex
     /// normal where a neighbouring segment meets it (at_vertex), clamped to
     /// the end of an open surface otherwise.
     Projection
-    project_onto_vertex(const Point<2>    &x,
+    project_onto_vertex(const Point<dim>  &x,
                         const unsigned int segment,
                         const unsigned int end) const;
 
     /// Indices of the segments whose current bounding box meets `box`.
     std::vector<unsigned int>
-    segments_near(const BoundingBox<2> &box) const;
+    segments_near(const BoundingBox<dim> &box) const;
 
     /// Smallest reference length of a segment.
     double
@@ -272,7 +284,7 @@ namespace RingContact
     /// of its segments (the angle between their outward normals there, in
     /// the reference configuration, in radians), and that vertex; 0 on a
     /// surface without shared vertices.
-    std::pair<double, Point<2>>
+    std::pair<double, Point<dim>>
     sharpest_turn() const;
 
   private:
@@ -292,20 +304,20 @@ namespace RingContact
 
     /// Along the smoothed normal field: (x - x(t)) x n(t) = 0.
     Projection
-    project_along_smoothed_normal(const Point<2>    &x,
+    project_along_smoothed_normal(const Point<dim>  &x,
                                   const unsigned int segment,
                                   const double       extension) const;
 
     /// The projection at parameter t: clamped to the nearer end if t is
     /// outside [-extension, 1 + extension], with its gap.
     Projection
-    finish_projection(const Point<2>    &x,
+    finish_projection(const Point<dim>  &x,
                       const unsigned int segment,
                       double             t,
                       const double       extension) const;
 
     Projection
-    project_onto_segment(const Point<2>    &x,
+    project_onto_segment(const Point<dim>  &x,
                          const unsigned int segment,
                          const double       extension) const;
 
@@ -317,9 +329,9 @@ namespace RingContact
     std::vector<double>         multiplier_node_parameters;
     std::vector<double>         displacement_node_parameters;
     /// Vertex normals at both ends of each segment (set by update()).
-    std::vector<std::array<Tensor<1, 2>, 2>> vertex_normals;
+    std::vector<std::array<Tensor<1, dim>, 2>> vertex_normals;
 
-    using Box = std::pair<BoundingBox<2>, unsigned int>;
+    using Box = std::pair<BoundingBox<dim>, unsigned int>;
     RTree<Box> search_tree;
   };
 

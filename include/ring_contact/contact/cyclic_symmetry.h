@@ -29,6 +29,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 
 #include <array>
 #include <map>
@@ -89,11 +90,11 @@ namespace RingContact
     /// `sector_angle`. Throws if a node has no image: the two sides must
     /// carry the same nodes.
     std::vector<NodePair>
-    find_node_pairs(const DoFHandler<2>            &dof_handler,
-                    const hp::MappingCollection<2> &mapping,
-                    const double                    sector_angle,
-                    const types::boundary_id        start_side,
-                    const types::boundary_id        end_side);
+    find_node_pairs(const DoFHandler<dim>            &dof_handler,
+                    const hp::MappingCollection<dim> &mapping,
+                    const double                      sector_angle,
+                    const types::boundary_id          start_side,
+                    const types::boundary_id          end_side);
 
     /// The multiplier dofs of the pairs: end -> start.
     std::map<types::global_dof_index, types::global_dof_index>

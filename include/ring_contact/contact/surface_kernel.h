@@ -21,6 +21,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <ring_contact/base/dimension.h>
+
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -36,15 +38,15 @@ namespace RingContact
     template <typename Number>
     struct CurvePoint
     {
-      Point<2, Number>     x;   ///< position
-      Tensor<1, 2, Number> dx;  ///< dx/dt
-      Tensor<1, 2, Number> ddx; ///< d2x/dt2
+      Point<dim, Number>     x;   ///< position
+      Tensor<1, dim, Number> dx;  ///< dx/dt
+      Tensor<1, dim, Number> ddx; ///< d2x/dt2
     };
 
     /// The round-off of a distance computed from positions of the size of
     /// x: a gap below it is a gap of zero (see ContactInterface).
     inline double
-    position_round_off(const Point<2> &x)
+    position_round_off(const Point<dim> &x)
     {
       return 64 * std::numeric_limits<double>::epsilon() * x.norm();
     }
@@ -66,7 +68,7 @@ namespace RingContact
       for (unsigned int i = 0; i < n; ++i)
         {
           const auto v = nodal(i);
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int d = 0; d < dim; ++d)
             {
               p.x[d] += phi[i] * v[d];
               if (dphi != nullptr)
@@ -79,10 +81,10 @@ namespace RingContact
 
     /// The outward normal scaled by |x'|: o (x'_y, -x'_x).
     template <typename Number>
-    Tensor<1, 2, Number>
-    scaled_normal(const Tensor<1, 2, Number> &dx, const double orientation)
+    Tensor<1, dim, Number>
+    scaled_normal(const Tensor<1, dim, Number> &dx, const double orientation)
     {
-      Tensor<1, 2, Number> n;
+      Tensor<1, dim, Number> n;
       n[0] = orientation * dx[1];
       n[1] = -orientation * dx[0];
       return n;
@@ -100,12 +102,12 @@ namespace RingContact
 
     /// v / |v|.
     template <typename Number>
-    Tensor<1, 2, Number>
-    unit(const Tensor<1, 2, Number> &v)
+    Tensor<1, dim, Number>
+    unit(const Tensor<1, dim, Number> &v)
     {
       using std::sqrt;
-      const Number         length = sqrt(v[0] * v[0] + v[1] * v[1]);
-      Tensor<1, 2, Number> u;
+      const Number           length = sqrt(v[0] * v[0] + v[1] * v[1]);
+      Tensor<1, dim, Number> u;
       if constexpr (exact_as_before<Number>)
         {
           const Number inverse = Number(1.) / length;
@@ -124,12 +126,12 @@ namespace RingContact
     /// that meet there (`has_second` = false at the end of an open
     /// surface).
     template <typename Number>
-    Tensor<1, 2, Number>
-    vertex_normal(const Tensor<1, 2, Number> &first,
-                  const Tensor<1, 2, Number> &second,
-                  const bool                  has_second)
+    Tensor<1, dim, Number>
+    vertex_normal(const Tensor<1, dim, Number> &first,
+                  const Tensor<1, dim, Number> &second,
+                  const bool                    has_second)
     {
-      Tensor<1, 2, Number> n = first;
+      Tensor<1, dim, Number> n = first;
       if (has_second)
         {
           n[0] += second[0];
@@ -141,11 +143,11 @@ namespace RingContact
     /// a - b, component by component (deal.II's Tensor arithmetic does not
     /// take Sacado's expression templates).
     template <typename Number, typename A, typename B>
-    Tensor<1, 2, Number>
+    Tensor<1, dim, Number>
     difference(const A &a, const B &b)
     {
-      Tensor<1, 2, Number> d;
-      for (unsigned int i = 0; i < 2; ++i)
+      Tensor<1, dim, Number> d;
+      for (unsigned int i = 0; i < dim; ++i)
         d[i] = a[i] - b[i];
       return d;
     }
@@ -153,20 +155,20 @@ namespace RingContact
     /// a x b in the plane.
     template <typename Number, typename OtherNumber>
     Number
-    cross(const Tensor<1, 2, Number> &a, const Tensor<1, 2, OtherNumber> &b)
+    cross(const Tensor<1, dim, Number> &a, const Tensor<1, dim, OtherNumber> &b)
     {
       return a[0] * b[1] - a[1] * b[0];
     }
 
     /// The smoothed normal direction m(t) = (1 - t) n0 + t n1.
     template <typename Number, typename T>
-    Tensor<1, 2, Number>
-    smoothed_direction(const Tensor<1, 2, Number> &n0,
-                       const Tensor<1, 2, Number> &n1,
-                       const T                    &t)
+    Tensor<1, dim, Number>
+    smoothed_direction(const Tensor<1, dim, Number> &n0,
+                       const Tensor<1, dim, Number> &n1,
+                       const T                      &t)
     {
-      Tensor<1, 2, Number> m;
-      for (unsigned int d = 0; d < 2; ++d)
+      Tensor<1, dim, Number> m;
+      for (unsigned int d = 0; d < dim; ++d)
         m[d] = (1 - t) * n0[d] + t * n1[d];
       return m;
     }
@@ -175,8 +177,8 @@ namespace RingContact
     /// and dr/dt (x_s fixed).
     template <typename Number>
     std::pair<Number, Number>
-    closest_point_residual(const Tensor<1, 2, Number> &d,
-                           const CurvePoint<Number>   &p)
+    closest_point_residual(const Tensor<1, dim, Number> &d,
+                           const CurvePoint<Number>     &p)
     {
       const Number r       = d[0] * p.dx[0] + d[1] * p.dx[1];
       const Number tangent = -(p.dx[0] * p.dx[0] + p.dx[1] * p.dx[1]);
@@ -190,13 +192,13 @@ namespace RingContact
     /// and dr/dt.
     template <typename Number>
     std::pair<Number, Number>
-    smoothed_normal_residual(const Tensor<1, 2, Number> &d,
-                             const CurvePoint<Number>   &p,
-                             const Tensor<1, 2, Number> &n0,
-                             const Tensor<1, 2, Number> &n1,
-                             const double                t)
+    smoothed_normal_residual(const Tensor<1, dim, Number> &d,
+                             const CurvePoint<Number>     &p,
+                             const Tensor<1, dim, Number> &n0,
+                             const Tensor<1, dim, Number> &n1,
+                             const double                  t)
     {
-      const Tensor<1, 2, Number> m = smoothed_direction(n0, n1, t);
+      const Tensor<1, dim, Number> m = smoothed_direction(n0, n1, t);
       if constexpr (exact_as_before<Number>)
         return {cross(d, m),
                 -cross(p.dx, m) + cross(d, difference<Number>(n1, n0))};
@@ -211,9 +213,9 @@ namespace RingContact
     /// x_v and x_s'.
     template <typename Number, typename NormalNumber>
     std::pair<Number, Number>
-    piece_end_residual(const Tensor<1, 2, Number>       &d,
-                       const Tensor<1, 2, Number>       &dx,
-                       const Tensor<1, 2, NormalNumber> &normal)
+    piece_end_residual(const Tensor<1, dim, Number>       &d,
+                       const Tensor<1, dim, Number>       &dx,
+                       const Tensor<1, dim, NormalNumber> &normal)
     {
       return {cross(d, normal), cross(dx, normal)};
     }

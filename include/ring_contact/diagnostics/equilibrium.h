@@ -22,6 +22,8 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
+
 #include <array>
 #include <functional>
 #include <map>
@@ -80,8 +82,8 @@ namespace RingContact
   /// master's material ids; `measure_pairs` false for cyclic symmetry).
   Balance
   measure_balance(
-    const DoFHandler<2>                                          &dof_handler,
-    const NodalForces                                            &forces,
+    const DoFHandler<dim>                                         &dof_handler,
+    const NodalForces                                             &forces,
     const std::vector<std::pair<types::material_id, std::string>> &bodies,
     const std::vector<std::pair<types::material_id, types::material_id>>
               &pair_bodies,

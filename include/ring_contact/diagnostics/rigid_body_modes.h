@@ -14,6 +14,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/mapping_collection.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/scenarios/scenario.h>
 
@@ -35,12 +36,12 @@ namespace RingContact
     /// gap of the `contacts` either (frictionless only: sticking may hold
     /// it).
     std::set<types::material_id>
-    rigid_body_modes(const DoFHandler<2>                        &dof_handler,
-                     const hp::MappingCollection<2>             &mapping,
+    rigid_body_modes(const DoFHandler<dim>                      &dof_handler,
+                     const hp::MappingCollection<dim>           &mapping,
                      const std::vector<Body>                    &bodies,
                      const std::vector<types::global_dof_index> &imposed_dofs,
                      const std::vector<NormalDisplacement>      &normal,
-                     const std::vector<unsigned int>            &normal_component,
+                     const std::vector<unsigned int> &normal_component,
                      const std::vector<const ContactInterface *> &contacts,
                      const bool                                   friction,
                      std::ostream                                &log);

@@ -15,6 +15,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/scenario.h>
 
 #include <string>
@@ -56,8 +57,8 @@ namespace RingContact
     /// material id. Throws a one-line error when it exceeds what double
     /// precision can solve (eps S > 1e-7).
     StiffnessSpread
-    stiffness_spread(const Triangulation<2>  &triangulation,
-                     const std::vector<Body> &bodies);
+    stiffness_spread(const Triangulation<dim> &triangulation,
+                     const std::vector<Body>  &bodies);
   } // namespace Diagnostics
 } // namespace RingContact
 

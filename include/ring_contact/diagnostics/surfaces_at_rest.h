@@ -23,6 +23,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/contact/contact_quadrature.h>
 
@@ -59,7 +60,7 @@ namespace RingContact
     {
       double       lowest  = 1;           ///< smallest ratio
       double       highest = 1;           ///< largest ratio
-      Point<2>     lowest_at, highest_at; ///< where (reference position)
+      Point<dim>   lowest_at, highest_at; ///< where (reference position)
       unsigned int n_nodes = 0;           ///< master nodes compared
     };
 

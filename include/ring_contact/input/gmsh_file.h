@@ -17,6 +17,8 @@
 
 #include <deal.II/base/point.h>
 
+#include <ring_contact/base/dimension.h>
+
 #include <map>
 #include <string>
 #include <utility>
@@ -40,14 +42,14 @@ namespace RingContact
 
     struct GmshMesh
     {
-      std::string                     filename;
-      std::map<std::size_t, Point<2>> nodes; ///< by node tag
+      std::string                       filename;
+      std::map<std::size_t, Point<dim>> nodes; ///< by node tag
       /// Lines and quadrilaterals, by increasing tag (points are dropped).
       std::vector<GmshElement> elements;
       bool                     quadratic = false; ///< types 8, 10 or 16
       /// A script's curves by gmsh tag, sampled evenly in their parameter
       /// (GmshModel::curves; model_curves.h makes them the geometry).
-      std::vector<std::pair<int, std::vector<Point<2>>>> curves;
+      std::vector<std::pair<int, std::vector<Point<dim>>>> curves;
       /// The node tag of each vertex of the triangulation built from it
       /// (set by Geometry::read_gmsh()).
       std::vector<std::size_t> node_of_vertex;

@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_file.h>
 
 #include <cstddef>
@@ -27,18 +28,18 @@ namespace RingContact
     /// circle); otherwise the geometry is straight-sided and a mid-side
     /// node must be at the middle of its line.
     GmshMesh
-    read_gmsh(Triangulation<2>  &triangulation,
-              const std::string &filename,
-              const GeoNumbers  &geo_numbers   = {},
-              unsigned int       element_order = 1,
-              bool               on_circles    = true);
+    read_gmsh(Triangulation<dim> &triangulation,
+              const std::string  &filename,
+              const GeoNumbers   &geo_numbers   = {},
+              unsigned int        element_order = 1,
+              bool                on_circles    = true);
 
     /// The audit of the boundary tags: every boundary face is one line of
     /// the file with one physical tag. Throws a one-line error that names
     /// the file, the gmsh entity and the element.
     void
-    check_boundary_tags(const Triangulation<2> &triangulation,
-                        const GmshMesh         &mesh);
+    check_boundary_tags(const Triangulation<dim> &triangulation,
+                        const GmshMesh           &mesh);
 
     /// Throw a one-line error, before anything large is allocated, if a mesh
     /// of `n_coarse_cells` cells of displacement degree up to `degree`,

@@ -11,6 +11,7 @@
 #include <deal.II/grid/manifold.h>
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_file.h>
 
 #include <memory>
@@ -32,18 +33,18 @@ namespace RingContact
         circle,   ///< an arc of a circle: deal.II's PolarManifold
         sampled   ///< anything else: interpolated between the samples
       };
-      int                   tag  = 0;
-      Kind                  kind = Kind::straight;
-      Point<2>              centre;     ///< of a circle
-      double                radius = 0; ///< of a circle
-      std::vector<Point<2>> samples;    ///< even in gmsh's parameter
+      int                     tag  = 0;
+      Kind                    kind = Kind::straight;
+      Point<dim>              centre;     ///< of a circle
+      double                  radius = 0; ///< of a circle
+      std::vector<Point<dim>> samples;    ///< even in gmsh's parameter
     };
 
     /// What the points, evenly spaced in a curve's parameter from one end
     /// to the other, describe: a straight line, a circle (to 1e-9 of its
     /// radius), or another curve.
     ModelCurve
-    recognise_curve(int tag, const std::vector<Point<2>> &samples);
+    recognise_curve(int tag, const std::vector<Point<dim>> &samples);
 
     /// A curve known by its samples, evenly spaced in its parameter: the
     /// chart t in [0, 1] (periodic on a closed curve) and a cubic Hermite
@@ -53,27 +54,27 @@ namespace RingContact
     class SampledCurveManifold : public ChartManifold<2, 2, 1>
     {
     public:
-      explicit SampledCurveManifold(const std::vector<Point<2>> &samples);
+      explicit SampledCurveManifold(const std::vector<Point<dim>> &samples);
 
-      std::unique_ptr<Manifold<2, 2>>
+      std::unique_ptr<Manifold<dim, dim>>
       clone() const override;
 
       Point<1>
-      pull_back(const Point<2> &space_point) const override;
+      pull_back(const Point<dim> &space_point) const override;
 
-      Point<2>
+      Point<dim>
       push_forward(const Point<1> &chart_point) const override;
 
-      DerivativeForm<1, 1, 2>
+      DerivativeForm<1, dim - 1, dim>
       push_forward_gradient(const Point<1> &chart_point) const override;
 
     private:
-      std::vector<Point<2>> samples;
-      bool                  closed;
+      std::vector<Point<dim>> samples;
+      bool                    closed;
       /// The interval i and the local s in [0, 1] of a chart point.
       std::pair<unsigned int, double>
       locate(double t) const;
-      Tensor<1, 2>
+      Tensor<1, dim>
       tangent_at_sample(unsigned int i) const;
     };
 
@@ -83,7 +84,8 @@ namespace RingContact
     /// and the cells keep the flat default. Returns the curves found, by
     /// kind.
     std::vector<ModelCurve>
-    attach_model_curves(Triangulation<2> &triangulation, const GmshMesh &mesh);
+    attach_model_curves(Triangulation<dim> &triangulation,
+                        const GmshMesh     &mesh);
   } // namespace Geometry
 } // namespace RingContact
 

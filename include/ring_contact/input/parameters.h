@@ -15,6 +15,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_quadrature.h>
 #include <ring_contact/input/parameter_file.h>
 
@@ -179,7 +180,7 @@ namespace RingContact
     double                         complementarity_constant; ///< 0: automatic
     double                         friction_coefficient;     ///< mu; 0: none
     PressureMeasure                reported_pressure;
-    Point<2>                       probe_point;
+    Point<dim>                     probe_point;
 
     void
     add_parameters(ParameterHandler &prm);

@@ -69,6 +69,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
+
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
@@ -104,8 +106,8 @@ namespace RingContact
     /// the position of every displacement unknown's node (the multigrid's
     /// rigid-body modes; the entries of the multipliers are not used).
     void
-    set_kinds(const std::vector<Kind>     &kinds,
-              const std::vector<Point<2>> &positions);
+    set_kinds(const std::vector<Kind>       &kinds,
+              const std::vector<Point<dim>> &positions);
 
     /// x = K^-1 b, b and x whole on every process; `owned` the rows this
     /// process stores. The multigrid hierarchy is rebuilt when
@@ -136,8 +138,7 @@ namespace RingContact
     /// triplets, the diagonal of A (later of A + B Gamma C) where B couples.
     struct CouplingBlocks
     {
-      using Entries =
-        std::vector<std::pair<types::global_dof_index, double>>;
+      using Entries = std::vector<std::pair<types::global_dof_index, double>>;
       std::unordered_map<types::global_dof_index, Entries> C_row, C_column;
       std::vector<double>                                  S_triplets;
       std::unordered_map<types::global_dof_index, double>  A_diagonal;
@@ -169,9 +170,9 @@ namespace RingContact
     /// gamma of the augmentation.
     const double augmentation;
     /// Gamma_k, whole.
-    Vector<double>        gamma_k;
-    std::vector<Kind>     kinds;
-    std::vector<Point<2>> positions;
+    Vector<double>          gamma_k;
+    std::vector<Kind>       kinds;
+    std::vector<Point<dim>> positions;
     /// The rigid-body modes of the owned rows of A (translations, rotation),
     /// one after the other: ML reads them while it builds the hierarchy.
     std::vector<double> rigid_body_modes;

@@ -29,6 +29,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 #include <ring_contact/linear_algebra/direct_solver.h>
@@ -173,7 +174,7 @@ namespace RingContact
     /// Ignored by the direct solvers.
     void
     set_kinds(const std::vector<BlockSolver::Kind> &kinds,
-              const std::vector<Point<2>>          &positions);
+              const std::vector<Point<dim>>        &positions);
 
     /// x = K^-1 rhs, whole on every process. Throws std::runtime_error when
     /// the solver fails or the matrix is singular (IterativeSolverFailure

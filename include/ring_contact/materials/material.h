@@ -22,6 +22,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 
 #include <memory>
@@ -55,32 +56,32 @@ namespace RingContact
     virtual ~MaterialLaw() = default;
 
     /// The stress conjugate to Grad u in the virtual work.
-    virtual Tensor<2, 2>
-    stress(const Tensor<2, 2> &grad_u) const = 0;
+    virtual Tensor<2, dim>
+    stress(const Tensor<2, dim> &grad_u) const = 0;
 
     /// Stress and its consistent tangent A = dP/dH (A_iJkL = dP_iJ/dH_kL),
     /// which has the major symmetry A_iJkL = A_kLiJ of a hyperelastic law
     /// (the assembly computes the upper triangle of the cell matrices).
     virtual void
-    stress_and_tangent(const Tensor<2, 2> &grad_u,
-                       Tensor<2, 2>       &P,
-                       Tensor<4, 2>       &A) const = 0;
+    stress_and_tangent(const Tensor<2, dim> &grad_u,
+                       Tensor<2, dim>       &P,
+                       Tensor<4, dim>       &A) const = 0;
 
     /// In-plane Cauchy stress. By default that of a finite-strain law,
     /// sigma = P F^T / det F, det F including the thickness stretch F33 of
     /// plane stress; small strain overrides it (sigma is its stress).
-    virtual Tensor<2, 2>
-    cauchy_stress(const Tensor<2, 2> &grad_u) const;
+    virtual Tensor<2, dim>
+    cauchy_stress(const Tensor<2, dim> &grad_u) const;
 
     /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress).
     virtual double
-    out_of_plane_stress(const Tensor<2, 2> &grad_u) const = 0;
+    out_of_plane_stress(const Tensor<2, dim> &grad_u) const = 0;
 
     /// Out-of-plane stretch F33 (1 in plane strain and small strain).
     /// Throws a one-line std::domain_error where the law has none (see
     /// in_range()).
     virtual double
-    thickness_stretch(const Tensor<2, 2> &grad_u) const = 0;
+    thickness_stretch(const Tensor<2, dim> &grad_u) const = 0;
 
     /// Whether the law has a state at grad_u, beyond det F > 0, which the
     /// assembly checks first: Saint Venant-Kirchhoff in plane stress has
@@ -88,7 +89,7 @@ namespace RingContact
     /// F33^2 <= 0 there). A state with a point outside is rejected as an
     /// inverted one is. By default every state with det F > 0.
     virtual bool
-    in_range(const Tensor<2, 2> &grad_u) const;
+    in_range(const Tensor<2, dim> &grad_u) const;
 
     /// What in_range() requires, for the message that rejects a state
     /// ("" for a law without a bound).
@@ -132,40 +133,40 @@ namespace RingContact
              const PlaneAssumption plane,
              const Kinematics      kinematics);
 
-    Tensor<2, 2>
-    stress(const Tensor<2, 2> &grad_u) const
+    Tensor<2, dim>
+    stress(const Tensor<2, dim> &grad_u) const
     {
       return law->stress(grad_u);
     }
 
     void
-    stress_and_tangent(const Tensor<2, 2> &grad_u,
-                       Tensor<2, 2>       &P,
-                       Tensor<4, 2>       &A) const
+    stress_and_tangent(const Tensor<2, dim> &grad_u,
+                       Tensor<2, dim>       &P,
+                       Tensor<4, dim>       &A) const
     {
       law->stress_and_tangent(grad_u, P, A);
     }
 
-    Tensor<2, 2>
-    cauchy_stress(const Tensor<2, 2> &grad_u) const
+    Tensor<2, dim>
+    cauchy_stress(const Tensor<2, dim> &grad_u) const
     {
       return law->cauchy_stress(grad_u);
     }
 
     double
-    out_of_plane_stress(const Tensor<2, 2> &grad_u) const
+    out_of_plane_stress(const Tensor<2, dim> &grad_u) const
     {
       return law->out_of_plane_stress(grad_u);
     }
 
     double
-    thickness_stretch(const Tensor<2, 2> &grad_u) const
+    thickness_stretch(const Tensor<2, dim> &grad_u) const
     {
       return law->thickness_stretch(grad_u);
     }
 
     bool
-    in_range(const Tensor<2, 2> &grad_u) const
+    in_range(const Tensor<2, dim> &grad_u) const
     {
       return law->in_range(grad_u);
     }
@@ -178,7 +179,7 @@ namespace RingContact
 
     /// The von Mises stress of the Cauchy stress, sigma_33 included.
     double
-    von_mises_stress(const Tensor<2, 2> &grad_u) const;
+    von_mises_stress(const Tensor<2, dim> &grad_u) const;
 
     double          youngs_modulus;
     double          poissons_ratio;

@@ -10,6 +10,7 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/output/vtu_format.h>
 
@@ -60,16 +61,16 @@ namespace RingContact
     /// a chain, and whether it closes one on itself.
     struct SlaveFace
     {
-      DoFHandler<2>::active_cell_iterator cell;
-      unsigned int                        face_no      = 0;
-      bool                                reversed     = false;
-      bool                                starts_chain = true;
-      bool                                closes_chain = false;
+      DoFHandler<dim>::active_cell_iterator cell;
+      unsigned int                          face_no      = 0;
+      bool                                  reversed     = false;
+      bool                                  starts_chain = true;
+      bool                                  closes_chain = false;
     };
 
     void
-    write(const DoFHandler<2>                    &dof_handler,
-          const hp::MappingCollection<2>         &mapping,
+    write(const DoFHandler<dim>                  &dof_handler,
+          const hp::MappingCollection<dim>       &mapping,
           const Vector<double>                   &solution,
           const std::vector<SurfaceField>        &surface_fields,
           const std::map<unsigned int, Material> &materials,
@@ -85,13 +86,13 @@ namespace RingContact
                const std::string &bulk_stem,
                const double       time);
     void
-    write_slave_surface(const DoFHandler<2>             &dof_handler,
-                        const hp::MappingCollection<2>  &mapping,
-                        const Vector<double>            &solution,
-                        const std::vector<SurfaceField> &surface_fields,
-                        const std::vector<SlaveFace>    &slave_faces,
-                        const unsigned int               step,
-                        const double                     time);
+    write_slave_surface(const DoFHandler<dim>            &dof_handler,
+                        const hp::MappingCollection<dim> &mapping,
+                        const Vector<double>             &solution,
+                        const std::vector<SurfaceField>  &surface_fields,
+                        const std::vector<SlaveFace>     &slave_faces,
+                        const unsigned int                step,
+                        const double                      time);
     static void
     record(std::vector<std::pair<double, std::string>> &records,
            const double                                 time,

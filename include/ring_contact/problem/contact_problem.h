@@ -43,6 +43,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/contact/cyclic_symmetry.h>
 #include <ring_contact/diagnostics/equilibrium.h>
@@ -73,7 +74,9 @@ namespace RingContact
 {
   using namespace dealii;
 
-  class ContactProblem : public SolutionState, public NonlinearProblem
+  class ContactProblem
+      : public SolutionState
+      , public NonlinearProblem
   {
   public:
     /// Under MPI (`communicator` with several processes) every process
@@ -146,12 +149,12 @@ namespace RingContact
 
     /// @name What a scenario may read (SolutionState)
     /// @{
-    const DoFHandler<2> &
+    const DoFHandler<dim> &
     get_dof_handler() const override
     {
       return dof_handler;
     }
-    const hp::MappingCollection<2> &
+    const hp::MappingCollection<dim> &
     get_mapping() const override
     {
       return mapping_collection;
@@ -170,7 +173,7 @@ namespace RingContact
     std::vector<const ContactInterface *>
     contact_interfaces() const override;
     types::global_dof_index
-    contact_node_nearest_to(const Point<2> &point) const override;
+    contact_node_nearest_to(const Point<dim> &point) const override;
     const ContactInterface &
     contact_of(const types::global_dof_index node) const override
     {
@@ -182,7 +185,7 @@ namespace RingContact
     reported_pressure(const types::global_dof_index node) const override;
     NodalForces
     nodal_forces() const override;
-    const std::map<types::boundary_id, Tensor<1, 2>> &
+    const std::map<types::boundary_id, Tensor<1, dim>> &
     applied_resultants() const override
     {
       return applied_resultant;
@@ -283,8 +286,7 @@ namespace RingContact
     /// right-hand side -R at the current solution; returns the number of
     /// contact nodes whose status changed (NonlinearProblem).
     unsigned int
-    assemble_newton_system(const Pairing  pairing,
-                           const Assembly what) override;
+    assemble_newton_system(const Pairing pairing, const Assembly what) override;
     void
     assemble_system(const Assembly what) override;
     void
@@ -308,7 +310,7 @@ namespace RingContact
     /// in_range()): the point is then counted as rejected.
     bool
     outside_law(const Material          &material,
-                const Tensor<2, 2>      &grad_u,
+                const Tensor<2, dim>    &grad_u,
                 const types::material_id body);
     /// @}
 
@@ -439,11 +441,11 @@ namespace RingContact
     const LoadProgram                    &load_program;
     std::map<unsigned int, Material>      materials; ///< by material id
 
-    Triangulation<2>                 triangulation;
-    DoFHandler<2>                    dof_handler;
-    hp::FECollection<2>              fe_collection;
-    hp::MappingCollection<2>         mapping_collection;
-    hp::QCollection<2>               q_collection;
+    Triangulation<dim>               triangulation;
+    DoFHandler<dim>                  dof_handler;
+    hp::FECollection<dim>            fe_collection;
+    hp::MappingCollection<dim>       mapping_collection;
+    hp::QCollection<dim>             q_collection;
     const FEValuesExtractors::Vector displacement;
     /// The body (its index in `bodies`) of a material id, and of an
     /// element of fe_collection (the bodies', then the slave layer's).
@@ -494,7 +496,7 @@ namespace RingContact
     std::vector<bool> supported;
     /// The integral of the applied loads on each loaded boundary, from the
     /// last assembly.
-    std::map<types::boundary_id, Tensor<1, 2>> applied_resultant;
+    std::map<types::boundary_id, Tensor<1, dim>> applied_resultant;
     /// Why the last converged state cannot be trusted.
     std::string unbalanced_forces;
 
@@ -548,7 +550,7 @@ namespace RingContact
       /// and in gradients (n_bases gradients per quadrature point).
       std::vector<std::pair<std::size_t, std::size_t>> start;
       std::vector<double>                              JxW;
-      std::vector<Tensor<1, 2>>                        gradients;
+      std::vector<Tensor<1, dim>>                      gradients;
     } reference_geometry;
     /// Linear solver = iterative: GMRES's iterations and solves in the run.
     unsigned int linear_iterations = 0;

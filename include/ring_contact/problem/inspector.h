@@ -10,6 +10,7 @@
 #ifndef ring_contact_problem_inspector_h
 #define ring_contact_problem_inspector_h
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/problem/contact_problem.h>
 #include <ring_contact/problem/newton_solver.h>
 
@@ -41,7 +42,7 @@ namespace RingContact
     /// Pair, choose the active set and assemble -R (and the tangent) at
     /// the current solution.
     unsigned int
-    assemble_newton_system(const Pairing                  pairing = Pairing::search,
+    assemble_newton_system(const Pairing pairing = Pairing::search,
                            const ContactProblem::Assembly what =
                              ContactProblem::Assembly::residual_and_tangent)
     {
@@ -73,13 +74,13 @@ namespace RingContact
       return problem.constraints;
     }
 
-    const DoFHandler<2> &
+    const DoFHandler<dim> &
     get_dof_handler() const
     {
       return problem.dof_handler;
     }
 
-    const hp::MappingCollection<2> &
+    const hp::MappingCollection<dim> &
     get_mapping() const
     {
       return problem.mapping_collection;

@@ -12,6 +12,7 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/contact/contact_interface.h>
 #include <ring_contact/diagnostics/equilibrium.h>
 #include <ring_contact/problem/load_program.h>
@@ -29,9 +30,9 @@ namespace RingContact
     virtual ~SolutionState() = default;
 
     /// The unknowns, the geometry, and their values at the state.
-    virtual const DoFHandler<2> &
+    virtual const DoFHandler<dim> &
     get_dof_handler() const = 0;
-    virtual const hp::MappingCollection<2> &
+    virtual const hp::MappingCollection<dim> &
     get_mapping() const = 0;
     virtual const Vector<double> &
     get_solution() const = 0;
@@ -47,7 +48,7 @@ namespace RingContact
     /// The contact node (multiplier unknown) nearest to a reference point
     /// over every pair, and the interface it belongs to.
     virtual types::global_dof_index
-    contact_node_nearest_to(const Point<2> &point) const = 0;
+    contact_node_nearest_to(const Point<dim> &point) const = 0;
     virtual const ContactInterface &
     contact_of(const types::global_dof_index node) const = 0;
 
@@ -64,7 +65,7 @@ namespace RingContact
     /// the applied loads over each loaded boundary.
     virtual NodalForces
     nodal_forces() const = 0;
-    virtual const std::map<types::boundary_id, Tensor<1, 2>> &
+    virtual const std::map<types::boundary_id, Tensor<1, dim>> &
     applied_resultants() const = 0;
 
     /// A number that changes whenever the mesh and its unknowns do

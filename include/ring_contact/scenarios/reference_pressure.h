@@ -13,6 +13,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/output/history.h>
 #include <ring_contact/output/verdicts.h>
@@ -46,7 +47,7 @@ namespace RingContact
     /// `measure` says.
     void
     report(const SolutionState     &state,
-           const Point<2>          &probe,
+           const Point<dim>        &probe,
            const double             reference,
            const PressureMeasure    measure,
            std::vector<NamedValue> &into);
@@ -88,7 +89,7 @@ namespace RingContact
     /// contact node nearest to `probe`, and the number of sliding nodes.
     void
     report(const SolutionState     &state,
-           const Point<2>          &probe,
+           const Point<dim>        &probe,
            std::vector<NamedValue> &into);
 
     /// q_A and the number of sliding nodes, left out before the pressure

@@ -28,6 +28,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/hp/mapping_collection.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/output/history.h>
@@ -74,7 +75,7 @@ namespace RingContact
     types::boundary_id boundary_id;
     Type               type;
     /// The pressure (component 0) or the traction.
-    std::function<Tensor<1, 2>(const Point<2> &, const LoadState &)> value;
+    std::function<Tensor<1, dim>(const Point<dim> &, const LoadState &)> value;
   };
 
   /// Boundary data that is not a finite number at a load state (an
@@ -94,7 +95,7 @@ namespace RingContact
   struct NormalDisplacement
   {
     std::array<types::global_dof_index, 2> dofs; ///< u_x, u_y of the node
-    Tensor<1, 2>                           normal;
+    Tensor<1, dim>                         normal;
     double                                 value;
   };
 
@@ -128,7 +129,7 @@ namespace RingContact
     /// Make the mesh: generate or read it, attach its geometry
     /// (manifolds), refine, and check that it has what the problem needs.
     virtual void
-    create_mesh(Triangulation<2> &triangulation) const = 0;
+    create_mesh(Triangulation<dim> &triangulation) const = 0;
 
     /// The bodies, in the order of their finite elements.
     virtual std::vector<Body>
@@ -143,9 +144,9 @@ namespace RingContact
     /// nodes they do not fix whole. The unknowns and normals are the same
     /// at every state (they define the constraints), only the values change.
     virtual ImposedMotion
-    boundary_motion(const DoFHandler<2>            &dof_handler,
-                    const hp::MappingCollection<2> &mapping,
-                    const LoadState                &load) const = 0;
+    boundary_motion(const DoFHandler<dim>            &dof_handler,
+                    const hp::MappingCollection<dim> &mapping,
+                    const LoadState                  &load) const = 0;
 
     /// The loads on boundaries (none by default).
     virtual std::vector<BoundaryLoad>
@@ -165,8 +166,8 @@ namespace RingContact
     /// `times`, before the first step: throws a ParameterError that names
     /// the entry at fault (none by default).
     virtual void
-    check_boundary_data(const DoFHandler<2> &,
-                        const hp::MappingCollection<2> &,
+    check_boundary_data(const DoFHandler<dim> &,
+                        const hp::MappingCollection<dim> &,
                         const std::vector<double> &) const
     {}
     /// @}

@@ -21,6 +21,7 @@
 #include <deal.II/hp/q_collection.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/general/boundary_resultants.h>
 
 #include <algorithm>
@@ -33,22 +34,23 @@ namespace RingContact
   // axes it imposes, e_r and e_theta at the point's angle about the origin,
   // or the outward normal. A support's reaction acts along these and no
   // other: the remaining direction of the node is free, its row balanced.
-  std::vector<Tensor<1, 2>>
-  SupportCondition::directions(const Point<2> &X, const Tensor<1, 2> &N) const
+  std::vector<Tensor<1, dim>>
+  SupportCondition::directions(const Point<dim>     &X,
+                               const Tensor<1, dim> &N) const
   {
-    std::vector<Tensor<1, 2>> held;
+    std::vector<Tensor<1, dim>> held;
     switch (kind)
       {
         case Kind::cartesian:
-          for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int c = 0; c < dim; ++c)
             if (components[c])
-              held.push_back(Point<2>::unit_vector(c));
+              held.push_back(Point<dim>::unit_vector(c));
           break;
         case Kind::polar:
           {
-            const double       theta = std::atan2(X[1], X[0]);
-            const Tensor<1, 2> e_r({std::cos(theta), std::sin(theta)});
-            const Tensor<1, 2> e_theta({-std::sin(theta), std::cos(theta)});
+            const double         theta = std::atan2(X[1], X[0]);
+            const Tensor<1, dim> e_r({std::cos(theta), std::sin(theta)});
+            const Tensor<1, dim> e_theta({-std::sin(theta), std::cos(theta)});
             if (components[0])
               held.push_back(e_r);
             if (components[1])
@@ -67,9 +69,9 @@ namespace RingContact
   // those of the undeformed mesh).
   void
   for_each_boundary_face(
-    const DoFHandler<2>                                          &dof_handler,
-    const hp::MappingCollection<2>                               &mapping,
-    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+    const DoFHandler<dim>                                        &dof_handler,
+    const hp::MappingCollection<dim>                             &mapping,
+    const std::function<void(const DoFHandler<dim>::active_cell_iterator &,
                              const unsigned int,
                              const std::vector<BoundaryNode> &)> &visit)
   {
@@ -88,15 +90,15 @@ namespace RingContact
           Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
         gauss.push_back(QGauss<1>(fe_collection[i].degree + 1));
       }
-    hp::FEFaceValues<2>                  at_nodes(mapping,
-                                 fe_collection,
-                                 support_points,
-                                 update_quadrature_points |
-                                   update_normal_vectors);
-    hp::FEFaceValues<2>                  integrals(mapping,
-                                  fe_collection,
-                                  gauss,
-                                  update_values | update_JxW_values);
+    hp::FEFaceValues<dim>                at_nodes(mapping,
+                                   fe_collection,
+                                   support_points,
+                                   update_quadrature_points |
+                                     update_normal_vectors);
+    hp::FEFaceValues<dim>                integrals(mapping,
+                                    fe_collection,
+                                    gauss,
+                                    update_values | update_JxW_values);
     std::vector<types::global_dof_index> face_dofs;
     std::vector<BoundaryNode>            nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -105,9 +107,9 @@ namespace RingContact
           {
             at_nodes.reinit(cell, f);
             integrals.reinit(cell, f);
-            const FEFaceValues<2>  &fv = at_nodes.get_present_fe_values();
-            const FEFaceValues<2>  &iv = integrals.get_present_fe_values();
-            const FiniteElement<2> &fe = cell->get_fe();
+            const FEFaceValues<dim>  &fv = at_nodes.get_present_fe_values();
+            const FEFaceValues<dim>  &iv = integrals.get_present_fe_values();
+            const FiniteElement<dim> &fe = cell->get_fe();
             face_dofs.resize(fe.n_dofs_per_face(f));
             cell->face(f)->get_dof_indices(face_dofs, cell->active_fe_index());
             // A node is a pair of face unknowns u_x, u_y at one support
@@ -138,8 +140,8 @@ namespace RingContact
   }
 
   BoundaryResultants::BoundaryResultants(
-    const DoFHandler<2>                 &dof_handler,
-    const hp::MappingCollection<2>      &mapping,
+    const DoFHandler<dim>               &dof_handler,
+    const hp::MappingCollection<dim>    &mapping,
     const std::vector<SupportCondition> &supports)
   {
     // The conditions of one boundary merged into one support: x imposed by
@@ -160,7 +162,7 @@ namespace RingContact
                  support.kind != SupportCondition::Kind::normal,
                ExcMessage("Two supports of one boundary must be both "
                           "Cartesian or both polar."));
-        for (unsigned int c = 0; c < 2; ++c)
+        for (unsigned int c = 0; c < dim; ++c)
           merged->second.components[c] =
             merged->second.components[c] || support.components[c];
       }
@@ -198,7 +200,7 @@ namespace RingContact
             else if (support->second.kind == SupportCondition::Kind::normal)
               {
                 // Two faces of one boundary at a node: the mean normal.
-                Tensor<1, 2> mean = it->directions[0] + node.N;
+                Tensor<1, dim> mean = it->directions[0] + node.N;
                 if (mean.norm() > 0)
                   it->directions[0] = mean / mean.norm();
               }
@@ -230,7 +232,7 @@ namespace RingContact
     // twice.
     struct Group
     {
-      Tensor<1, 2>              direction;
+      Tensor<1, dim>            direction;
       std::vector<unsigned int> members; // holders
     };
     std::vector<Group> groups;
@@ -253,12 +255,12 @@ namespace RingContact
     // of rank one; the reaction s is zero at the unknowns no support holds
     // (NodalForces::reactions()), and any part of s along no held direction
     // is left out. Eigenvalues below 1e-12 of the largest count as zero.
-    SymmetricTensor<2, 2> DDt;
+    SymmetricTensor<2, dim> DDt;
     for (const auto &g : groups)
       DDt += symmetrize(outer_product(g.direction, g.direction));
-    const auto   eigen   = eigenvectors(DDt);
-    const double largest = std::max(eigen[0].first, 1e-300);
-    Tensor<2, 2> pseudo_inverse;
+    const auto     eigen   = eigenvectors(DDt);
+    const double   largest = std::max(eigen[0].first, 1e-300);
+    Tensor<2, dim> pseudo_inverse;
     for (const auto &[value, vector] : eigen)
       if (value > 1e-12 * largest)
         pseudo_inverse += outer_product(vector, vector) / value;
@@ -267,7 +269,7 @@ namespace RingContact
         // c_g = amount . s. A direction one boundary holds alone is that
         // boundary's: its part of the reaction is d_g c_g, a fixed linear
         // map of s, stored as a tensor.
-        const Tensor<1, 2> amount = pseudo_inverse * g.direction;
+        const Tensor<1, dim> amount = pseudo_inverse * g.direction;
         if (g.members.size() == 1)
           {
             shares[list[g.members[0]].boundary].push_back(
@@ -297,19 +299,19 @@ namespace RingContact
       }
   }
 
-  Tensor<1, 2>
+  Tensor<1, dim>
   BoundaryResultants::resultant(
-    const types::boundary_id                          boundary_id,
-    const Vector<double>                             &reactions,
-    const std::map<types::boundary_id, Tensor<1, 2>> &applied) const
+    const types::boundary_id                            boundary_id,
+    const Vector<double>                               &reactions,
+    const std::map<types::boundary_id, Tensor<1, dim>> &applied) const
   {
     // A node's reaction as a vector: its u_x and u_y rows.
     const auto reaction_at = [&](const Node &node) {
-      return Tensor<1, 2>({reactions(node[0]), reactions(node[1])});
+      return Tensor<1, dim>({reactions(node[0]), reactions(node[1])});
     };
     // The applied load is integrated by the assembly over the boundary's
     // own faces: no corner question arises for it.
-    Tensor<1, 2> result;
+    Tensor<1, dim> result;
     if (const auto load = applied.find(boundary_id); load != applied.end())
       result += load->second;
     // The directions this boundary holds alone, node by node: the

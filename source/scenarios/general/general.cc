@@ -20,6 +20,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_mesh.h>
 #include <ring_contact/input/model_curves.h>
 #include <ring_contact/input/parameter_file.h>
@@ -49,7 +50,7 @@ namespace RingContact
       double
       finite_value(const double                       value,
                    const BoundaryConditionParameters &condition,
-                   const Point<2>                    &X,
+                   const Point<dim>                  &X,
                    const double                       time)
       {
         if (std::isfinite(value))
@@ -74,7 +75,7 @@ namespace RingContact
       // reference position at the load state's time, with the layout of the
       // unknowns (u_x, u_y, multiplier): a polar displacement (u_r, u_theta)
       // is turned into Cartesian components.
-      class ImposedDisplacement : public Function<2>
+      class ImposedDisplacement : public Function<dim>
       {
       public:
         // Made per condition and load state, its expression parsed anew:
@@ -82,7 +83,7 @@ namespace RingContact
         ImposedDisplacement(const BoundaryConditionParameters   &condition,
                             const std::map<std::string, double> &constants,
                             const double                         time)
-            : Function<2>(Components::n_components, time)
+            : Function<dim>(Components::n_components, time)
             , condition(condition)
             , expression(make_expression(condition.expressions,
                                          constants,
@@ -96,11 +97,11 @@ namespace RingContact
         // component is masked out by the caller, but a Function of the
         // system must give every component.
         void
-        vector_value(const Point<2> &X, Vector<double> &values) const override
+        vector_value(const Point<dim> &X, Vector<double> &values) const override
         {
           Vector<double> u(2);
           expression->vector_value(X, u);
-          for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int c = 0; c < dim; ++c)
             if (condition.components[c])
               finite_value(u(c), condition, X, this->get_time());
           // u = u_r e_r + u_theta e_theta, with the angle of the reference
@@ -122,7 +123,7 @@ namespace RingContact
 
         // deal.II's interpolation may ask for one component at a time.
         double
-        value(const Point<2> &X, const unsigned int component) const override
+        value(const Point<dim> &X, const unsigned int component) const override
         {
           Vector<double> values(Components::n_components);
           vector_value(X, values);
@@ -132,8 +133,8 @@ namespace RingContact
       private:
         // By reference: the condition lives in the problem's entries, which
         // outlive every load state's function.
-        const BoundaryConditionParameters &condition;
-        std::unique_ptr<FunctionParser<2>> expression;
+        const BoundaryConditionParameters   &condition;
+        std::unique_ptr<FunctionParser<dim>> expression;
       };
 
       // A problem written in the parameter file.
@@ -155,7 +156,7 @@ namespace RingContact
         // the audit of its tags first (a line it drops leaves a
         // boundary without faces, which check_bodies() would report).
         void
-        create_mesh(Triangulation<2> &triangulation) const override
+        create_mesh(Triangulation<dim> &triangulation) const override
         {
           const Geometry::GmshMesh mesh =
             Geometry::read_gmsh(triangulation,
@@ -225,7 +226,7 @@ namespace RingContact
                 // the problem class keeps and calls at every quadrature point
                 // of the loaded faces. Setting its time from a const lambda
                 // is safe because the program runs one thread.
-                std::shared_ptr<FunctionParser<2>> expression =
+                std::shared_ptr<FunctionParser<dim>> expression =
                   make_expression(condition.expressions,
                                   problem.constants,
                                   condition.name);
@@ -237,10 +238,10 @@ namespace RingContact
                   condition.type == BoundaryConditionType::pressure ?
                     BoundaryLoad::Type::pressure :
                     BoundaryLoad::Type::traction,
-                  [expression, n, condition](const Point<2>  &X,
-                                             const LoadState &load) {
+                  [expression, n, condition](const Point<dim> &X,
+                                             const LoadState  &load) {
                     expression->set_time(load.time);
-                    Tensor<1, 2> value;
+                    Tensor<1, dim> value;
                     for (unsigned int c = 0; c < n; ++c)
                       value[c] = finite_value(expression->value(X, c),
                                               condition,
@@ -262,8 +263,8 @@ namespace RingContact
         // class once the unknowns exist, before the first step, with the
         // pseudo-time of every step of the load program.
         void
-        check_boundary_data(const DoFHandler<2>            &dof_handler,
-                            const hp::MappingCollection<2> &mapping,
+        check_boundary_data(const DoFHandler<dim>            &dof_handler,
+                            const hp::MappingCollection<dim> &mapping,
                             const std::vector<double> &times) const override
         {
           const auto &conditions = problem.boundary_conditions;
@@ -303,13 +304,14 @@ namespace RingContact
                     for (const BoundaryNode &node : nodes)
                       for (const double t : times)
                         {
-                          const LoadState    state{0, 0, t};
-                          const Tensor<1, 2> value = load.value(node.X, state);
+                          const LoadState      state{0, 0, t};
+                          const Tensor<1, dim> value =
+                            load.value(node.X, state);
                           // A pressure pushes along the inward normal, -p N,
                           // taken on the reference boundary.
-                          const Tensor<1, 2> force =
+                          const Tensor<1, dim> force =
                             load.type == BoundaryLoad::Type::pressure ?
-                              Tensor<1, 2>(-value[0] * node.N) :
+                              Tensor<1, dim>(-value[0] * node.N) :
                               value;
                           // Relative to the force: a component that is zero
                           // up to round-off (cos(pi / 2) = 6e-17) passes.
@@ -443,8 +445,8 @@ namespace RingContact
                 reference->set_time(row.time);
                 // An L2 error is its own error: its reference expression is
                 // the pressure it was measured against.
-                const bool is_error = check.quantity ==
-                                      ProblemQuantity::contact_pressure_l2_error;
+                const bool is_error =
+                  check.quantity == ProblemQuantity::contact_pressure_l2_error;
                 v.reference = is_error ? 0 : reference->value(check.point);
                 v.error     = v.value - v.reference;
                 if (check.relative && !is_error)
@@ -486,9 +488,9 @@ namespace RingContact
         // already gets the other from its normal condition; only a node with
         // nothing else imposed keeps the single linear condition N . u = g.
         ImposedMotion
-        boundary_motion(const DoFHandler<2>            &dof_handler,
-                        const hp::MappingCollection<2> &mapping,
-                        const LoadState                &load) const override
+        boundary_motion(const DoFHandler<dim>            &dof_handler,
+                        const hp::MappingCollection<dim> &mapping,
+                        const LoadState                  &load) const override
         {
           std::map<types::global_dof_index, double> values =
             cartesian_displacements(dof_handler, mapping, load);
@@ -505,8 +507,8 @@ namespace RingContact
               // Two groups: the normals near the first one, and the others.
               // Within a group the faces' normals are averaged: on a faceted
               // curve the bisector, on a straight boundary the exact normal.
-              std::array<Tensor<1, 2>, 2> sum;
-              std::array<double, 2>       value = {{0, 0}};
+              std::array<Tensor<1, dim>, 2> sum;
+              std::array<double, 2>         value = {{0, 0}};
               for (const auto &[n, g] : list)
                 {
                   const unsigned int group =
@@ -514,7 +516,7 @@ namespace RingContact
                   sum[group] += n;
                   value[group] = g; // the later condition decides
                 }
-              std::array<Tensor<1, 2>, 2> N;
+              std::array<Tensor<1, dim>, 2> N;
               for (unsigned int k = 0; k < 2; ++k)
                 if (sum[k].norm() > 0)
                   N[k] = sum[k] / sum[k].norm();
@@ -561,9 +563,9 @@ namespace RingContact
         // node on two boundaries (a corner) takes the later condition's value
         // for a component both impose.
         std::map<types::global_dof_index, double>
-        cartesian_displacements(const DoFHandler<2>            &dof_handler,
-                                const hp::MappingCollection<2> &mapping,
-                                const LoadState                &load) const
+        cartesian_displacements(const DoFHandler<dim>            &dof_handler,
+                                const hp::MappingCollection<dim> &mapping,
+                                const LoadState                  &load) const
         {
           std::map<types::global_dof_index, double> values;
           for (const auto &condition : problem.boundary_conditions)
@@ -596,12 +598,12 @@ namespace RingContact
         // imposed value g of each face of a normal condition at the node.
         using Node = std::array<types::global_dof_index, 2>;
         using NormalFaces =
-          std::map<Node, std::vector<std::pair<Tensor<1, 2>, double>>>;
+          std::map<Node, std::vector<std::pair<Tensor<1, dim>, double>>>;
 
         NormalFaces
-        normal_faces(const DoFHandler<2>            &dof_handler,
-                     const hp::MappingCollection<2> &mapping,
-                     const LoadState                &load) const
+        normal_faces(const DoFHandler<dim>            &dof_handler,
+                     const hp::MappingCollection<dim> &mapping,
+                     const LoadState                  &load) const
         {
           // The quadrature of a face is its support points, one per face
           // unknown: quadrature point i is then where face unknown i sits, and
@@ -613,11 +615,11 @@ namespace RingContact
           for (unsigned int i = 0; i < fe_collection.size(); ++i)
             support_points.push_back(
               Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
-          hp::FEFaceValues<2>                  face_values(mapping,
-                                          fe_collection,
-                                          support_points,
-                                          update_quadrature_points |
-                                            update_normal_vectors);
+          hp::FEFaceValues<dim>                face_values(mapping,
+                                            fe_collection,
+                                            support_points,
+                                            update_quadrature_points |
+                                              update_normal_vectors);
           std::vector<types::global_dof_index> face_dofs;
           for (const auto &condition : problem.boundary_conditions)
             if (condition.type == BoundaryConditionType::displacement &&
@@ -633,9 +635,9 @@ namespace RingContact
                         cell->face(f)->boundary_id() == condition.boundary_id)
                       {
                         face_values.reinit(cell, f);
-                        const FEFaceValues<2> &fv =
+                        const FEFaceValues<dim> &fv =
                           face_values.get_present_fe_values();
-                        const FiniteElement<2> &fe = cell->get_fe();
+                        const FiniteElement<dim> &fe = cell->get_fe();
                         face_dofs.resize(fe.n_dofs_per_face(f));
                         cell->face(f)->get_dof_indices(face_dofs,
                                                        cell->active_fe_index());

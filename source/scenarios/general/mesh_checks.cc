@@ -8,6 +8,7 @@
 // Every such mismatch is refused here, before the first step, with the tag and
 // the entry that names it. The audit of the file itself (every boundary face
 // tagged once) has run before, in Geometry::check_boundary_tags().
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/general/general.h>
 
 #include <map>
@@ -31,7 +32,7 @@ namespace RingContact
       // boundaries join.
       void
       check_slave_surfaces_apart(
-        const Triangulation<2>                                   &triangulation,
+        const Triangulation<dim>                                 &triangulation,
         const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
         const std::string                                        &name)
       {
@@ -59,8 +60,8 @@ namespace RingContact
     } // namespace
 
     void
-    check_bodies(const Triangulation<2> &triangulation,
-                 const Parameters       &parameters)
+    check_bodies(const Triangulation<dim> &triangulation,
+                 const Parameters         &parameters)
     {
       const std::string name = "mesh '" + parameters.mesh.mesh_file + "'";
       const auto &problem    = parameters.scenario_entries<ProblemParameters>();

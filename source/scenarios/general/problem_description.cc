@@ -22,6 +22,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/general/problem_description.h>
@@ -231,7 +232,7 @@ namespace RingContact
   // origin but may be on its boundary; whether a value is finite is checked
   // where and when it is used (a BoundaryDataError that names the
   // condition, the point and the time).
-  std::unique_ptr<FunctionParser<2>>
+  std::unique_ptr<FunctionParser<dim>>
   make_expression(const std::vector<std::string>      &expressions,
                   const std::map<std::string, double> &constants,
                   const std::string                   &what)
@@ -241,7 +242,7 @@ namespace RingContact
     // variables are the reference coordinates: a condition is written on
     // the undeformed mesh, whatever the body's motion.
     auto function =
-      std::make_unique<FunctionParser<2>>(expressions.size(), 0.0);
+      std::make_unique<FunctionParser<dim>>(expressions.size(), 0.0);
     std::string problem;
     {
       CaptureStandardError capture;
@@ -249,7 +250,7 @@ namespace RingContact
         {
           function->initialize("x,y,t", expressions, with_pi(constants), true);
           Vector<double> values(expressions.size());
-          function->vector_value(Point<2>(), values);
+          function->vector_value(Point<dim>(), values);
         }
       catch (...)
         {
@@ -604,7 +605,7 @@ namespace RingContact
           "from where a contact width is measured.",
           [this](const std::string &text) {
             const auto xy = point_from_text(text, name, "Point");
-            point         = Point<2>(xy[0], xy[1]);
+            point         = Point<dim>(xy[0], xy[1]);
           });
     s.add("Boundary id",
           boundary_id,

@@ -12,6 +12,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/general/general.h>
 
 #include <algorithm>
@@ -112,7 +113,7 @@ namespace RingContact
           case ProblemQuantity::resultant_force_x:
           case ProblemQuantity::resultant_force_y:
             {
-              const Tensor<1, 2> force = resultant_force(check, state);
+              const Tensor<1, dim> force = resultant_force(check, state);
               return check.quantity == ProblemQuantity::resultant_force_x ?
                        force[0] :
                        force[1];
@@ -201,7 +202,7 @@ namespace RingContact
           // with the same answer.
           for (unsigned int k = 0; k < t.size(); ++k)
             {
-              const Point<2> x      = slave.reference_point(s, t[k]).x;
+              const Point<dim> x    = slave.reference_point(s, t[k]).x;
               const auto in_contact = [&](const types::global_dof_index dof) {
                 return state.contact_of(dof).active_set().is_active(dof) &&
                        state.reported_pressure(dof) > 0;
@@ -216,7 +217,7 @@ namespace RingContact
                     continue;
                   if (in_contact(dof_at(t[j])))
                     continue;
-                  const Point<2> edge =
+                  const Point<dim> edge =
                     slave.reference_point(s, 0.5 * (t[k] + t[j])).x;
                   width = std::max(width, edge.distance(check.point));
                 }
@@ -257,7 +258,7 @@ namespace RingContact
                           state,
                           rule,
                           [&](const double p,
-                              const Point<2> &,
+                              const Point<dim> &,
                               const double dS) {
                             integral += p * dS;
                             length += dS;
@@ -294,9 +295,9 @@ namespace RingContact
       along_slave_surface(slave,
                           state,
                           rule,
-                          [&](const double    p,
-                              const Point<2> &X,
-                              const double    dS) {
+                          [&](const double      p,
+                              const Point<dim> &X,
+                              const double      dS) {
                             const double p_ref = reference->value(X);
                             error += (p - p_ref) * (p - p_ref) * dS;
                             norm += p_ref * p_ref * dS;
@@ -309,7 +310,7 @@ namespace RingContact
     // loaded, its part of the reactions where it is supported
     // (BoundaryResultants, which splits a corner node's reaction between
     // the boundaries that hold it).
-    Tensor<1, 2>
+    Tensor<1, dim>
     CheckedQuantities::resultant_force(const ProblemCheckParameters &check,
                                        const SolutionState &state) const
     {

@@ -24,6 +24,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_mesh.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/reference_pressure.h>
@@ -160,9 +161,9 @@ namespace RingContact
                 "(slave) block");
         // The probe must be on the interface, 0 <= x <= 1, y = 0, or near. The
         // default probe, the rings' (0.6, 0), lies on it.
-        const Point<2> &x         = parameters.contact.probe_point;
-        const double    nearest_x = std::min(1.0, std::max(0.0, x[0]));
-        const double    distance  = Point<2>(nearest_x, 0).distance(x);
+        const Point<dim> &x         = parameters.contact.probe_point;
+        const double      nearest_x = std::min(1.0, std::max(0.0, x[0]));
+        const double      distance  = Point<dim>(nearest_x, 0).distance(x);
         require(distance <= 0.05,
                 "Contact",
                 "Probe point",
@@ -204,15 +205,15 @@ namespace RingContact
     // on the lower block's side and 400 on the upper's, the vertical sides 0,
     // free.
     void
-    make_blocks(Triangulation<2>          &triangulation,
+    make_blocks(Triangulation<dim>        &triangulation,
                 const PatchTestParameters &blocks)
     {
       // Lower block [0, 1] x [-0.5, 0] (master body, material 100), upper
       // block [0, 1] x [0, 0.5] (slave body, 101), two layers of cells each,
       // different numbers of cells along the interface: non-matching.
-      std::vector<Point<2>>    vertices;
-      std::vector<CellData<2>> cells;
-      const auto               add_block = [&](const double       y0,
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      const auto                 add_block = [&](const double       y0,
                                  const unsigned int nx,
                                  const unsigned int material_id) {
         // Vertices row by row, x fastest; each cell's vertices in deal.II's
@@ -225,8 +226,8 @@ namespace RingContact
         for (unsigned int j = 0; j < ny; ++j)
           for (unsigned int i = 0; i < nx; ++i)
             {
-              CellData<2> cell;
-              const auto  v = [&](const unsigned int a, const unsigned int b) {
+              CellData<dim> cell;
+              const auto v = [&](const unsigned int a, const unsigned int b) {
                 return offset + b * (nx + 1) + a;
               };
               cell.vertices    = {v(i, j),
@@ -279,7 +280,7 @@ namespace RingContact
       {}
 
       void
-      create_mesh(Triangulation<2> &triangulation) const override
+      create_mesh(Triangulation<dim> &triangulation) const override
       {
         // The size is checked before the blocks exist: the elements along each
         // block go up to 100000 and each refinement multiplies the cells by 4.
@@ -332,9 +333,9 @@ namespace RingContact
       }
 
       ImposedMotion
-      boundary_motion(const DoFHandler<2>            &dof_handler,
-                      const hp::MappingCollection<2> &mapping,
-                      const LoadState                &load) const override
+      boundary_motion(const DoFHandler<dim>            &dof_handler,
+                      const hp::MappingCollection<dim> &mapping,
+                      const LoadState                  &load) const override
       {
         const auto &m       = parameters.materials;
         const auto  modulus = [&](const double E, const double nu) {
@@ -362,7 +363,7 @@ namespace RingContact
         VectorTools::interpolate_boundary_values(mapping,
                                                  dof_handler,
                                                  Ids::bottom,
-                                                 Functions::ZeroFunction<2>(
+                                                 Functions::ZeroFunction<dim>(
                                                    Components::n_components),
                                                  values,
                                                  vertical);
@@ -372,7 +373,7 @@ namespace RingContact
           mapping,
           dof_handler,
           Ids::top,
-          Functions::ConstantFunction<2>(
+          Functions::ConstantFunction<dim>(
             std::vector<double>{0, -shortening, 0, 0}), // u, the multipliers
           values,
           vertical);

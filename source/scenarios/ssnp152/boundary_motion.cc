@@ -11,6 +11,7 @@
 // contact only transmits the pressure.
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/ssnp152/boundary_motion.h>
 
 #include <cmath>
@@ -20,13 +21,13 @@ namespace RingContact
   BoundaryMotion::BoundaryMotion(const double       radial_displacement,
                                  const double       rotation_angle,
                                  const unsigned int n_components)
-      : Function<2>(n_components)
+      : Function<dim>(n_components)
       , radial_displacement(radial_displacement)
       , rotation_angle(rotation_angle)
   {}
 
   double
-  BoundaryMotion::value(const Point<2> &X, const unsigned int component) const
+  BoundaryMotion::value(const Point<dim> &X, const unsigned int component) const
   {
     // The multipliers are not boundary data: zero, and the interpolation's
     // displacement mask leaves them out anyway.
@@ -40,8 +41,8 @@ namespace RingContact
     // (R3 + f) (cos(theta + alpha), sin(theta + alpha)) - X of doc/intro.md:
     // the rotation acts on the radial part too, so the contraction turns with
     // the boundary.
-    const double       r = X.norm();
-    const Tensor<1, 2> radial(X * (radial_displacement / r));
+    const double         r = X.norm();
+    const Tensor<1, dim> radial(X * (radial_displacement / r));
     const double c = std::cos(rotation_angle), s = std::sin(rotation_angle);
     const double half_sine = std::sin(0.5 * rotation_angle);
     const double c_minus_1 = -2 * half_sine * half_sine;
@@ -53,7 +54,8 @@ namespace RingContact
   }
 
   void
-  BoundaryMotion::vector_value(const Point<2> &X, Vector<double> &values) const
+  BoundaryMotion::vector_value(const Point<dim> &X,
+                               Vector<double>   &values) const
   {
     for (unsigned int c = 0; c < values.size(); ++c)
       values[c] = value(X, c);

@@ -7,6 +7,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/ssnp152/ssnp152.h>
 
 #include <cmath>
@@ -33,7 +34,7 @@ namespace RingContact
     // afterwards puts the refined vertices, and with a mapping of degree 2 or
     // more the element edges, on them as well.
     void
-    make_rings(Triangulation<2> &triangulation, const RingParameters &rings)
+    make_rings(Triangulation<dim> &triangulation, const RingParameters &rings)
     {
       // The whole rings, or (cyclic symmetry) a sector of `sector_elements`
       // columns from angle 0, whose two radial sides are boundaries.
@@ -41,8 +42,8 @@ namespace RingContact
       const bool         sector    = rings.sector_elements > 0;
       const unsigned int n_columns = sector ? rings.sector_elements : n_around;
       const unsigned int n_vertices_around = sector ? n_columns + 1 : n_around;
-      std::vector<Point<2>>    vertices;
-      std::vector<CellData<2>> cells;
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
 
       // One ring between radii r_in and r_out with n_radial cells across.
       // Cell (i, j): angular index i, radial index j. The local x axis runs
@@ -69,7 +70,7 @@ namespace RingContact
         for (unsigned int j = 0; j < n_radial; ++j)
           for (unsigned int i = 0; i < n_columns; ++i)
             {
-              CellData<2> cell;
+              CellData<dim> cell;
               cell.vertices    = {v(i, j),
                                   v(i, j + 1),
                                   v(i + 1, j),
@@ -98,16 +99,16 @@ namespace RingContact
       // outer ring, S2R2 (400) on the inner. 1e-8 R1 cannot confuse two
       // circles, since each ring is at least 1e-4 R1 thick
       // (RingParameters::finish()).
-      const double       tol          = 1e-8 * rings.outer_radius;
-      const double       sector_angle = rings.sector_angle();
-      const Tensor<1, 2> end_normal(
+      const double         tol          = 1e-8 * rings.outer_radius;
+      const double         sector_angle = rings.sector_angle();
+      const Tensor<1, dim> end_normal(
         {-std::sin(sector_angle), std::cos(sector_angle)});
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             {
-              const bool     outer  = cell->material_id() == Ids::outer_ring;
-              const Point<2> center = face->center();
+              const bool       outer  = cell->material_id() == Ids::outer_ring;
+              const Point<dim> center = face->center();
               if (sector && std::abs(center[1]) < tol && center[0] > 0 &&
                   cell->center()[1] > 0)
                 face->set_boundary_id(Ids::sector_start);
@@ -137,36 +138,36 @@ namespace RingContact
     // the sum short and a face listed twice makes it long, neither of which
     // the radius check sees.
     void
-    check_circles_covered(const Triangulation<2> &triangulation,
-                          const Parameters       &parameters,
-                          const std::string      &name)
+    check_circles_covered(const Triangulation<dim> &triangulation,
+                          const Parameters         &parameters,
+                          const std::string        &name)
     {
       const auto &rings = parameters.scenario_entries<RingParameters>();
-    std::map<types::boundary_id, double> angle_covered;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary())
-          {
-            const Point<2> a = face->vertex(0), b = face->vertex(1);
-            angle_covered[face->boundary_id()] +=
-              std::abs(std::atan2(a[0] * b[1] - a[1] * b[0], a * b));
-          }
-    const double full_turn =
-      rings.sector_elements > 0 ? rings.sector_angle() : 2 * numbers::PI;
-    for (const auto id : {Ids::outer_boundary,
-                          Ids::inner_boundary,
-                          static_cast<types::boundary_id>(
-                            parameters.contact.slave_boundary_id),
-                          static_cast<types::boundary_id>(
-                            parameters.contact.master_boundary_id)})
-      if (angle_covered.count(id) != 0 &&
-          std::abs(angle_covered[id] - full_turn) > 1e-6 * full_turn)
-        throw std::runtime_error(
-          name + ": boundary " + std::to_string(id) + " covers " +
-          std::to_string(angle_covered[id] * 180 / numbers::PI) +
-          " degrees of its circle instead of " +
-          std::to_string(full_turn * 180 / numbers::PI) +
-          " (a gap or an overlap)");
+      std::map<types::boundary_id, double> angle_covered;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<dim> a = face->vertex(0), b = face->vertex(1);
+              angle_covered[face->boundary_id()] +=
+                std::abs(std::atan2(a[0] * b[1] - a[1] * b[0], a * b));
+            }
+      const double full_turn =
+        rings.sector_elements > 0 ? rings.sector_angle() : 2 * numbers::PI;
+      for (const auto id : {Ids::outer_boundary,
+                            Ids::inner_boundary,
+                            static_cast<types::boundary_id>(
+                              parameters.contact.slave_boundary_id),
+                            static_cast<types::boundary_id>(
+                              parameters.contact.master_boundary_id)})
+        if (angle_covered.count(id) != 0 &&
+            std::abs(angle_covered[id] - full_turn) > 1e-6 * full_turn)
+          throw std::runtime_error(
+            name + ": boundary " + std::to_string(id) + " covers " +
+            std::to_string(angle_covered[id] * 180 / numbers::PI) +
+            " degrees of its circle instead of " +
+            std::to_string(full_turn * 180 / numbers::PI) +
+            " (a gap or an overlap)");
     }
 
     // @sect4{The checks of any mesh of the rings}
@@ -178,8 +179,8 @@ namespace RingContact
     // closed form solves. Each would show as a wrong pressure at A with no hint
     // of the cause, so each is refused here with what is wrong and where.
     void
-    check_rings(const Triangulation<2> &triangulation,
-                const Parameters       &parameters)
+    check_rings(const Triangulation<dim> &triangulation,
+                const Parameters         &parameters)
     {
       const auto       &rings = parameters.scenario_entries<RingParameters>();
       const std::string name = parameters.mesh.source == MeshSource::generated ?

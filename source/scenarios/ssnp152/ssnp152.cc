@@ -16,6 +16,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_mesh.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/reference_pressure.h>
@@ -225,7 +226,7 @@ namespace RingContact
       // (Before, such a file was refused: the default probe point was no
       // longer near the slave surface.)
       if (parameters.origins.count(entry_key("Contact", "Probe point")) == 0)
-        parameters.contact.probe_point = Point<2>(interface_radius, 0);
+        parameters.contact.probe_point = Point<dim>(interface_radius, 0);
       check_geometry(parameters);
       // The rings' load states carry a pressure and a rotation, which only
       // the ramp and the rotation program give.
@@ -371,9 +372,9 @@ namespace RingContact
       // distance is radial, and 5 % of R2 accepts any point meant to be on
       // the interface, not one meant elsewhere.
       {
-        const Point<2> &x = parameters.contact.probe_point;
-        double          distance;
-        double          scale;
+        const Point<dim> &x = parameters.contact.probe_point;
+        double            distance;
+        double            scale;
         distance = std::abs(x.norm() - interface_radius);
         scale    = interface_radius;
         require(distance <= 0.05 * scale,
@@ -465,7 +466,7 @@ namespace RingContact
         // refinement puts new vertices on the circles and a mapping of
         // degree >= 2 makes the element edges arcs.
         void
-        create_mesh(Triangulation<2> &triangulation) const override
+        create_mesh(Triangulation<dim> &triangulation) const override
         {
           // The size is estimated before the generated mesh exists (from
           // its counts), and after a gmsh mesh is read (from its cells),
@@ -507,7 +508,7 @@ namespace RingContact
           // Every cell and face, the radial sides of a sector included: on
           // a radial line the polar manifold is straight anyway.
           triangulation.set_all_manifold_ids(0);
-          triangulation.set_manifold(0, PolarManifold<2>(Point<2>()));
+          triangulation.set_manifold(0, PolarManifold<dim>(Point<dim>()));
           triangulation.refine_global(parameters.mesh.global_refinements);
         }
 
@@ -555,9 +556,9 @@ namespace RingContact
         // (r, 0) and (-r, 0), u_x = 0 at (0, r), on r = R1 for the outer ring
         // and r = R3 for the inner one.
         ImposedMotion
-        boundary_motion(const DoFHandler<2>            &dof_handler,
-                        const hp::MappingCollection<2> &mapping,
-                        const LoadState                &load) const override
+        boundary_motion(const DoFHandler<dim>            &dof_handler,
+                        const hp::MappingCollection<dim> &mapping,
+                        const LoadState                  &load) const override
         {
           std::map<types::global_dof_index, double> values;
           if (pressure_loading)
@@ -581,7 +582,7 @@ namespace RingContact
           const BoundaryMotion inner(analytic.f_R3(load.pressure),
                                      angle,
                                      Components::n_components);
-          const std::map<types::boundary_id, const Function<2> *> motion = {
+          const std::map<types::boundary_id, const Function<dim> *> motion = {
             {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
           // Interpolated at the support points of the boundaries' unknowns
           // (through the mapping, so on the circles where the mapping is
@@ -604,8 +605,8 @@ namespace RingContact
             return {};
           return {BoundaryLoad{Ids::outer_boundary,
                                BoundaryLoad::Type::pressure,
-                               [](const Point<2> &, const LoadState &load) {
-                                 return Tensor<1, 2>({load.pressure, 0.0});
+                               [](const Point<dim> &, const LoadState &load) {
+                                 return Tensor<1, dim>({load.pressure, 0.0});
                                }}};
         }
 
@@ -656,7 +657,7 @@ namespace RingContact
       private:
         void
         add_rigid_body_points(
-          const DoFHandler<2>                       &dof_handler,
+          const DoFHandler<dim>                     &dof_handler,
           std::map<types::global_dof_index, double> &values) const
         {
           for (const auto &[boundary, r] :
@@ -668,10 +669,10 @@ namespace RingContact
               // removes the two translations and the rotation of the ring and
               // constrains nothing the solution does not satisfy.
               // (point, component)
-              const std::array<std::pair<Point<2>, unsigned int>, 3> fixed = {
-                {{Point<2>(r, 0), 1},
-                 {Point<2>(-r, 0), 1},
-                 {Point<2>(0, r), 0}}};
+              const std::array<std::pair<Point<dim>, unsigned int>, 3> fixed = {
+                {{Point<dim>(r, 0), 1},
+                 {Point<dim>(-r, 0), 1},
+                 {Point<dim>(0, r), 0}}};
               // The points are found among the vertices of the boundary's
               // faces (to 1e-8 r); a vertex's unknown on both of its faces is
               // set twice to the same zero.

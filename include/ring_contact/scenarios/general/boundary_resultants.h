@@ -20,6 +20,8 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
+#include <ring_contact/base/dimension.h>
+
 #include <array>
 #include <functional>
 #include <map>
@@ -47,8 +49,8 @@ namespace RingContact
 
     /// The unit directions held at the point X of the boundary, where N is
     /// its outward normal.
-    std::vector<Tensor<1, 2>>
-    directions(const Point<2> &X, const Tensor<1, 2> &N) const;
+    std::vector<Tensor<1, dim>>
+    directions(const Point<dim> &X, const Tensor<1, dim> &N) const;
   };
 
   /// A node of a boundary face: its position, the outward normal there, its
@@ -56,8 +58,8 @@ namespace RingContact
   /// face.
   struct BoundaryNode
   {
-    Point<2>                               X;
-    Tensor<1, 2>                           N;
+    Point<dim>                             X;
+    Tensor<1, dim>                         N;
     std::array<types::global_dof_index, 2> dofs;
     double                                 weight;
   };
@@ -65,9 +67,9 @@ namespace RingContact
   /// Call `visit(cell, face, nodes)` for every boundary face with its nodes.
   void
   for_each_boundary_face(
-    const DoFHandler<2>            &dof_handler,
-    const hp::MappingCollection<2> &mapping,
-    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+    const DoFHandler<dim>                                        &dof_handler,
+    const hp::MappingCollection<dim>                             &mapping,
+    const std::function<void(const DoFHandler<dim>::active_cell_iterator &,
                              const unsigned int,
                              const std::vector<BoundaryNode> &)> &visit);
 
@@ -77,17 +79,18 @@ namespace RingContact
   class BoundaryResultants
   {
   public:
-    BoundaryResultants(const DoFHandler<2>                 &dof_handler,
-                       const hp::MappingCollection<2>      &mapping,
+    BoundaryResultants(const DoFHandler<dim>               &dof_handler,
+                       const hp::MappingCollection<dim>    &mapping,
                        const std::vector<SupportCondition> &supports);
 
     /// The resultant on `boundary_id`: its applied load (`applied`, per
     /// boundary, the integral of the loads on its faces) plus its part of
     /// the reactions (`reactions`, NodalForces::reactions()).
-    Tensor<1, 2>
-    resultant(const types::boundary_id                         boundary_id,
-              const Vector<double>                            &reactions,
-              const std::map<types::boundary_id, Tensor<1, 2>> &applied) const;
+    Tensor<1, dim>
+    resultant(
+      const types::boundary_id                            boundary_id,
+      const Vector<double>                               &reactions,
+      const std::map<types::boundary_id, Tensor<1, dim>> &applied) const;
 
   private:
     using Node = std::array<types::global_dof_index, 2>;
@@ -95,8 +98,8 @@ namespace RingContact
     /// only one that holds the node in that direction, its part of it.
     struct Share
     {
-      Node         node;
-      Tensor<2, 2> part;
+      Node           node;
+      Tensor<2, dim> part;
     };
     std::map<types::boundary_id, std::vector<Share>> shares;
 
@@ -105,8 +108,8 @@ namespace RingContact
     /// other nodes next to it with theirs (see resultant()).
     struct Member
     {
-      types::boundary_id                  boundary;
-      double                              weight;
+      types::boundary_id                   boundary;
+      double                               weight;
       std::vector<std::pair<Node, double>> neighbours;
     };
     /// A direction held at a node by several boundaries: the node's
@@ -114,7 +117,7 @@ namespace RingContact
     struct SharedDirection
     {
       Node                node;
-      Tensor<1, 2>        direction, amount;
+      Tensor<1, dim>      direction, amount;
       std::vector<Member> members;
     };
     std::vector<SharedDirection> shared_directions;
@@ -124,10 +127,10 @@ namespace RingContact
     /// faces.
     struct Holder
     {
-      types::boundary_id        boundary;
-      std::vector<Tensor<1, 2>> directions;
-      double                    weight;
-      std::set<Node>            neighbours;
+      types::boundary_id          boundary;
+      std::vector<Tensor<1, dim>> directions;
+      double                      weight;
+      std::set<Node>              neighbours;
     };
     using Holders = std::map<Node, std::vector<Holder>>;
     /// The weight of each node on each boundary.

@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/problem/solution_state.h>
 #include <ring_contact/scenarios/general/boundary_resultants.h>
@@ -27,8 +28,8 @@ namespace RingContact
     /// multiplier degree at most the slave body's, and the slave surfaces
     /// of two pairs apart.
     void
-    check_bodies(const Triangulation<2> &triangulation,
-                 const Parameters       &parameters);
+    check_bodies(const Triangulation<dim> &triangulation,
+                 const Parameters         &parameters);
 
     /// The quantities of the checks at a converged state.
     class CheckedQuantities
@@ -62,7 +63,7 @@ namespace RingContact
       surface_pressure(const ProblemCheckParameters &check,
                        const SolutionState          &state,
                        const ContactSurface         &slave) const;
-      Tensor<1, 2>
+      Tensor<1, dim>
       resultant_force(const ProblemCheckParameters &check,
                       const SolutionState          &state) const;
       double

@@ -33,6 +33,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameters.h>
 
@@ -130,7 +131,7 @@ namespace RingContact
   struct ProblemCheckParameters
   {
     ProblemQuantity quantity = ProblemQuantity::none;
-    Point<2>        point;
+    Point<dim>      point;
     unsigned int    boundary_id;
     /// The reference, an expression of x, y (the point) and t.
     std::string reference;
@@ -234,7 +235,7 @@ namespace RingContact
   /// An expression of x, y and t with the problem's constants, n components
   /// separated by ';' (deal.II's FunctionParser). Throws a one-line message
   /// naming `what` if it does not parse or does not evaluate at the origin.
-  std::unique_ptr<FunctionParser<2>>
+  std::unique_ptr<FunctionParser<dim>>
   make_expression(const std::vector<std::string>      &expressions,
                   const std::map<std::string, double> &constants,
                   const std::string                   &what);

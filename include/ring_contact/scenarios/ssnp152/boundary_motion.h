@@ -6,6 +6,8 @@
 
 #include <deal.II/base/function.h>
 
+#include <ring_contact/base/dimension.h>
+
 namespace RingContact
 {
   using namespace dealii;
@@ -17,7 +19,7 @@ namespace RingContact
    * sin(theta + alpha)) - X, exactly as SSNP152 writes it. Components beyond
    * the first two (the multiplier) are zero.
    */
-  class BoundaryMotion : public Function<2>
+  class BoundaryMotion : public Function<dim>
   {
   public:
     BoundaryMotion(const double       radial_displacement,
@@ -25,10 +27,10 @@ namespace RingContact
                    const unsigned int n_components);
 
     double
-    value(const Point<2> &X, const unsigned int component) const override;
+    value(const Point<dim> &X, const unsigned int component) const override;
 
     void
-    vector_value(const Point<2> &X, Vector<double> &values) const override;
+    vector_value(const Point<dim> &X, Vector<double> &values) const override;
 
   private:
     const double radial_displacement;

@@ -15,6 +15,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 
 #include <algorithm>
@@ -139,15 +140,15 @@ namespace RingContact
     /// material ids 100 (outer) / 101 (inner), boundary ids 200/300/400/500
     /// (and 600/601 on the sides of a sector).
     void
-    make_rings(Triangulation<2> &triangulation, const RingParameters &rings);
+    make_rings(Triangulation<dim> &triangulation, const RingParameters &rings);
 
     /// Throw a one-line error if the mesh lacks what the rings need: the
     /// two ring material ids, the boundaries 200 and 500 and the slave and
     /// master boundaries, each on its circle, covering it once, and in one
     /// ring.
     void
-    check_rings(const Triangulation<2> &triangulation,
-                const Parameters       &parameters);
+    check_rings(const Triangulation<dim> &triangulation,
+                const Parameters         &parameters);
   } // namespace Ssnp152
 } // namespace RingContact
 
