@@ -233,7 +233,7 @@ namespace
       {"Patch test", "Elements lower block"},
       {"Materials", "Young's modulus outer ring"},
       {"Materials", "Poisson's ratio inner ring"},
-      {"Materials", "Kinematics"},
+      {"Materials", "Material law"},
       {"Finite elements", "Displacement degree outer ring"},
       {"Finite elements", "Multiplier degree"},
       {"Finite elements", "Mapping degree"},

@@ -226,8 +226,8 @@ main()
                " set Value = 0; 0\nend\n",
                "a normal displacement needs 1");
   expect_error("body_kinematics_unknown",
-               "subsection Body 1\n set Kinematics = large strain\nend\n",
-               "Kinematics");
+               "subsection Body 1\n set Material law = large strain\nend\n",
+               "Material law");
   // Boundary data that gives no number is named, with where and when.
   expect_error("displacement_not_finite",
                "subsection Boundary condition 2\n set Value = sqrt(-1); 0\n"

@@ -87,7 +87,7 @@ namespace
            "(1 - nu2^2) / E2), P = pi * a0^2 * Es / (4 * R), q = P / (2 * R)\n"
            "end\n"
            "subsection Mesh\n set Geo parameters = h = 0.005, d0 = 0\nend\n"
-           "subsection Materials\n set Kinematics = " +
+           "subsection Materials\n set Material law = " +
            kinematics +
            "\nend\n"
            "subsection Body 1\n set Young's modulus = 2.1e11\nend\n"

@@ -107,7 +107,7 @@ main()
   for (const auto plane :
        {PlaneAssumption::plane_strain, PlaneAssumption::plane_stress})
     {
-      const Material         material(E, nu, plane, Kinematics::neo_hookean);
+      const Material         material(E, nu, plane, "neo-Hookean");
       const ElasticConstants c(E, nu, plane);
       const double           lambda = c.lambda_3d, mu = c.mu;
       const std::string plane_name = plane == PlaneAssumption::plane_strain ?
@@ -227,11 +227,11 @@ main()
   const Material neo(E,
                      nu,
                      PlaneAssumption::plane_strain,
-                     Kinematics::neo_hookean);
+                     "neo-Hookean");
   const Material svk(E,
                      nu,
                      PlaneAssumption::plane_strain,
-                     Kinematics::finite_strain);
+                     "finite strain");
   double         worst     = 0;
   bool           monotonic = true;
   double         previous = 0, svk_previous = 0, svk_peak = 0;

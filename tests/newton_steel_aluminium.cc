@@ -29,7 +29,7 @@ main()
             << " set Poisson's ratio outer ring = 0.3\n"
             << " set Young's modulus inner ring = 7e10\n"
             << " set Poisson's ratio inner ring = 0.33\n"
-            << " set Kinematics = " << kinematics << "\nend\n"
+            << " set Material law = " << kinematics << "\nend\n"
             << "subsection Contact\n set Integration schemes = " << scheme
             << "\nend\n"
             << "subsection Load program\n set Reference pressure = 1e3\nend\n";

@@ -146,7 +146,7 @@ main()
           "subsection Materials\n"
           "  set Young's modulus outer ring = 2e11\n"
           "  set Plane assumption = plane strain\n"
-          "  set Kinematics = neo-Hookean\n"
+          "  set Material law = neo-Hookean\n"
           "end\n"
           "subsection Finite elements\n"
           "  set Reduced integration = true\n"
@@ -172,7 +172,7 @@ main()
     p.read("values.prm");
     check(rings(p).youngs_modulus_outer == 2e11, "number");
     check(p.materials.plane == PlaneAssumption::plane_strain, "choice");
-    check(p.materials.kinematics == Kinematics::neo_hookean, "kinematics");
+    check(p.materials.law == "neo-Hookean", "material law");
     check(p.finite_elements.reduced_integration, "flag");
     check(p.load.ramp_steps == 5, "integer set twice: the last value");
     check(p.contact.schemes.size() == 2 &&
@@ -336,5 +336,31 @@ main()
         deallog_file << "constants '" << constants << "': " << error
                      << std::endl;
       }
+
+    // The entry's old name, Kinematics (until 0.11), is still read, with a
+    // note for the log; beside a Material law that says otherwise it is
+    // refused. The same for a body of a general problem.
+    write("old_name.prm",
+          "subsection Materials\n  set Kinematics = small strain\nend\n");
+    Parameters old;
+    old.read("old_name.prm");
+    check(old.materials.law == "linear elasticity" && old.notes.size() == 1,
+          "Materials/Kinematics read as Material law");
+    deallog_file << "old name: " << old.notes.at(0) << std::endl;
+    write("old_name_conflict.prm",
+          "subsection Materials\n  set Kinematics = small strain\n"
+          "  set Material law = Hencky\nend\n");
+    deallog_file << "old name against the new: "
+                 << error_of("old_name_conflict.prm") << std::endl;
+    write("old_name_body.prm",
+          head + "subsection Body 2\n  set Kinematics = logarithmic strain\n"
+                 "end\n");
+    Parameters body;
+    body.read("old_name_body.prm");
+    check(body.scenario_entries<ProblemParameters>().bodies.at(1).law ==
+              "Hencky" &&
+            body.notes.size() == 1,
+          "Body 2/Kinematics read as Material law");
+    deallog_file << "old name of a body: " << body.notes.at(0) << std::endl;
   }
 }

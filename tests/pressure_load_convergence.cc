@@ -28,7 +28,7 @@ namespace
         << "subsection Mesh\n set Elements around = " << around
         << "\n set Radial elements outer ring = " << 3 * around / 40
         << "\n set Radial elements inner ring = " << 3 * around / 40
-        << "\nend\nsubsection Materials\n set Kinematics = " << kinematics
+        << "\nend\nsubsection Materials\n set Material law = " << kinematics
         << "\nend\nsubsection Contact\n set Integration schemes = Gauss 3\n"
         << "end\nsubsection Load program\n set Ramp steps = 1\n"
         << " set Reference pressure = 1e8\nend\n"

@@ -40,7 +40,7 @@ namespace
     const Material material(1e9,
                             0.2,
                             PlaneAssumption::plane_stress,
-                            Kinematics::small_strain);
+                            "small strain");
     Tensor<2, 2>   P;
     Tensor<4, 2>   A;
     material.stress_and_tangent(Tensor<2, 2>(), P, A);

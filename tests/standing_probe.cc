@@ -88,7 +88,7 @@ namespace
         text << "subsection Body " << b << "\n set Young's modulus = " << E
              << "\n set Poisson's ratio = " << nu
              << "\n set Displacement degree = " << p
-             << "\n set Kinematics = " << kinematics << "\nend\n";
+             << "\n set Material law = " << kinematics << "\nend\n";
         summary += (b > 1 ? ", " : "") + kinematics + " Q" + std::to_string(p);
       }
     return text.str();

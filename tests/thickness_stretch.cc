@@ -37,15 +37,15 @@ main()
       const Material svk(E,
                          nu,
                          PlaneAssumption::plane_stress,
-                         Kinematics::finite_strain);
+                         "finite strain");
       const Material neo_hookean(E,
                                  nu,
                                  PlaneAssumption::plane_stress,
-                                 Kinematics::neo_hookean);
+                                 "neo-Hookean");
       const Material hencky(E,
                             nu,
                             PlaneAssumption::plane_stress,
-                            Kinematics::logarithmic_strain);
+                            "logarithmic strain");
       const double   svk_bound = std::sqrt(1 + 0.5 / ratio);
       out << "nu = " << nu
           << ": Saint Venant-Kirchhoff has F33 below s = " << svk_bound

@@ -33,7 +33,7 @@ namespace
   {
     std::ostringstream extra;
     extra << std::setprecision(17)
-          << "subsection Materials\n set Kinematics = " << kinematics
+          << "subsection Materials\n set Material law = " << kinematics
           << "\nend\n"
              "subsection Load program\n set Ramp steps = 3\n"
              " set Reference pressure = "

@@ -286,6 +286,10 @@ namespace RingContact
         RunSummary              summary;
         if (output.print_steps)
           out << start_line(parameters);
+        // How the file was read, where it needs saying (an entry under its
+        // old name): said whether or not the steps are.
+        for (const std::string &note : parameters.notes)
+          out << wrap_text(note);
         // Each scheme is a problem of its own (its mesh, unknowns and
         // history): the schemes share nothing but the results folder and
         // the verdicts, which accumulate over them.

@@ -237,6 +237,8 @@ namespace RingContact
         // that the file left alone (the rings put the probe at their node A).
         mesh.finish(mesh_folder);
         refinement.finish();
+        materials.finish(origins.count(entry_key("Materials", "Material law")) > 0,
+                         notes);
         require(refinement.adaptive_cycles == 0 ||
                   refinement.maximum_level > mesh.global_refinements,
                 "Mesh refinement",

@@ -13,6 +13,7 @@
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/input/parameters.h>
+#include <ring_contact/materials/material.h>
 #include <ring_contact/scenarios/scenario.h>
 
 #include <deal.II/base/exceptions.h>
@@ -320,35 +321,39 @@ namespace RingContact
 
   // @sect4{Subsection Materials}
   //
-  // The kinematics and the plane assumption, shared by all bodies. The elastic
-  // constants are each scenario's (the rings', the blocks', the bodies' of a
-  // general problem), and a general problem's body may choose its own
-  // kinematics.
+  // The material law and the plane assumption, shared by all bodies. The
+  // elastic constants are each scenario's (the rings', the blocks', the
+  // bodies' of a general problem), and a general problem's body may choose
+  // its own law. The laws are registered (materials/material.h): the
+  // entry's choices and documentation are the registry's.
 
   void
   MaterialParameters::add_parameters(ParameterHandler &prm)
   {
     Subsection s(prm, "Materials");
-    // Finite strain by default, as the original computes (GROT_GDEP): the inner
-    // ring turns through a finite angle, and a linearised rotation through one
-    // element strains it by cos 9 deg - 1 = -1.2 %, as much as the elastic
-    // strains that carry the pressure (doc/intro.md). Small strain is the check
-    // of the discretisation alone against the small-strain closed form.
+    // Saint Venant-Kirchhoff by default, as the original computes
+    // (GROT_GDEP): the inner ring turns through a finite angle, and a
+    // linearised rotation through one element strains it by cos 9 deg - 1 =
+    // -1.2 %, as much as the elastic strains that carry the pressure
+    // (doc/intro.md). Small strain is the check of the discretisation alone
+    // against the small-strain closed form.
+    s.add("Material law",
+          "Saint Venant-Kirchhoff",
+          Patterns::Selection(MaterialLaws::selection()),
+          "The law of every body. " + MaterialLaws::documentation(),
+          [this](const std::string &text) {
+            law = MaterialLaws::get(text).name;
+          });
+    // The entry's name until version 0.11: a kinematics chose the law.
+    // Still read, with a note (finish()).
     s.add("Kinematics",
-          kinematics,
-          "finite strain",
-          kinematics_choices(),
-          "finite strain: total Lagrangian Saint Venant-"
-          "Kirchhoff (Green-Lagrange strain, second Piola-"
-          "Kirchhoff stress; the original's GROT_GDEP); small "
-          "strain: linear elasticity; logarithmic strain: "
-          "Hencky, the linear law on the logarithmic strain "
-          "ln(C)/2 (current Code_Aster's GDEF_LOG; in plane "
-          "stress the out-of-plane stress conjugate to it is "
-          "zero); neo-Hookean: the compressible neo-Hookean "
-          "law W = mu/2 (tr C - 3 - 2 ln J) + lambda/2 (ln "
-          "J)^2 (finite strain; linear elasticity at small "
-          "strain; in plane stress F33 from sigma33 = 0).");
+          "",
+          Patterns::Selection("|" + MaterialLaws::selection()),
+          "The old name of Material law, still read (with a note): "
+          "finite strain, small strain, logarithmic strain and neo-Hookean "
+          "choose Saint Venant-Kirchhoff, linear elasticity, Hencky and "
+          "neo-Hookean.",
+          [this](const std::string &text) { old_kinematics = text; });
     // Plane stress, the original's C_PLAN, is that of every modelisation but B.
     s.add("Plane assumption",
           plane,
@@ -357,6 +362,24 @@ namespace RingContact
            {"plane strain", PlaneAssumption::plane_strain}},
           "plane stress (S33 = 0, C_PLAN) or plane strain "
           "(E33 = 0, D_PLAN).");
+  }
+
+  void
+  MaterialParameters::finish(const bool                law_set,
+                             std::vector<std::string> &notes)
+  {
+    if (old_kinematics.empty())
+      return;
+    const std::string old_law = MaterialLaws::get(old_kinematics).name;
+    require(!law_set || old_law == law,
+            "Materials",
+            "Kinematics",
+            "is the old name of Material law, which the file sets to '" + law +
+              "'; give Material law alone");
+    law = old_law;
+    notes.push_back("Note: Materials/Kinematics is the old name of "
+                    "Materials/Material law; read as Material law = " +
+                    law + ".");
   }
 
   // @sect4{Subsection Finite elements}

@@ -3,7 +3,7 @@
 // Small-strain linear elasticity: sigma = lambda tr(eps) I + 2 mu eps with
 // eps = (H + H^T) / 2, in plane stress (lambda*) or plane strain.
 //
-// The law of Kinematics = small strain, which is geometrically linear
+// The law of Material law = linear elasticity, which is geometrically linear
 // throughout (design.md): the contact is paired and measured in the
 // reference configuration too, so that a run isolates the discretisation
 // error (validation.md). Its stress is the one the virtual
@@ -82,9 +82,22 @@ namespace RingContact
     };
   } // namespace
 
-  std::shared_ptr<const MaterialLaw>
-  make_linear_elasticity(const ElasticConstants &constants)
+  // The registration line: Material law = linear elasticity (the former
+  // Kinematics = small strain). Its name is also the one a linearised
+  // problem runs every body with.
+  const char *const linear_elasticity_law = "linear elasticity";
+
+  namespace
   {
-    return std::make_shared<LinearElasticity>(constants);
-  }
+    const MaterialLaws::Add registration{MaterialLawRegistration{
+      linear_elasticity_law,
+      {"small strain"},
+      "small-strain linear elasticity, sigma = lambda tr(eps) I + 2 mu eps; "
+      "geometrically linear: the problem, its contact and its loads are "
+      "written on the reference configuration.",
+      true,
+      [](const ElasticConstants &constants) {
+        return std::make_shared<LinearElasticity>(constants);
+      }}};
+  } // namespace
 } // namespace RingContact

@@ -178,9 +178,19 @@ namespace RingContact
     };
   } // namespace
 
-  std::shared_ptr<const MaterialLaw>
-  make_logarithmic_strain(const ElasticConstants &constants)
+  // The registration line: Material law = Hencky (the former Kinematics =
+  // logarithmic strain).
+  namespace
   {
-    return std::make_shared<LogarithmicStrain>(constants);
-  }
+    const MaterialLaws::Add registration{MaterialLawRegistration{
+      "Hencky",
+      {"logarithmic strain"},
+      "the linear law on the logarithmic strain ln(C)/2 (current "
+      "Code_Aster's GDEF_LOG; in plane stress the out-of-plane stress "
+      "conjugate to it is zero).",
+      false,
+      [](const ElasticConstants &constants) {
+        return std::make_shared<LogarithmicStrain>(constants);
+      }}};
+  } // namespace
 } // namespace RingContact

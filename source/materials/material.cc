@@ -2,11 +2,12 @@
 //
 // Every body of a problem carries a Material: its Young's modulus, Poisson's
 // ratio, the two-dimensional assumption (plane stress or plane strain) and
-// the kinematics that chooses its law. The laws themselves live one per
+// the law chosen by name. The laws themselves live one per
 // file (saint_venant_kirchhoff.cc, linear_elasticity.cc,
 // logarithmic_strain.cc, neo_hookean.cc) behind the MaterialLaw interface;
 // this file holds what they share: the Lame constants of the 2d
-// assumption, the factory that maps a kinematics to its law, and the two
+// assumption, the Material that finds its law among the registered ones,
+// and the two
 // outputs that are the same formula for every finite-strain law, the
 // Cauchy stress and the von Mises stress written to the VTU files.
 #include <deal.II/base/symmetric_tensor.h>
@@ -62,43 +63,23 @@ namespace RingContact
       , lambda_3d(lame_lambda(E, nu))
   {}
 
-  // @sect4{The law of a kinematics}
-  //
-  // The one place that knows every law: adding a law is a file and a case
-  // here. The switch has no default, so that -Wswitch (part of -Wall)
-  // names a Kinematics without its case; the nullptr after it is never
-  // reached.
-  std::shared_ptr<const MaterialLaw>
-  make_material_law(const ElasticConstants &constants,
-                    const Kinematics        kinematics)
-  {
-    switch (kinematics)
-      {
-        case Kinematics::finite_strain:
-          return make_saint_venant_kirchhoff(constants);
-        case Kinematics::small_strain:
-          return make_linear_elasticity(constants);
-        case Kinematics::logarithmic_strain:
-          return make_logarithmic_strain(constants);
-        case Kinematics::neo_hookean:
-          return make_neo_hookean(constants);
-      }
-    return nullptr;
-  }
-
   // A law holds only its constants (no state at the quadrature points:
   // the laws are hyperelastic, without history), so one instance is shared
   // by every copy of the Material: the problem and the VTU writer keep
   // them by value in maps from the material id.
+  // The name is one the parameters admitted (their pattern is the
+  // registry's selection), possibly an old one: the registration found by
+  // it gives the registered name.
   Material::Material(const double          E,
                      const double          nu,
                      const PlaneAssumption plane,
-                     const Kinematics      kinematics)
+                     const std::string    &law)
       : youngs_modulus(E)
       , poissons_ratio(nu)
       , plane(plane)
-      , kinematics(kinematics)
-      , law(make_material_law(ElasticConstants(E, nu, plane), kinematics))
+      , law_name(MaterialLaws::get(law).name)
+      , geometrically_linear(MaterialLaws::get(law).geometrically_linear)
+      , law(MaterialLaws::get(law).make(ElasticConstants(E, nu, plane)))
   {}
 
   // @sect4{The Cauchy stress of the finite-strain laws}

@@ -167,9 +167,18 @@ namespace RingContact
     };
   } // namespace
 
-  std::shared_ptr<const MaterialLaw>
-  make_neo_hookean(const ElasticConstants &constants)
+  // The registration line: Material law = neo-Hookean.
+  namespace
   {
-    return std::make_shared<NeoHookean>(constants);
-  }
+    const MaterialLaws::Add registration{MaterialLawRegistration{
+      "neo-Hookean",
+      {},
+      "the compressible neo-Hookean law W = mu/2 (tr C - 3 - 2 ln J) + "
+      "lambda/2 (ln J)^2 (finite strain; linear elasticity at small strain; "
+      "in plane stress F33 from sigma33 = 0).",
+      false,
+      [](const ElasticConstants &constants) {
+        return std::make_shared<NeoHookean>(constants);
+      }}};
+  } // namespace
 } // namespace RingContact

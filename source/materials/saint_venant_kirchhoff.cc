@@ -5,7 +5,7 @@
 // + 2 mu E, and P = F S, in plane stress (S33 = 0, through lambda*) or
 // plane strain (E33 = 0). The original's GROT_GDEP.
 //
-// The law of Kinematics = finite strain, the one the original computes
+// The law of Material law = Saint Venant-Kirchhoff, the one the original computes
 // with. Finite strain at all because the inner ring turns through a finite
 // angle, and a linearised rotation strains it (doc/intro.md). The law's
 // limit is compression: in uniaxial strain its stress turns back at a
@@ -150,9 +150,18 @@ namespace RingContact
     };
   } // namespace
 
-  std::shared_ptr<const MaterialLaw>
-  make_saint_venant_kirchhoff(const ElasticConstants &constants)
+  // The registration line: Material law = Saint Venant-Kirchhoff (the
+  // former Kinematics = finite strain), the default.
+  namespace
   {
-    return std::make_shared<SaintVenantKirchhoff>(constants);
-  }
+    const MaterialLaws::Add registration{MaterialLawRegistration{
+      "Saint Venant-Kirchhoff",
+      {"finite strain"},
+      "total Lagrangian Saint Venant-Kirchhoff (Green-Lagrange strain, "
+      "second Piola-Kirchhoff stress; the original's GROT_GDEP).",
+      false,
+      [](const ElasticConstants &constants) {
+        return std::make_shared<SaintVenantKirchhoff>(constants);
+      }}};
+  } // namespace
 } // namespace RingContact

@@ -549,8 +549,7 @@ namespace RingContact
               // Each body's kinematics: a body in finite (or logarithmic)
               // strain carries the pressure on its current surface.
               const bool follower =
-                materials.at(cell->material_id()).kinematics !=
-                Kinematics::small_strain;
+                !materials.at(cell->material_id()).geometrically_linear;
               dofs.resize(n);
               cell->get_dof_indices(dofs);
               face_matrix.reinit(n, n);

@@ -361,7 +361,7 @@ namespace RingContact
           material = Material(material.youngs_modulus,
                               material.poissons_ratio,
                               material.plane,
-                              Kinematics::small_strain);
+                              linear_elasticity_law);
       }
     else
       {

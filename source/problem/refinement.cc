@@ -483,7 +483,7 @@ namespace RingContact
             fv[displacement].get_function_gradients(solution, grad_u);
             fv[pressure].get_function_values(solution, lambda);
             const Material &material = materials.at(cell->material_id());
-            const bool linear = material.kinematics == Kinematics::small_strain;
+            const bool linear = material.geometrically_linear;
             double     sum    = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {

@@ -402,7 +402,7 @@ namespace RingContact
     // pair's contact follow the current configuration.
     const bool geometrically_linear =
       std::all_of(bodies.begin(), bodies.end(), [](const Body &body) {
-        return body.material.kinematics == Kinematics::small_strain;
+        return body.material.geometrically_linear;
       });
     contacts.clear();
     pair_of_node.clear();

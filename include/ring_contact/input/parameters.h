@@ -37,29 +37,6 @@ namespace RingContact
     gmsh_file  ///< read from a gmsh mesh (.msh) or made by a gmsh script (.geo)
   };
 
-  /// Kinematics of the bulk.
-  enum class Kinematics
-  {
-    finite_strain, ///< total Lagrangian Saint Venant-Kirchhoff (GROT_GDEP)
-    small_strain,  ///< linear elasticity
-    /// Hencky: the linear law on the logarithmic strain ln(C) / 2
-    /// (GDEF_LOG)
-    logarithmic_strain,
-    /// compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
-    /// (ln J)^2
-    neo_hookean
-  };
-
-  /// The kinematics by their names in a .prm.
-  inline std::vector<std::pair<std::string, Kinematics>>
-  kinematics_choices()
-  {
-    return {{"finite strain", Kinematics::finite_strain},
-            {"small strain", Kinematics::small_strain},
-            {"logarithmic strain", Kinematics::logarithmic_strain},
-            {"neo-Hookean", Kinematics::neo_hookean}};
-  }
-
   /// The 2d assumption.
   enum class PlaneAssumption
   {
@@ -150,13 +127,22 @@ namespace RingContact
     finish();
   };
 
+  /// Subsection Materials: the law and the plane assumption of every body
+  /// (a general problem's body may choose its own law).
   struct MaterialParameters
   {
-    Kinematics      kinematics;
+    /// The registered name of the law (materials/material.h).
+    std::string     law;
     PlaneAssumption plane;
+    /// The value of the entry's old name, Kinematics ("" if not given).
+    std::string old_kinematics;
 
     void
     add_parameters(ParameterHandler &prm);
+    /// Read the old name where it is given: as Material law, with a note in
+    /// `notes`, or refused if Material law (set: `law_set`) says otherwise.
+    void
+    finish(const bool law_set, std::vector<std::string> &notes);
   };
 
   struct FiniteElementParameters
@@ -388,6 +374,10 @@ namespace RingContact
     /// the entry (or the note that it is its default).
     std::string
     located(const ParameterError &e) const;
+
+    /// Notes for the run's log about how the file was read (an entry read
+    /// under its old name), printed before the first step.
+    std::vector<std::string> notes;
 
     /// Where each entry the file sets was set ("Subsection/Entry").
     std::map<std::string, EntryOrigin> origins;

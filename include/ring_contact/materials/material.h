@@ -13,9 +13,10 @@
 //   (ln J)^2, the law of the published large-sliding benchmarks
 //   (neo_hookean.cc).
 // Each in plane stress (the out-of-plane stress zero) or plane strain (E33 =
-// 0). Adding a law is
-// one new file with its class and one line in make_material_law()
-// (material.cc).
+// 0). The laws are registered (base/registry.h): each file ends with the
+// law's registration, its name in Materials/Material law, its documentation
+// and its factory. Adding a law is one new file and its line in
+// CMakeLists.txt.
 #ifndef ring_contact_materials_material_h
 #define ring_contact_materials_material_h
 
@@ -23,10 +24,13 @@
 #include <deal.II/base/tensor.h>
 
 #include <ring_contact/base/dimension.h>
+#include <ring_contact/base/registry.h>
 #include <ring_contact/input/parameters.h>
 
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace RingContact
 {
@@ -97,41 +101,43 @@ namespace RingContact
     range_condition() const;
   };
 
-  /// The law of a kinematics: Saint Venant-Kirchhoff for finite strain,
-  /// linear elasticity for small strain, Hencky for logarithmic strain,
-  /// and the neo-Hookean law.
-  std::shared_ptr<const MaterialLaw>
-  make_material_law(const ElasticConstants &constants,
-                    const Kinematics        kinematics);
+  /// A material law as the parameter file names it (Materials/Material law,
+  /// a body's Material law), and how it is made from the elastic constants.
+  struct MaterialLawRegistration
+  {
+    /// Its value of Material law.
+    std::string name;
+    /// The values of the former entry Kinematics that chose it, still read.
+    std::vector<std::string> old_names;
+    /// What it is, for the entry's documentation.
+    std::string documentation;
+    /// Whether the law is geometrically linear (small strain): the problem
+    /// is then written on the reference configuration, the contact paired
+    /// and measured there and a pressure load dead (design.md).
+    bool geometrically_linear;
+    /// The law with its constants.
+    std::function<std::shared_ptr<const MaterialLaw>(const ElasticConstants &)>
+      make;
+  };
 
-  /// Saint Venant-Kirchhoff (saint_venant_kirchhoff.cc).
-  std::shared_ptr<const MaterialLaw>
-  make_saint_venant_kirchhoff(const ElasticConstants &constants);
+  /// Every registered law, by name (base/registry.h).
+  using MaterialLaws = Registry<MaterialLawRegistration>;
 
-  /// Small-strain linear elasticity (linear_elasticity.cc).
-  std::shared_ptr<const MaterialLaw>
-  make_linear_elasticity(const ElasticConstants &constants);
-
-  /// Hencky, the linear law on the logarithmic strain
-  /// (logarithmic_strain.cc).
-  std::shared_ptr<const MaterialLaw>
-  make_logarithmic_strain(const ElasticConstants &constants);
-
-  /// The compressible neo-Hookean law (neo_hookean.cc).
-  std::shared_ptr<const MaterialLaw>
-  make_neo_hookean(const ElasticConstants &constants);
+  /// The name of the small-strain law: a problem linearised (the first
+  /// step's start, FirstStepStrategy) runs it in place of every body's.
+  extern const char *const linear_elasticity_law;
 
   /// A body's material: its constants and its law, a value that can be
   /// copied and stored (the law is shared, it has no state).
   class Material
   {
   public:
-    /// E [Pa], nu [-], the 2d assumption and the kinematics, which chooses
-    /// the law.
+    /// E [Pa], nu [-], the 2d assumption and the name of a registered law
+    /// (or one of its old names).
     Material(const double          youngs_modulus,
              const double          poissons_ratio,
              const PlaneAssumption plane,
-             const Kinematics      kinematics);
+             const std::string    &law_name);
 
     Tensor<2, dim>
     stress(const Tensor<2, dim> &grad_u) const
@@ -184,7 +190,10 @@ namespace RingContact
     double          youngs_modulus;
     double          poissons_ratio;
     PlaneAssumption plane;
-    Kinematics      kinematics;
+    /// The law's registered name.
+    std::string law_name;
+    /// Whether the law is geometrically linear (small strain).
+    bool geometrically_linear;
 
   private:
     std::shared_ptr<const MaterialLaw> law;

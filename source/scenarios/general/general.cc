@@ -188,7 +188,7 @@ namespace RingContact
         }
 
         // The bodies in the order of the file; each named "Body k" in the
-        // messages, with its own kinematics or the common one. Mapping
+        // messages, with its own material law or the common one. Mapping
         // degree = 0 gives each body its displacement degree.
         std::vector<Body>
         bodies() const override
@@ -208,8 +208,7 @@ namespace RingContact
                      Material(body.youngs_modulus,
                               body.poissons_ratio,
                               m.plane,
-                              body.inherits_kinematics ? m.kinematics :
-                                                         body.kinematics)});
+                              body.law.empty() ? m.law : body.law)});
             }
           return bodies;
         }

@@ -25,6 +25,7 @@
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/parameter_checks.h>
+#include <ring_contact/materials/material.h>
 #include <ring_contact/scenarios/general/problem_description.h>
 
 #include <algorithm>
@@ -277,7 +278,7 @@ namespace RingContact
   // @sect4{Bodies}
   //
   // A body is a physical group of the mesh (its material id) with its own
-  // constants, displacement degree and, optionally, kinematics. The
+  // constants, displacement degree and, optionally, material law. The
   // degree goes up to 4: the contact element has quartic surfaces in every
   // integration scheme. Poisson's ratio is bounded as for the rings: in
   // (-1, 0.5) the elastic energy is positive definite.
@@ -311,32 +312,26 @@ namespace RingContact
           4,
           "Degree of the displacement elements (1: Q1, 2: Q2, up to 4: "
           "Q4).");
-    // The choices of Materials/Kinematics, and the empty string first: a
-    // body that does not say takes the common kinematics, so that a file
-    // written for one kinematics needs no entry per body.
-    std::string names;
-    for (const auto &[name, value] : kinematics_choices())
-      names += "|" + name;
-    s.add("Kinematics",
+    // The registered laws, and the empty string first: a body that does
+    // not say takes the common law, so that a file written for one law
+    // needs no entry per body.
+    s.add("Material law",
+          law,
           "",
-          Patterns::Selection(names),
-          "The body's kinematics; empty: that of "
-          "Materials/Kinematics. A body in small strain may "
-          "touch one in finite strain: the contact is then "
-          "written on the current configuration (it is "
-          "geometrically linear only when both bodies are in "
-          "small strain), and a pressure load on a body follows "
-          "its surface when that body is in finite or "
-          "logarithmic strain or neo-Hookean.",
-          // The pattern has refused any other name already: the loop
-          // finds the one given, or the text is empty.
-          [this](const std::string &text) {
-            inherits_kinematics = text.empty();
-            kinematics          = Kinematics::finite_strain;
-            for (const auto &[name, value] : kinematics_choices())
-              if (name == text)
-                kinematics = value;
-          });
+          "The body's material law; empty: that of Materials/Material law. "
+          "A body in small strain (linear elasticity) may touch one in "
+          "finite strain: the contact is then written on the current "
+          "configuration (it is geometrically linear only when both bodies "
+          "are in small strain), and a pressure load on a body follows its "
+          "surface unless that body is in small strain.",
+          Patterns::Selection("|" + MaterialLaws::selection()));
+    // The entry's name until version 0.11, still read (ProblemParameters::
+    // finish()).
+    s.add("Kinematics",
+          old_kinematics,
+          "",
+          "The old name of Material law, still read (with a note).",
+          Patterns::Selection("|" + MaterialLaws::selection()));
   }
 
   // @sect4{Boundary conditions}

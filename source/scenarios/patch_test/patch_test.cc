@@ -315,7 +315,7 @@ namespace RingContact
                      Material(blocks.youngs_modulus_lower,
                               blocks.poissons_ratio_lower,
                               m.plane,
-                              m.kinematics)},
+                              m.law)},
                 Body{Ids::upper_block,
                      "upper block",
                      blocks.degree_upper,
@@ -323,7 +323,7 @@ namespace RingContact
                      Material(blocks.youngs_modulus_upper,
                               blocks.poissons_ratio_upper,
                               m.plane,
-                              m.kinematics)}};
+                              m.law)}};
       }
 
       const LoadProgram &

@@ -513,7 +513,7 @@ namespace RingContact
         }
 
         // The two rings, outer (100) and inner (101). Both have the common
-        // plane assumption and kinematics (subsection Materials): SSNP152's
+        // plane assumption and material law (subsection Materials): SSNP152's
         // rings differ only in their constants and degrees.
         std::vector<Body>
         bodies() const override
@@ -527,7 +527,7 @@ namespace RingContact
                        Material(rings.youngs_modulus_outer,
                                 rings.poissons_ratio_outer,
                                 m.plane,
-                                m.kinematics)},
+                                m.law)},
                   Body{Ids::inner_ring,
                        "inner ring",
                        rings.degree_inner,
@@ -535,7 +535,7 @@ namespace RingContact
                        Material(rings.youngs_modulus_inner,
                                 rings.poissons_ratio_inner,
                                 m.plane,
-                                m.kinematics)}};
+                                m.law)}};
         }
 
         // The ramp (the pressure raised step by step) or the rotation (the

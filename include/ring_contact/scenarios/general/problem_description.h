@@ -55,10 +55,11 @@ namespace RingContact
     double       youngs_modulus;
     double       poissons_ratio;
     unsigned int degree; ///< displacement degree
-    /// The body's own kinematics; when the entry is empty, that of
-    /// Materials/Kinematics (`inherits_kinematics`).
-    Kinematics kinematics          = Kinematics::finite_strain;
-    bool       inherits_kinematics = true;
+    /// The body's own material law (a registered name); empty: that of
+    /// Materials/Material law.
+    std::string law;
+    /// The value of the entry's old name, Kinematics ("" if not given).
+    std::string old_kinematics;
 
     /// Declare the entries of a subsection Body k (entered), bound to
     /// these members.
