@@ -82,7 +82,7 @@ namespace RingContact
       , friction_coefficient(parameters.friction_coefficient)
       , small_strain_model(geometrically_linear)
       , geometrically_linear(geometrically_linear)
-      , segment_based(scheme.type == ContactIntegration::segment_based)
+      , segment_based(scheme.cuts_at_master_kinks())
       , segment_length(slave.min_segment_length())
       , multiplier_nodes(slave,
                          sector.multiplier_twins,

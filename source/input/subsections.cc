@@ -4,9 +4,9 @@
 // each with its add_parameters() and, where entries depend on each other,
 // its finish(): here those of the model (Mesh, Mesh refinement, Materials,
 // Finite elements, Contact); those of the run (Load program, Newton,
-// Output, Checks) are in run_subsections.cc. How an entry is declared, checked and documented is
-// told at the top of parameters.cc, which assembles these subsections and
-// the scenarios' own into the whole file.
+// Output, Checks) are in run_subsections.cc. How an entry is declared, checked
+// and documented is told at the top of parameters.cc, which assembles these
+// subsections and the scenarios' own into the whole file.
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/input/gmsh_file.h>
@@ -14,6 +14,7 @@
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/materials/material.h>
+#include <ring_contact/problem/refinement_estimator.h>
 #include <ring_contact/scenarios/scenario.h>
 
 #include <deal.II/base/exceptions.h>
@@ -246,24 +247,14 @@ namespace RingContact
           "How many times a refined step is refined again and solved on the "
           "new mesh. 0: no adaptive refinement (the mesh of subsection Mesh "
           "throughout).");
+    // The registered estimators (problem/estimators/), each documented by
+    // its own words after the one it builds on.
     s.add("Estimator",
           estimator,
           "Contact weighted",
-          {{"Kelly", RefinementEstimator::kelly},
-           {"Kelly and contact", RefinementEstimator::kelly_and_contact},
-           {"Contact weighted", RefinementEstimator::contact_weighted}},
-          "The error indicator of a cell. Kelly: the jumps of the gradient of "
-          "the displacement across its inner faces (deal.II's "
-          "KellyErrorEstimator). Kelly and contact: plus, on its faces on a "
-          "slave surface, the residual of the contact condition (the "
-          "difference between the body's traction P N and the contact "
-          "traction the multipliers give, over Young's modulus) and the "
-          "jumps of the pressure's slope. Contact weighted: Kelly and "
-          "contact, each cell's indicator multiplied by (l / (l + d))^2, d "
-          "its distance from the nearest slave face in contact and l the "
-          "length in contact: the mesh refined for the contact's accuracy "
-          "rather than the energy's everywhere (without contact, as Kelly "
-          "and contact).");
+          "The error indicator of a cell. " +
+            refinement_estimators_documentation(),
+          Patterns::Selection(RefinementEstimators::selection()));
     // 0.1 by default: on Hertz the pressure's L2 error of 0.24 % took 46 000
     // unknowns in 8 cycles of 0.1, 218 000 in 6 cycles of 0.3, which refine
     // far from the contact too (doc/validation.md).
@@ -446,19 +437,11 @@ namespace RingContact
       s.add("Integration schemes",
             "automatic",
             Patterns::List(Patterns::Anything(), 1),
+            // Each family's own words (contact/schemes/) follow.
             "Comma-separated list; one analysis is run per scheme. "
             "automatic: segment-based at the degree the surfaces need "
-            "(nodal for the rings of SSNP152, the original's). "
-            "segment-based n: each slave segment cut where the lines "
-            "through the master vertices along their normals cross it, "
-            "n Gauss points on each piece (mortar integration; without "
-            "n: the surfaces' displacement degree + 1); it passes the "
-            "contact patch test on any meshes. The point-wise schemes, "
-            "exact only where the surfaces' nodes face each other: "
-            "nodal: at the slave nodes; Gauss n: n Gauss points per "
-            "slave segment (1-20); Simpson n: composite Simpson with n "
-            "sub-intervals; Newton-Cotes n: closed Newton-Cotes of "
-            "order 1, 2, 4 or 6.",
+            "(nodal for the rings of SSNP152, the original's). " +
+              integration_schemes_documentation(),
             [&schemes](const std::string &text) {
               // The action runs on the default first, then on the file's value.
               schemes.clear();
@@ -611,9 +594,8 @@ namespace RingContact
       for (const auto &entry : Utilities::split_string_list(scenario_default))
         schemes.push_back(IntegrationScheme::parse(entry));
     for (IntegrationScheme &scheme : schemes)
-      if (scheme.type == ContactIntegration::segment_based &&
-          scheme.n_points == 0)
-        scheme.n_points = displacement_degree + 1;
+      if (scheme.family->default_points && scheme.n_points == 0)
+        scheme.n_points = scheme.family->default_points(displacement_degree);
     // One run per scheme: a scheme listed twice would run twice and write
     // its files over its own.
     for (unsigned int k = 0; k < schemes.size(); ++k)
@@ -622,9 +604,11 @@ namespace RingContact
                 "Contact",
                 "Integration schemes",
                 "lists '" + schemes[k].name() + "' twice" +
-                  (schemes[k].type == ContactIntegration::segment_based ?
-                     " ('segment-based' is segment-based " +
-                       std::to_string(displacement_degree + 1) +
+                  (schemes[k].family->default_points ?
+                     " ('" + schemes[k].family->name + "' is " +
+                       schemes[k].family->name + " " +
+                       std::to_string(schemes[k].family->default_points(
+                         displacement_degree)) +
                        " on these elements)" :
                      std::string()));
   }

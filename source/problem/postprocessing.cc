@@ -116,17 +116,14 @@ namespace RingContact
   void
   ContactProblem::report_non_matching_surfaces(const unsigned int pair) const
   {
-    if (scheme.type == ContactIntegration::segment_based)
+    if (scheme.cuts_at_master_kinks())
       return;
     const auto [slave, master] = parameters.contact_pairs()[pair];
     const bool linear          = contacts[pair]->small_strain();
     const auto pointwise =
       make_contact_interface(slave, master, scheme, linear);
     const auto mortar = make_contact_interface(
-      slave,
-      master,
-      IntegrationScheme{ContactIntegration::segment_based, 6},
-      linear);
+      slave, master, IntegrationScheme::parse("segment-based 6"), linear);
     const Diagnostics::LoadTransfer transfer =
       Diagnostics::measure_load_transfer(*pointwise, *mortar, solution);
     Diagnostics::report_non_matching(

@@ -7,13 +7,16 @@
 // state is carried to the new mesh and the step is solved again there,
 // 'Adaptive cycles' times (subsection Mesh refinement).
 //
-// The indicator is Kelly's (deal.II's KellyErrorEstimator: the jumps of the
-// displacement gradient across the inner faces) plus, on the faces of the
-// slave surfaces, the residual of the contact condition (the body's
-// traction P N against the force the multiplier puts on it) and the jumps
-// of the pressure's slope between neighbouring faces. Kelly's alone sees
-// no boundary, and the pressure's error sits on one. Where the surfaces
-// face each other, their faces are kept within a factor 1.5 of each other.
+// The indicator is the registered estimator's the file chooses
+// (refinement_estimator.h, estimators/): by default Kelly's (deal.II's
+// KellyErrorEstimator: the jumps of the displacement gradient across the
+// inner faces) plus, on the faces of the slave surfaces, the residual of the
+// contact condition (the body's traction P N against the force the
+// multiplier puts on it) and the jumps of the pressure's slope between
+// neighbouring faces, weighed by the distance from the contact zone. Kelly's
+// alone sees no boundary, and the pressure's error sits on one. Where the
+// surfaces face each other, their faces are kept within a factor 1.5 of each
+// other.
 //
 // The new mesh has hanging nodes, on the inner faces only: in 2d a face
 // on a boundary has no neighbour, so neither contact surface has one, and
@@ -35,33 +38,30 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_refinement.h>
-#include <deal.II/hp/fe_values.h>
-#include <deal.II/numerics/error_estimator.h>
-#include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/solution_transfer.h>
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/problem/contact_problem.h>
+#include <ring_contact/problem/face_multipliers.h>
+#include <ring_contact/problem/refinement_estimator.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <iomanip>
 #include <set>
-#include <tuple>
 
 namespace RingContact
 {
   namespace
   {
-    // The multiplier values of one face of a slave surface, by component
-    // and by the index of the face's support point in its base element
-    // FE_Q(q) (0 and 1 its ends, then the points between).
-    using FaceValues = std::map<std::pair<unsigned int, unsigned int>, double>;
+    using FaceMultipliers::face_multipliers;
+    using FaceMultipliers::FacePoint;
+    using FaceMultipliers::FaceValues;
+    using FaceMultipliers::interpolate;
+    using FaceMultipliers::multiplier_face_points;
 
     // A face known by its ends: the indices of lines (and vertices) are
     // reused once coarsening frees them, its place is not.
@@ -73,99 +73,6 @@ namespace RingContact
                face->vertex(0)[1],
                face->vertex(1)[0],
                face->vertex(1)[1]}};
-    }
-
-    // The parameter in [0, 1] along a face (from its vertex 0) of the
-    // support point of face unknown i of `fe`, and its component and index
-    // in the base element.
-    struct FacePoint
-    {
-      unsigned int component, index;
-      double       t;
-    };
-
-    std::vector<FacePoint>
-    multiplier_face_points(const FiniteElement<dim> &fe)
-    {
-      std::vector<FacePoint> points;
-      for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
-        {
-          const unsigned int component =
-            fe.face_system_to_component_index(i).first;
-          if (Components::is_displacement(component))
-            continue;
-          const auto base = fe.face_system_to_base_index(i);
-          points.push_back({component,
-                            base.second,
-                            fe.base_element(base.first.first)
-                              .get_unit_face_support_points()[base.second][0]});
-        }
-      return points;
-    }
-
-    // The value at t of the Lagrange polynomial through a face's values of
-    // `component` (at the support points `points` of its element).
-    double
-    interpolate(const FaceValues             &values,
-                const std::vector<FacePoint> &points,
-                const unsigned int            component,
-                const double                  t)
-    {
-      double sum = 0;
-      for (const auto &p : points)
-        if (p.component == component)
-          {
-            double basis = 1;
-            for (const auto &q : points)
-              if (q.component == component && q.index != p.index)
-                basis *= (t - q.t) / (p.t - q.t);
-            sum += basis * values.at({component, p.index});
-          }
-      return sum;
-    }
-
-    // d/dt of that polynomial.
-    double
-    derivative(const FaceValues             &values,
-               const std::vector<FacePoint> &points,
-               const unsigned int            component,
-               const double                  t)
-    {
-      double sum = 0;
-      for (const auto &p : points)
-        if (p.component == component)
-          for (const auto &r : points)
-            if (r.component == component && r.index != p.index)
-              {
-                double term = 1 / (p.t - r.t);
-                for (const auto &q : points)
-                  if (q.component == component && q.index != p.index &&
-                      q.index != r.index)
-                    term *= (t - q.t) / (p.t - q.t);
-                sum += term * values.at({component, p.index});
-              }
-      return sum;
-    }
-
-    // The multipliers of `u` on face f of a slave layer's cell.
-    FaceValues
-    face_multipliers(const DoFHandler<dim>::active_cell_iterator &cell,
-                     const unsigned int                           f,
-                     const std::vector<FacePoint>                &points,
-                     const Vector<double>                        &u)
-    {
-      const auto                          &fe = cell->get_fe();
-      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-      cell->face(f)->get_dof_indices(face_dofs, cell->active_fe_index());
-      FaceValues values;
-      for (unsigned int i = 0, k = 0; i < fe.n_dofs_per_face(); ++i)
-        if (!Components::is_displacement(
-              fe.face_system_to_component_index(i).first))
-          {
-            values[{points[k].component, points[k].index}] = u(face_dofs[i]);
-            ++k;
-          }
-      return values;
     }
 
     // Which half of its parent face a child cell's face f is: the cell's
@@ -365,185 +272,34 @@ namespace RingContact
                   }
             }
     }
-
-    // Contact weighted: the error that matters is the contact's. A cell's
-    // error reaches the contact pressure through the dual solution of a
-    // functional on the contact zone, whose second derivatives (which
-    // weigh the cell's residual) fall like 1 / r^2 away from a zone of
-    // length l: each indicator is weighed by (l / (l + d))^2, d the
-    // distance from the cell to the nearest active slave face. Hertz
-    // (a = R / 30, 11 cycles of 5 %): the pressure's L2 error 0.15 % with
-    // 25 000 unknowns, against 0.28 % unweighted (doc/validation.md).
-    // The faces in contact: a multiplier above 1e-8 of the largest (an open
-    // node's multiplier is zero up to the linear solver's round-off, which
-    // differs between one process and several).
-    void
-    weigh_by_distance_from_contact(
-      const Triangulation<dim>                                  &triangulation,
-      const std::vector<std::tuple<Point<dim>, double, double>> &slave_faces,
-      Vector<float>                                             &indicator)
-    {
-      double largest = 0;
-      for (const auto &face : slave_faces)
-        largest = std::max(largest, std::get<2>(face));
-      std::vector<Point<dim>> active_points;
-      double                  active_length = 0;
-      for (const auto &[center, length, multiplier] : slave_faces)
-        if (multiplier > 1e-8 * largest)
-          {
-            active_points.push_back(center);
-            active_length += length;
-          }
-      if (!active_points.empty())
-        {
-          const auto tree = pack_rtree(active_points);
-          for (const auto &cell : triangulation.active_cell_iterators())
-            {
-              std::vector<Point<dim>> nearest;
-              tree.query(boost::geometry::index::nearest(cell->center(), 1),
-                         std::back_inserter(nearest));
-              const double d = std::max(0.0,
-                                        nearest[0].distance(cell->center()) -
-                                          cell->diameter() / 2);
-              indicator[cell->active_cell_index()] *=
-                Utilities::fixed_power<2>(active_length / (active_length + d));
-            }
-        }
-    }
-
   } // namespace
 
   // @sect4{The error indicator}
   //
-  // Kelly's on the displacement, and on each slave face
-  // h/24 int |P N + lambda cof(F) N|^2 / E^2 dS: P N dS is the force the
-  // body's stress puts on the face, lambda cof(F) N dS the pressure's (the
-  // multiplier is the Cauchy pressure, per current length), and Kelly's
-  // scale, the cell's diameter over 24, with the strain's units (over E).
-  // With friction the tangential traction is a multiplier of its own, and
-  // only the normal part of the residual is taken. At each slave vertex
-  // the jump of the pressure's slope, h^3/24 [dp/ds]^2 / E^2 to both
-  // cells: the edge of a contact, where the pressure falls as a square
-  // root, is where it is largest (Hertz: the L2 error of the pressure at
-  // 21 000 unknowns went from 0.58 % to 0.33 % with it).
+  // The estimator the file chooses (Mesh refinement/Estimator), given what
+  // it reads of the problem (refinement_estimator.h; the estimators
+  // themselves are in estimators/). Kelly's estimator takes one mapping: the
+  // bodies' highest degree.
   Vector<float>
   ContactProblem::estimate_error() const
   {
-    Vector<float>      indicator(triangulation.n_active_cells());
     hp::QCollection<1> face_quadrature;
     for (unsigned int k = 0; k < fe_collection.size(); ++k)
       face_quadrature.push_back(QGauss<1>(fe_collection[k].degree + 1));
-    // Every process holds the whole solution and the whole mesh: each
-    // computes every cell's indicator, and all refine alike.
-    // Kelly's estimator takes one mapping: the bodies' highest degree (an
-    // indicator only; the faces' jumps do not need each body's own).
     unsigned int mapping_degree = 1;
     for (const Body &body : bodies)
       mapping_degree = std::max(mapping_degree, body.mapping_degree);
-    KellyErrorEstimator<dim>::estimate(MappingQ<dim>(mapping_degree),
-                                       dof_handler,
-                                       face_quadrature,
-                                       {},
-                                       solution,
-                                       indicator,
-                                       Components::displacement_mask());
-    if (parameters.refinement.estimator == RefinementEstimator::kelly)
-      return indicator;
-
-    const auto slave_ids = slave_boundaries(parameters);
-    const bool friction  = parameters.contact.friction_coefficient > 0;
-    hp::FEFaceValues<dim>            face_values(mapping_collection,
-                                      fe_collection,
-                                      face_quadrature,
-                                      update_values | update_gradients |
-                                        update_normal_vectors |
-                                        update_JxW_values);
-    const FEValuesExtractors::Scalar pressure(Components::multiplier);
-    std::vector<Tensor<2, dim>>      grad_u;
-    std::vector<double>              lambda;
-    struct Slope
-    {
-      Tensor<1, dim> slope;
-      unsigned int   cell;
-      double         length, E;
-    };
-    std::map<unsigned int, std::vector<Slope>> slopes;
-    // The slave faces with their largest |multiplier|, for the weight of
-    // 'Contact weighted' (weigh_by_distance_from_contact()).
-    std::vector<std::tuple<Point<dim>, double, double>> slave_faces;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            slave_ids.count(cell->face(f)->boundary_id()) > 0)
-          {
-            face_values.reinit(cell, f);
-            const auto &fv = face_values.get_present_fe_values();
-            grad_u.resize(fv.n_quadrature_points);
-            lambda.resize(fv.n_quadrature_points);
-            fv[displacement].get_function_gradients(solution, grad_u);
-            fv[pressure].get_function_values(solution, lambda);
-            const Material &material = materials.at(cell->material_id());
-            const bool linear = material.geometrically_linear;
-            double     sum    = 0;
-            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-              {
-                const Tensor<1, dim> N = fv.normal_vector(q);
-                Tensor<2, dim>       F = unit_symmetric_tensor<dim>();
-                F += grad_u[q];
-                // cof(F) = det(F) F^-T; the reference normal in small strain.
-                const Tensor<1, dim> area =
-                  linear ? N : determinant(F) * transpose(invert(F)) * N;
-                Tensor<1, dim> residual =
-                  material.stress(grad_u[q]) * N + lambda[q] * area;
-                if (friction)
-                  residual =
-                    (residual * area / area.norm()) * area / area.norm();
-                sum += residual.norm_square() * fv.JxW(q);
-              }
-            double largest = 0;
-            for (const double l : lambda)
-              largest = std::max(largest, std::abs(l));
-            slave_faces.emplace_back(cell->face(f)->center(),
-                                     cell->face(f)->measure(),
-                                     largest);
-            const double E = material.youngs_modulus;
-            indicator[cell->active_cell_index()] =
-              std::sqrt(std::pow(indicator[cell->active_cell_index()], 2) +
-                        cell->diameter() / 24 * sum / (E * E));
-
-            // The pressure's slope at the face's two ends, as a vector
-            // along the face (orientation-free), for the jumps below.
-            const auto       face   = cell->face(f);
-            const auto       points = multiplier_face_points(cell->get_fe());
-            const FaceValues values =
-              face_multipliers(cell, f, points, solution);
-            const Tensor<1, dim> along  = face->vertex(1) - face->vertex(0);
-            const double         length = along.norm();
-            for (unsigned int end = 0; end < 2; ++end)
-              slopes[face->vertex_index(end)].push_back(
-                {derivative(values, points, Components::multiplier, end) /
-                   (length * length) * along,
-                 cell->active_cell_index(),
-                 length,
-                 E});
-          }
-    // The jump of the pressure's slope at each slave vertex, h^3/24
-    // [dp/ds]^2 / E^2 to each of the two cells.
-    for (const auto &[vertex, list] : slopes)
-      if (list.size() == 2)
-        {
-          const double jump = (list[0].slope - list[1].slope).norm();
-          for (const auto &end : list)
-            {
-              auto &eta = indicator[end.cell];
-              eta = std::sqrt(eta * eta + std::pow(end.length, 3) / 24 * jump *
-                                            jump / (end.E * end.E));
-            }
-        }
-    if (parameters.refinement.estimator ==
-        RefinementEstimator::contact_weighted)
-      weigh_by_distance_from_contact(triangulation, slave_faces, indicator);
-    return indicator;
+    const EstimatorInput input{triangulation,
+                               dof_handler,
+                               fe_collection,
+                               mapping_collection,
+                               face_quadrature,
+                               mapping_degree,
+                               solution,
+                               materials,
+                               slave_boundaries(parameters),
+                               parameters.contact.friction_coefficient > 0};
+    return RingContact::estimate_error(parameters.refinement.estimator, input);
   }
 
   // @sect4{Refine, carry the state over, set the problem up again}
@@ -668,7 +424,7 @@ namespace RingContact
       return 0;
     // Once per run: refinement makes the surfaces non-matching, which only
     // the segment-based scheme integrates exactly.
-    if (n_refinements == 0 && scheme.type != ContactIntegration::segment_based)
+    if (n_refinements == 0 && !scheme.cuts_at_master_kinks())
       log << wrap_text(
         "Note: adaptive refinement makes the contact surfaces non-matching, "
         "where the " +

@@ -95,31 +95,19 @@ namespace RingContact
     finish(const std::string &prm_folder);
   };
 
-  /// What the adaptive refinement estimates the error of (subsection Mesh
-  /// refinement).
-  enum class RefinementEstimator
-  {
-    /// Kelly's jumps of the displacement gradient across the cells' faces.
-    kelly,
-    /// Kelly's, plus on each slave face the residual of the contact:
-    /// the body's traction against the multiplier's.
-    kelly_and_contact,
-    /// Kelly's and the contact's, each cell's weighed by its distance from
-    /// the contact zone: (l / (l + d))^2, l the zone's length.
-    contact_weighted
-  };
-
   /// Subsection Mesh refinement: the mesh refined where the error estimate
   /// is largest, and each such step solved again on the new mesh.
   struct RefinementParameters
   {
-    unsigned int        adaptive_cycles;
-    RefinementEstimator estimator;
-    double              refine_fraction;
-    double              coarsen_fraction;
-    unsigned int        every;
-    unsigned int        maximum_level;
-    unsigned int        maximum_cells;
+    unsigned int adaptive_cycles;
+    /// The registered estimator (problem/refinement_estimator.h) that
+    /// gives each cell's error indicator.
+    std::string  estimator;
+    double       refine_fraction;
+    double       coarsen_fraction;
+    unsigned int every;
+    unsigned int maximum_level;
+    unsigned int maximum_cells;
 
     void
     add_parameters(ParameterHandler &prm);
