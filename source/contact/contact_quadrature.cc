@@ -209,7 +209,7 @@ namespace RingContact
   // rule must see the nodes of the finer of the two surfaces, not only the
   // slave's. A linear slave facing a quadratic master integrated at the slave
   // vertices alone left the master's mid-side nodes without contact force and
-  // the pressure 10 % low at 40 elements around, first order.
+  // the pressure low, first order (doc/validation.md, "Element mixes").
   Quadrature<1>
   contact_quadrature(const IntegrationScheme &scheme,
                      const unsigned int       degree,
@@ -222,7 +222,8 @@ namespace RingContact
     // displacement out of the weighted gaps, an error of the order of h in
     // the pressure (see theory.md).
     // Measured on the rings with one quadratic surface, each of these rules
-    // converged at an order of 0.9 to 1.0 in the mesh size.
+    // converged at first order in the mesh size (doc/validation.md, "Element
+    // mixes").
     const bool one_point = (scheme.type == ContactIntegration::gauss ||
                             scheme.type == ContactIntegration::segment_based) &&
                            scheme.n_points == 1;
@@ -246,8 +247,8 @@ namespace RingContact
     // flat surfaces transmitted exactly) needs the nodal forces int lambda
     // phi_i ds of a constant pressure exact: the rule must integrate the
     // surface's shape functions, polynomials of its degree, exactly. A
-    // quartic slave with 'segment-based 2' (exact to degree 3) missed the
-    // patch test by 3.4 %.
+    // quartic slave with 'segment-based 2' (exact to degree 3) missed the patch
+    // test (doc/validation.md, "Figures that were in the code's comments").
     const unsigned int exactness = exactness_degree(scheme, degree);
     if (exactness < degree)
       {

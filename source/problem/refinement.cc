@@ -189,9 +189,9 @@ namespace RingContact
       // already is in this cycle, the shorter one waits for the next; neither
       // is coarsened. Refined on its own, one surface ends up several times
       // finer than the other, which the contact does not survive (Hertz,
-      // segment-based 2, 8 cycles: p0 -5.5 % without the rule, -0.07 %
-      // with it). Other rules measured (doc/validation.md): the master a
-      // level ahead of the slave, the slave at least as fine as the master.
+      // segment-based 2: p0 far off without the rule, close with it). Other
+      // rules measured: the master a level ahead of the slave, the slave at
+      // least as fine as the master (doc/validation.md, "Adaptive refinement").
       const auto future_length = [](const auto &cell, const unsigned int f) {
         const double length = cell->face(f)->measure();
         return cell->refine_flag_set() ? length / 2 : length;
@@ -372,8 +372,9 @@ namespace RingContact
     // weigh the cell's residual) fall like 1 / r^2 away from a zone of
     // length l: each indicator is weighed by (l / (l + d))^2, d the
     // distance from the cell to the nearest active slave face. Hertz
-    // (a = R / 30, 11 cycles of 5 %): the pressure's L2 error 0.15 % with
-    // 25 000 unknowns, against 0.28 % unweighted (doc/validation.md).
+    // (a = R / 30, 11 cycles of 5 %): a smaller L2 error of the pressure than
+    // unweighted for as many unknowns (doc/validation.md, "Adaptive
+    // refinement").
     // The faces in contact: a multiplier above 1e-8 of the largest (an open
     // node's multiplier is zero up to the linear solver's round-off, which
     // differs between one process and several).
@@ -424,8 +425,8 @@ namespace RingContact
   // only the normal part of the residual is taken. At each slave vertex
   // the jump of the pressure's slope, h^3/24 [dp/ds]^2 / E^2 to both
   // cells: the edge of a contact, where the pressure falls as a square
-  // root, is where it is largest (Hertz: the L2 error of the pressure at
-  // 21 000 unknowns went from 0.58 % to 0.33 % with it).
+  // root, is where it is largest (Hertz: the L2 error of the pressure fell with
+  // it for as many unknowns; doc/validation.md, "Adaptive refinement").
   Vector<float>
   ContactProblem::estimate_error() const
   {
