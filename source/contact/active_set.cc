@@ -109,13 +109,14 @@ namespace RingContact
     // the shortest slave segment and that carry no tension. Once only: the
     // next update opens those that the solve puts in tension. One node: the
     // nodal scheme's gap at the touching point is zero itself, and the whole
-    // load on that node alone inverted the elements around it (Hertz, d0 =
-    // 0, h = 0.005: a cut, 10 iterations instead of 3 to 5); a step that
-    // starts from a one-node zone (an unloading) may so close a node or two
-    // for one iteration. Not when a zone is closed already: a contact zone that
-    // grows from step to step is then held, and the band would only close nodes
-    // that the load may not reach (with the load's extrapolation, Hertz in 8
-    // steps took 20 iterations instead of 17).
+    // load on that node alone inverted the elements around it (Hertz, d0 = 0: a
+    // cut, and more iterations); a step that starts from a one-node zone (an
+    // unloading) may so close a node or two for one iteration. Not when a zone
+    // is closed already: a contact zone that grows from step to step is then
+    // held, and the band would only close nodes that the load may not reach
+    // (with the load's extrapolation, Hertz in 8 steps took more iterations).
+    // The figures: doc/validation.md, "Curved geometry, ties and touching
+    // bodies".
     if (first_update_of_step &&
         std::count(closed.begin(), closed.end(), true) <= 1)
       for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
@@ -216,16 +217,15 @@ namespace RingContact
     // after the extrapolation, which reads the plain rule's states), and the
     // nodes a stick zone grows over flipped from one sense to the other at
     // each iteration (a slip of 1e-7 against the sense slid gives a trial of
-    // ten times the bound) under a damped line search. Steel on aluminium
-    // from touching, Saint Venant-Kirchhoff, mu = 0.2, four steps, nodal /
-    // Gauss 2 / segment-based 2: without the rule 33 / 58 / 37 iterations in
-    // all at h = 0.01, with it 28 / 28 / 31; 38 / 87 / 66 at h = 0.005, with
-    // it 31 / 36 / 48 (the first steps within an iteration of each other).
-    // Not at small strain, where the edges are extrapolated: there it made
-    // h = 0.0025 in one step take 30 iterations and a cut (Gauss 2,
-    // segment-based 2) instead of 10. (The rule reads the states of the last
-    // update, so that a second update at the same iterate may change a
-    // state again.)
+    // ten times the bound) under a damped line search. Steel on aluminium from
+    // touching, Saint Venant-Kirchhoff, mu = 0.2, four steps: fewer iterations
+    // in all with the rule, for nodal, Gauss 2 and segment-based 2 alike, the
+    // first steps within an iteration of each other (doc/validation.md, "Curved
+    // geometry, ties and touching bodies"). Not at small strain, where the
+    // edges are extrapolated: there it made a step on a fine mesh take many
+    // more iterations and a cut (Gauss 2, segment-based 2). (The rule reads the
+    // states of the last update, so that a second update at the same iterate
+    // may change a state again.)
     if (!linear_gaps && !stick_held)
       for (unsigned int k = 0; k < n; ++k)
         if (active[k] && slip_sign[k] != 0 && state[k] == -slip_sign[k])
@@ -249,11 +249,12 @@ namespace RingContact
   // around a true edge at a behaves as (b - x - (b - a) / 2) / sqrt(b - x)
   // (the first-order change of the square-root profile with b, e.g. Hertz's
   // p ~ (a^2 + b^2 - 2 x^2) / sqrt(b^2 - x^2)), so releasing the nodes in
-  // tension halves the excess, and a Hertz cylinder pressed from touching
-  // on h = 0.005 took 12 iterations, one or two nodes at a time. Where a
-  // zone is too narrow, the gap beyond its edge is negative up to 3/2 of
-  // the shortfall (g ~ -sqrt(s) (3 (a - b) / 2 - s), s = x - b), and
-  // closing every such node overshoots by half of it.
+  // tension halves the excess, and a Hertz cylinder pressed from touching took
+  // many iterations, one or two nodes at a time (doc/validation.md, "Curved
+  // geometry, ties and touching bodies"). Where a zone is too narrow, the gap
+  // beyond its edge is negative up to 3/2 of the shortfall
+  // (g ~ -sqrt(s) (3 (a - b) / 2 - s), s = x - b), and closing every such node
+  // overshoots by half of it.
   //
   // Both are the first-order profile near an edge, whatever the bodies'
   // shapes: the edge moves to twice the extent of the tension inside it, or

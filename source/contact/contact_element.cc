@@ -312,8 +312,9 @@ namespace RingContact
       // its neighbours' slips: beside a sliding node the sticking nodes'
       // rows M s = 0 grow the slip and the traction away from it by 2 + sqrt
       // 3 per node (two blocks, 7 nodes, Gauss 3, mu = 0.37: tangential
-      // tractions of +9e4, -4.8e4, +1.3e4, ... against a bound of 150, no
-      // step solved), and a node beside the Hertz zone's centre slid at the
+      // tractions of alternating sign far past the Coulomb bound, no step
+      // solved: doc/validation.md, "Curved geometry, ties and touching
+      // bodies"), and a node beside the Hertz zone's centre slid at the
       // whole update and stuck at any fraction of it. With multipliers of
       // the displacement's degree the force the traction puts on slave node
       // j is then D_j lambda_t,j, and the Coulomb law per node
@@ -493,11 +494,11 @@ namespace RingContact
       // for a point that lands on that point, whatever the normal has turned
       // by meanwhile. The increment alone measured -g_n tau . n_n for a point
       // that closes a gap g_n while the master turns: a cylinder pressed
-      // from touching (steel on aluminium, mu = 0.2) got slips of 1e-7 to
-      // 1e-6 on nodes that stick, which turned their states from slip one
-      // way to slip the other at every iteration (68 to 85 iterations and two
-      // cuts; 9 to 12 and none now, bench/first-step). Small strain keeps the
-      // reference tangent, normal to d_n.
+      // from touching (steel on aluminium, mu = 0.2) got slips on nodes that
+      // stick, which turned their states from slip one way to slip the other at
+      // every iteration, with many iterations and cuts (bench/first-step;
+      // doc/validation.md, "Curved geometry, ties and touching bodies"). Small
+      // strain keeps the reference tangent, normal to d_n.
       // Only where the old partner is a closest point (d_n along the old
       // normal): at a vertex or a clamped end d_n has a tangential part of its
       // own, which would read as a slip of an unmoved point (two blocks

@@ -165,13 +165,14 @@ namespace RingContact
                   // corner) the extension runs inside the neighbouring
                   // segment's body, and a point pushed along it by the
                   // segment's tilted normal converges to a state that
-                  // penetrates the neighbour (measured: the nodal scheme
-                  // turned one element per step ended 6.8 % below the same
-                  // turn in smaller steps). It is held at the vertex instead,
-                  // with the vertex normal, as project() pairs it. Not within
-                  // the line search: the switch is a jump of the residual,
-                  // which would stop the search (measured: nodal, 80 around,
-                  // failed at step 5 of C's rotation).
+                  // penetrates the neighbour (measured: the nodal scheme turned
+                  // one element per step ended below the same turn in smaller
+                  // steps). It is held at the vertex instead, with the vertex
+                  // normal, as project() pairs it. Not within the line search:
+                  // the switch is a jump of the residual, which would stop the
+                  // search (measured: nodal, 80 around, failed early in C's
+                  // rotation). Both: doc/validation.md, "The rotation at
+                  // p = 1e7 Pa".
                   const Projection p = master.project_onto(x, preferred);
                   if (pairing == Pairing::hold || master.smooths_normals() ||
                       (p.t >= 0 && p.t <= 1))
@@ -282,8 +283,9 @@ namespace RingContact
     // the distance between the surfaces there (the bodies may be apart
     // or overlap by more than a segment: small strain pairs them in
     // the reference configuration, where they need not touch).
-    // Half a segment alone missed the cuts of blocks meshed 0.2 apart
-    // (uncut pieces, and a pressure 3 % off, silently).
+    // Half a segment alone missed the cuts of blocks meshed 0.2 apart (uncut
+    // pieces, and a pressure off, silently: doc/validation.md, "Figures that
+    // were in the code's comments").
     std::vector<Point<dim>> corners;
     double                  apart = 0;
     for (const double t : {0.0, 0.5, 1.0})

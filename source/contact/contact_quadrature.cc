@@ -197,7 +197,8 @@ namespace RingContact
     // displacement out of the weighted gaps, an error of the order of h in
     // the pressure (see theory.md).
     // Measured on the rings with one quadratic surface, each of these rules
-    // converged at an order of 0.9 to 1.0 in the mesh size.
+    // converged at first order in the mesh size (doc/validation.md, "Element
+    // mixes").
     // Degree 2 only: on cubic and quartic surfaces these rules fail the
     // exactness test, which says so in its own words.
     void
@@ -265,7 +266,8 @@ namespace RingContact
     // phi_i ds of a constant pressure exact: the rule must integrate the
     // surface's shape functions, polynomials of its degree, exactly. A
     // quartic slave with 'segment-based 2' (exact to degree 3) missed the
-    // patch test by 3.4 %.
+    // patch test (doc/validation.md, "Figures that were in the code's
+    // comments").
     void
     require_exactness(const IntegrationScheme &scheme,
                       const unsigned int       degree)
@@ -304,7 +306,7 @@ namespace RingContact
   // rule must see the nodes of the finer of the two surfaces, not only the
   // slave's. A linear slave facing a quadratic master integrated at the slave
   // vertices alone left the master's mid-side nodes without contact force and
-  // the pressure 10 % low at 40 elements around, first order.
+  // the pressure low, first order (doc/validation.md, "Element mixes").
   //
   // The family gives the rule, on [0, 1], the parameter of a segment or of a
   // piece (the contact element turns its weights into lengths, ds = |x_s'|

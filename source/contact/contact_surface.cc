@@ -758,9 +758,10 @@ namespace RingContact
     // same distance, neither near its end. Either facet's normal would do,
     // and which one the search met first decided: in small strain, which
     // pairs in the reference configuration where the gap stays open, the
-    // nodal scheme's pressure drifted from +0.8 % to -0.7 % around the
-    // quarter of an axisymmetric closing gap (prm/closing_gap.prm, 20
-    // segments): every node pushed along the tilted facet normal of the
+    // nodal scheme's pressure error drifted from positive to negative around
+    // the quarter of an axisymmetric closing gap (prm/closing_gap.prm, 20
+    // segments; doc/validation.md, "Curved geometry, ties and touching
+    // bodies"): every node pushed along the tilted facet normal of the
     // segment after it, the rings turned against each other. The vertex,
     // with its normal, is the symmetric choice. "The same distance" allows
     // for the mesh generator: gmsh puts the nodes of two circles at the same

@@ -32,7 +32,8 @@ namespace RingContact
   // The contact term keeps the other body's force out of the reaction: a
   // boundary's resultant once counted the contact force at its end node,
   // which lay on a contact surface, as its support's reaction (global
-  // equilibrium off by 1.5 %, found by probing).
+  // equilibrium broken, found by probing: doc/validation.md, "Figures that were
+  // in the code's comments").
   Vector<double>
   NodalForces::reactions() const
   {

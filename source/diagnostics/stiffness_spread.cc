@@ -3,9 +3,9 @@
 // What is measured and why is in stiffness_spread.h. The bound comes from
 // the two blocks of prm/two_blocks.prm made stiffer or thinner
 // (doc/validation.md, "Stiffnesses too far apart for double precision"):
-// there the direct solve's relative residual is about 6 eps S and exceeds
-// its bound of 1e-6 past S = 7.5e8, and the run stopped with "a body may be
-// free to move rigidly", the advice for a singular tangent. The refusal at
+// there the direct solve's relative residual grows as eps S and exceeds its
+// bound of 1e-6 where S is large enough, and the run stopped with "a body may
+// be free to move rigidly", the advice for a singular tangent. The refusal at
 // eps S = 1e-7 (S = 4.5e8) keeps a margin below that, for meshes whose
 // round-off sums over more cells.
 #include <ring_contact/base/dimension.h>

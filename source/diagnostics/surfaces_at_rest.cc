@@ -65,12 +65,13 @@ namespace RingContact
     // median size of the initial mean gaps g~_k / w_k, the gap or the
     // interference the problem states, where the surfaces conform (most
     // gaps within a factor 2 of each other). The threshold is low, 0.1 %: a
-    // shrink fit of 1e-3 R between straight facets that do not match swung
-    // from -100 % (nodes open) to +200 % at 40, 80 and 160 segments per
-    // quarter alike, where the sag is 19 %, 5 % and 1.2 % of the
-    // interference: the kinks of the facets, not the sag, make the swing,
-    // and refining does not remove it. Curved (Mapping degree = 2), the
-    // departure is 1e-6 of it and the swing a few percent.
+    // shrink fit of 1e-3 R between straight facets that do not match swung from
+    // open nodes to a multiple of the pressure at 40, 80 and 160 segments per
+    // quarter alike (doc/validation.md, "Curved geometry, ties and touching
+    // bodies"), where the sag is 19 %, 5 % and 1.2 % of the interference: the
+    // kinks of the facets, not the sag, make the swing, and refining does not
+    // remove it. Curved (Mapping degree = 2), the departure is 1e-6 of it and
+    // the swing a few percent.
     bool
     report_coarse_geometry(ContactInterface     &contact,
                            const Vector<double> &solution,
@@ -318,9 +319,9 @@ namespace RingContact
     // a quadratic master of the same segments passes the flat patch test to
     // 1e-12 under the nodal scheme). On such surfaces a point-wise transfer
     // departs from the mortar one only by the error of its rule on curved
-    // segments, which refinement removes (modelisations E to H: 2 % at 10
-    // segments round the ring, 0.1 % at 40); on surfaces that do not
-    // conform the departure stays.
+    // segments, which refinement removes (modelisations E to H:
+    // doc/validation.md, "Right by default on surfaces that do not match"); on
+    // surfaces that do not conform the departure stays.
     bool
     vertices_conform(ContactInterface &contact, const Vector<double> &solution)
     {

@@ -34,8 +34,9 @@ namespace RingContact
   {
     namespace
     {
-      // A mesh of the rings at 1600 x 120 elements is ~40 MB of text; a
-      // file much larger than that is not one of ours.
+      // A mesh of the rings at 1600 x 120 elements is a small fraction of this
+      // in text (doc/validation.md, "Figures that were in the code's
+      // comments"); a file much larger than that is not one of ours.
       constexpr std::size_t max_mesh_file_bytes = std::size_t(512) << 20;
 
       // Every error names the file first: a run reads a parameter file and

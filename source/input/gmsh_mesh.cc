@@ -152,11 +152,12 @@ namespace RingContact
     // line the file dropped, or a crack in the mesh, and its boundary
     // condition would silently be missing), that line must carry a
     // physical tag (an untagged line got boundary id 0: a slave line left
-    // out of its contact surface, the pressure off by up to 200 % in the
-    // patch test), and one only (two lines of two entities on one face,
-    // with two tags: one of them silently won). Each error names the
-    // file, the entity and the element. (A tagged line that is no edge of
-    // a cell, or an inner edge, is refused by the reader and by deal.II.)
+    // out of its contact surface, the pressure far off in the patch test:
+    // doc/validation.md, "Figures that were in the code's comments"), and one
+    // only (two lines of two entities on one face, with two tags: one of them
+    // silently won). Each error names the file, the entity and the element. (A
+    // tagged line that is no edge of a cell, or an inner edge, is refused by
+    // the reader and by deal.II.)
     void
     check_boundary_tags(const Triangulation<dim> &triangulation,
                         const GmshMesh           &mesh)

@@ -3,8 +3,9 @@
 // A general problem's mesh comes from a gmsh script whose curves the CAD
 // kernel knows exactly: a shrink fit's arcs, a cylinder's surface. The mesh
 // alone gives straight-sided cells between its vertices, and a disc in a
-// ring meshed with 40 against 57 segments per quarter then had a pressure
-// that swung by +-100 % around the circle. Here the curves become the
+// ring meshed with 40 against 57 segments per quarter then had a pressure that
+// swung wildly around the circle (doc/validation.md, "Curved geometry, ties and
+// touching bodies"). Here the curves become the
 // geometry, the way the rings have theirs: deal.II manifolds on the
 // boundary faces. A circle (recognised from gmsh's samples, to 1e-9 of its
 // radius) gets deal.II's own PolarManifold about its centre; any other

@@ -233,8 +233,8 @@ namespace RingContact
   // fractions are of the number of cells, as deal.II's
   // GridRefinement::refine_and_coarsen_fixed_number() takes them: a
   // fraction of the error (Doerfler's marking) refined a few cells at the
-  // load's corners per cycle (Hertz, 10 cycles of 0.3: 5800 unknowns and
-  // the pressure's L2 error 3.6 %).
+  // load's corners per cycle, and the pressure's L2 error stayed large (Hertz:
+  // doc/validation.md, "Adaptive refinement").
   void
   RefinementParameters::add_parameters(ParameterHandler &prm)
   {
@@ -255,9 +255,9 @@ namespace RingContact
           "The error indicator of a cell. " +
             refinement_estimators_documentation(),
           Patterns::Selection(RefinementEstimators::selection()));
-    // 0.1 by default: on Hertz the pressure's L2 error of 0.24 % took 46 000
-    // unknowns in 8 cycles of 0.1, 218 000 in 6 cycles of 0.3, which refine
-    // far from the contact too (doc/validation.md).
+    // 0.1 by default: on Hertz a small L2 error of the pressure took far fewer
+    // unknowns in cycles of 0.1 than in cycles of 0.3, which refine far from
+    // the contact too (doc/validation.md, "Adaptive refinement").
     s.add("Refine fraction",
           refine_fraction,
           "0.1",

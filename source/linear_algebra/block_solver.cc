@@ -10,10 +10,9 @@
 // (the layout of the blocks, A's pattern), setup() once per Newton
 // iteration (the blocks' values, Gamma, S factorized, the multigrid's
 // operators), vmult() at every GMRES iteration. On these two-dimensional
-// meshes it is slower than the direct solvers at every size, and needs
-// somewhat less memory (3.1 against MUMPS's 3.6 GB per process at
-// 2560 x 192, validation.md section 7): it is the option for a mesh whose
-// factorization does not fit.
+// meshes it is slower than the direct solvers at every size, and needs somewhat
+// less memory (doc/validation.md, "The iterative solver"): it is the option for
+// a mesh whose factorization does not fit.
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 
@@ -33,9 +32,9 @@ namespace RingContact
   namespace
   {
     /// GMRES's restart length and iteration limit.
-    // The 100 basis vectors are, with the matrix, most of the solver's
-    // memory (3.1 GB per process at 2560 x 192, where the rings took 248
-    // iterations per solve: two restarts).
+    // The 100 basis vectors are, with the matrix, most of the solver's memory
+    // (doc/validation.md, "The iterative solver", where the finest rings
+    // restart GMRES).
     constexpr unsigned int krylov_basis   = 100;
     constexpr unsigned int max_iterations = 1000;
 
@@ -81,8 +80,9 @@ namespace RingContact
 
   // gamma = 1, chosen among 0, 0.1, 1, 10 and 100: without the
   // augmentation the bodies held only by the contact (three blocks, Hertz)
-  // fail, gamma = 1 solves them in 11 and 19-24 iterations per solve at
-  // 10-15 % more iterations on the rings, and 10 or more makes more.
+  // fail, gamma = 1 solves them at the price of a few more iterations on the
+  // rings, and 10 or more makes more (doc/validation.md, "The iterative
+  // solver").
   BlockSolver::BlockSolver(const MPI_Comm communicator, const double tolerance)
       : communicator(communicator)
       , tolerance(tolerance)

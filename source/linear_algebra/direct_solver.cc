@@ -226,8 +226,9 @@ namespace RingContact
     ++counts.analyses;
     // The analysis estimates the factorization's peak memory (an upper
     // bound): one that the machine cannot hold is said now, in an
-    // instant, not after minutes of swapping (a fine master under a
-    // coarse slave drove UMFPACK past 5.5 GB and 150 s without a word).
+    // instant, not after minutes of swapping (a fine master under a coarse
+    // slave drove UMFPACK into gigabytes and minutes without a word:
+    // doc/validation.md, "The memory guard").
     const double bytes =
       info[UMFPACK_PEAK_MEMORY_ESTIMATE] * info[UMFPACK_SIZE_OF_UNIT];
     const double available = static_cast<double>(available_memory());

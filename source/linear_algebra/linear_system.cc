@@ -256,8 +256,9 @@ namespace RingContact
         // the owner's pattern must hold them before anything is added.
         d.matrix.reinit(owned, owned, dsp, d.communicator, true);
         // Epetra numbers a row's columns locally; the table of their global
-        // indices is read here once, not through a GCID call per entry at
-        // every solve (6-7 ms per solve at 640 x 48).
+        // indices is read here once, not through a GCID call per entry at every
+        // solve, which cost every solve time (doc/validation.md, "Time and
+        // memory behind the code's choices").
         const Epetra_Map &columns = d.matrix.trilinos_matrix().ColMap();
         global_column.resize(columns.NumMyElements());
         for (int k = 0; k < columns.NumMyElements(); ++k)
@@ -360,13 +361,13 @@ namespace RingContact
   // @sect4{The cells' fast path}
   //
   // Epetra's insertion by global index (binary searches, the maps from
-  // global to local indices, deal.II's row buffers) was about 45 % of an
-  // assembly on the Trilinos path. Most cells have no constrained unknown
-  // and all their rows on this process; their entries are added here at
-  // places computed once per pattern and kept by the cell's active index
-  // (A at 640 x 48 on two processes: assembly 0.156 -> 0.115 s per Newton
-  // iteration). The other cells, the boundary faces and the contact points
-  // take add(); either way each entry receives the same sum.
+  // global to local indices, deal.II's row buffers) was a large part of an
+  // assembly on the Trilinos path. Most cells have no constrained unknown and
+  // all their rows on this process; their entries are added here at places
+  // computed once per pattern and kept by the cell's active index, which
+  // shortened the assembly (doc/validation.md, "Time and memory behind the
+  // code's choices"). The other cells, the boundary faces and the contact
+  // points take add(); either way each entry receives the same sum.
   void
   LinearSystem::add_cell(const unsigned int               cell,
                          const AffineConstraints<double> &constraints,

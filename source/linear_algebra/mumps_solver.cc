@@ -68,10 +68,11 @@ namespace RingContact
     // A nested-dissection order of the matrix's unknowns by METIS, from the
     // entries (row, column), numbered from 1, of the whole matrix: the
     // position of each unknown in the pivot order, from 1 (MUMPS's PERM_IN).
-    // Empty if METIS fails. On the rings at 640 x 48 its LU takes 3.7e9
-    // flops, against 4.9-5.5e9 with the PORD order MUMPS chooses itself
-    // (which also varies from run to run with the order in which the
-    // processes' entries reach it; METIS's, from the sorted graph, does not).
+    // Empty if METIS fails. On the rings its LU takes fewer flops than with the
+    // PORD order MUMPS chooses itself (doc/validation.md, "Time and memory
+    // behind the code's choices"), which also varies from run to run with the
+    // order in which the processes' entries reach it; METIS's, from the sorted
+    // graph, does not.
     std::vector<int>
     nested_dissection_order(const int               n,
                             const std::vector<int> &rows,
@@ -284,10 +285,10 @@ namespace RingContact
   // a scaling is its usual safeguard, and MUMPS's default. (The rings and
   // the saddle point of the test mumps_solver solve as accurately without
   // one; a badly scaled pivot needs less regular matrices.) MUMPS's own
-  // iterative scaling, redone at every factorization of a distributed
-  // matrix, cost 15 % of a factorization at 640 x 48 (0.025 s of 0.175 s
-  // on two processes); this one is two passes over the entries and two
-  // sums. It is applied here, to the entries MUMPS receives, to the
+  // iterative scaling, redone at every factorization of a distributed matrix,
+  // cost a noticeable part of each factorization (doc/validation.md, "Time and
+  // memory behind the code's choices"); this one is two passes over the entries
+  // and two sums. It is applied here, to the entries MUMPS receives, to the
   // right-hand side and to the solution, and MUMPS is told not to scale
   // (ICNTL(8) = 0):
   // scaling arrays handed to MUMPS instead (ICNTL(8) = -1) are freed by

@@ -76,8 +76,9 @@ namespace RingContact
     // make it. Not done after each rename: the data of a renamed file is on
     // disk (fsync) before the rename, which a killed process cannot undo;
     // that the rename itself survives a power loss is left to the file
-    // system (ext4 commits it within seconds), as a folder fsync per file
-    // about doubled the cost of each step's output.
+    // system (ext4 commits it within seconds), as a folder fsync per file made
+    // each step's output much slower (doc/validation.md, "Time and memory
+    // behind the code's choices").
     void
     sync_folder(const std::string &folder)
     {

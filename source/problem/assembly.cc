@@ -33,9 +33,10 @@ namespace RingContact
   // configuration, which does not move: per cell of this process and
   // quadrature point, JxW and the gradients of the displacement's scalar
   // shape functions (both components share them). Evaluated once, by
-  // FEValues through the mapping, instead of at every assembly (a fifth
-  // of an assembly at 640 x 48). 288 bytes per Q1 cell, 1.4 kB per Q2
-  // cell: about a tenth of the memory of the factorization at 640 x 48.
+  // FEValues through the mapping, instead of at every assembly, of which it was
+  // a noticeable part. 288 bytes per Q1 cell, 1.4 kB per Q2 cell: small beside
+  // the memory of the factorization (doc/validation.md, "Time and memory behind
+  // the code's choices").
   //
   // The layout per finite element of the collection says where each
   // unknown's gradient is found: both displacement components of FE_Q(p)^2
@@ -388,8 +389,9 @@ namespace RingContact
         // With the cell's index: a cell without constrained unknowns, all
         // its rows this process's, goes straight to the places of its
         // entries in the matrix's storage, found once per sparsity pattern
-        // (LinearSystem::add_cell()). Inserting by global index was about
-        // 45 % of an assembly on the Trilinos path.
+        // (LinearSystem::add_cell()). Inserting by global index was a large
+        // part of an assembly on the Trilinos path (doc/validation.md, "Time
+        // and memory behind the code's choices").
         add_local_system(cell_matrix,
                          cell_rhs,
                          dofs,

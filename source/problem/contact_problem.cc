@@ -108,8 +108,8 @@ namespace RingContact
       output_results(history_rows.empty() ? 0 : history_rows.back().step);
 
     // The linear solver's work, with the timing summary. GMRES's iterations
-    // per solve say how well the block preconditioner holds up (they grow
-    // with the mesh: 41 per solve at 160 x 12, 60 at 320 x 24); the direct
+    // per solve say how well the block preconditioner holds up (they grow with
+    // the mesh: doc/validation.md, "The iterative solver"); the direct
     // solver's factorizations, analyses (one per sparsity pattern) and the
     // flops of the last LU say how far a run is from the flop limit that
     // bench/ measures against.

@@ -26,10 +26,11 @@ namespace RingContact
   // extrapolation finds in a few iterations (small strain). The stick and
   // slip states are chosen once the zone no longer moves. Chosen together
   // from the first iteration, the states flipped in waves over a zone that
-  // grew by a node or two per damped iteration: steel on aluminium, mu =
-  // 0.2, h = 0.005, 29 iterations and a cut with Gauss 2. The test reads
-  // the pairs after the linearised start: a finite-strain pair solved
-  // linearised is a small-strain one.
+  // grew by a node or two per damped iteration: steel on aluminium, mu = 0.2,
+  // many iterations and a cut with Gauss 2 (doc/validation.md, "Curved
+  // geometry, ties and touching bodies"). The test reads the pairs after the
+  // linearised start: a finite-strain pair solved linearised is a small-strain
+  // one.
   void
   FirstStepStrategy::start(NonlinearProblem &problem)
   {
@@ -73,11 +74,12 @@ namespace RingContact
   // iteration, whose zone is then within a node or two. Solved in finite
   // strain from the start, the first update put the whole load on the two or
   // three nodes that touch, a state far outside the range of the
-  // linearisation (relative residual 2 after the update, then damped
-  // updates, inverted elements and cuts). Steel on aluminium (Hertz, a = R /
-  // 10, the whole load in one step from touching), Saint Venant-Kirchhoff,
-  // frictionless: 45 to 144 iterations and two to five cuts before, 6 to 10
-  // and none now (bench/first-step, validation.md).
+  // linearisation (a large residual after the update, then damped updates,
+  // inverted elements and cuts). Steel on aluminium (Hertz, a = R / 10, the
+  // whole load in one step from touching), Saint Venant-Kirchhoff,
+  // frictionless: many iterations and cuts before, a few and none now
+  // (bench/first-step; doc/validation.md, "Curved geometry, ties and touching
+  // bodies").
   bool
   FirstStepStrategy::starts_from_rest_in_finite_strain(
     NonlinearProblem &problem) const
@@ -96,14 +98,14 @@ namespace RingContact
     // under the model's laws from there (release_stick()). Steel on
     // aluminium from touching, Saint Venant-Kirchhoff, mu = 0.2 and 0.5,
     // one step at h = 0.01 to 0.0025 and the first of four at h = 0.01 and
-    // 0.005: 6 to 9 iterations and no cut, where the finite-strain iteration
-    // from rest took 12 to 164 and up to five cuts or failed
-    // (bench/first-step). Not where the problem says it may not be
-    // linearised (a cyclic sector: small strain there solved a sector of 11
-    // of 12 elements, C, Gauss 2, with an inexact tangent, linearly
-    // converging, a defect of its own, left open). Every process decides
-    // alike (each holds the whole vector, but a decision that differed would
-    // leave the others waiting).
+    // 0.005: a few iterations and no cut, where the finite-strain iteration
+    // from rest took many, with cuts, or failed (bench/first-step;
+    // doc/validation.md, "Curved geometry, ties and touching bodies"). Not
+    // where the problem says it may not be linearised (a cyclic sector: small
+    // strain there solved a sector of 11 of 12 elements, C, Gauss 2, with an
+    // inexact tangent, linearly converging, a defect of its own, left open).
+    // Every process decides alike (each holds the whole vector, but a decision
+    // that differed would leave the others waiting).
     return finite_strain && zones_to_find && problem.may_linearise() &&
            Utilities::MPI::max(problem.iterate().linfty_norm(),
                                problem.get_communicator()) == 0;
@@ -121,9 +123,10 @@ namespace RingContact
   // From a linearised iterate to the model's own laws and contact geometry,
   // at the same iterate. The first assembly there chooses the states by the
   // plain rule (extrapolated across the switch, from the linearised
-  // profile, the stick zone's edge went astray: steel on aluminium, mu =
-  // 0.2, h = 0.0025, Gauss 2, 52 iterations and a cut). The Newton solver
-  // pairs afresh there (NewtonSolver::to_the_model_laws()).
+  // profile, the stick zone's edge went astray: steel on aluminium, mu = 0.2,
+  // h = 0.0025, Gauss 2, many iterations and a cut; doc/validation.md, "Curved
+  // geometry, ties and touching bodies"). The Newton solver pairs afresh there
+  // (NewtonSolver::to_the_model_laws()).
   void
   FirstStepStrategy::leave_linearisation(NonlinearProblem &problem)
   {
@@ -142,10 +145,10 @@ namespace RingContact
   // friction. Not at the update that imposes the boundary increment, whose
   // iterate is the last load state's. To a node: with segment-based 2 an
   // edge node can open and close in turn under whole updates (steel on
-  // aluminium, the first of four steps, h = 0.0025: 41, 40, 41, 40 closed),
-  // and waiting for no change held the stick to the 8th iteration (12
-  // iterations in all). And at the latest halfway through Newton/Maximum
-  // iterations, whatever it is set to.
+  // aluminium, the first of four steps, h = 0.0025), and waiting for no change
+  // held the stick for most of the step's iterations (doc/validation.md,
+  // "Curved geometry, ties and touching bodies"). And at the latest halfway
+  // through Newton/Maximum iterations, whatever it is set to.
   bool
   FirstStepStrategy::release_stick(NonlinearProblem  &problem,
                                    const unsigned int it,
@@ -169,13 +172,13 @@ namespace RingContact
   // in stick), and the stick zones' once the stick and slip states are
   // free. Where the contact is piecewise linear, updates that open or close
   // nodes are also taken whole (NewtonSolver::line_search()). Not at finite
-  // strain: shallow ironing (friction 0.3, 40 steps) went from 181
-  // iterations to 365 and 4 cuts, its zone moving by a node or two a step
-  // on a sliding, turning surface. Except the stick zones' in the first
-  // iterations under the model's laws of a frictional step from rest (the
-  // contact zone is then in place, from the linearised iterations; the
-  // contact zones' edges are never extrapolated at finite strain, where the
-  // contact is not piecewise linear).
+  // strain: shallow ironing (friction 0.3, 40 steps) took many more iterations,
+  // and cuts (doc/validation.md, "Curved geometry, ties and touching bodies"),
+  // its zone moving by a node or two a step on a sliding, turning surface.
+  // Except the stick zones' in the first iterations under the model's laws of a
+  // frictional step from rest (the contact zone is then in place, from the
+  // linearised iterations; the contact zones' edges are never extrapolated at
+  // finite strain, where the contact is not piecewise linear).
   void
   FirstStepStrategy::choose_edge_extrapolation(NonlinearProblem  &problem,
                                                const unsigned int it)
@@ -210,16 +213,16 @@ namespace RingContact
   // load is zero at rest), not by r. Such a zone grows as the square root of
   // the load (Hertz; the displacements away from it grow about as the
   // load), and the linear extrapolation, twice the first of equal steps,
-  // closed 39 nodes where 29 close (h = 0.005): 12 iterations failed from
-  // there, and the step was solved in 10 more from the first step's state.
-  // The square root is a measured choice, not a derived one: steel on
-  // aluminium from touching, four steps, h = 0.01 and 0.005, mu = 0, 0.2,
-  // 0.5, nodal / Gauss 2 / segment-based 2, the second step's iterations:
-  // finite strain 7 to 22 -> 3 to 6, small strain 2 to 10 -> 1 to 5
-  // (bench/first-step, its n=4 lines). A zone over most of its surface
-  // (conforming bodies: the rings, the patch test, a fit) or none (bodies
-  // apart) is linear in the load, and keeps the linear extrapolation (exact
-  // for the patch test; the rings' ramp took one more iteration with the
+  // closed far more nodes than close: the Newton iteration failed from there,
+  // and the step was then solved from the first step's state. The square root
+  // is a measured choice, not a derived one: steel on aluminium from touching,
+  // four steps, h = 0.01 and 0.005, mu = 0, 0.2, 0.5, nodal / Gauss 2 /
+  // segment-based 2: the second step takes fewer iterations with it, in finite
+  // and in small strain (bench/first-step, its n=4 lines; doc/validation.md,
+  // "Curved geometry, ties and touching bodies"). A zone over most of its
+  // surface (conforming bodies: the rings, the patch test, a fit) or none
+  // (bodies apart) is linear in the load, and keeps the linear extrapolation
+  // (exact for the patch test; the rings' ramp took more iterations with the
   // square root). Imposed displacements are not scaled so: the square root
   // moves them short of their target, and the load stepper falls back to
   // the linear extrapolation there (LoadStepper::predict()).

@@ -97,12 +97,12 @@ namespace RingContact
   // A load program with a kink in it (pressed, then moved sideways) is not
   // extrapolated across the kink: the predictor would go on pressing. Seen
   // where the imposed displacements are: a cylinder pressed by its top moved
-  // down, then sideways in one step, started from a zone pressed on by 90 %
-  // more, and its Newton iteration failed after 12 iterations before it was
-  // tried again from the converged state (17 in all, 5 without). The square
-  // root moves imposed displacements short of their target: there the
-  // linear extrapolation is taken, if it meets the target (a Hertz step
-  // driven by its top's displacement keeps its predictor so).
+  // down, then sideways in one step, started from a zone pressed on far past
+  // the target, and its Newton iteration failed before it was tried again from
+  // the converged state (doc/validation.md, "Curved geometry, ties and touching
+  // bodies"). The square root moves imposed displacements short of their
+  // target: there the linear extrapolation is taken, if it meets the target (a
+  // Hertz step driven by its top's displacement keeps its predictor so).
   double
   LoadStepper::check_predictor(const Vector<double> &converged,
                                const double          linear,

@@ -28,18 +28,19 @@ namespace RingContact
   // After how many iterations of a Newton solve the pairing is held. On a
   // faceted master surface turned by the rotation, every slave point of C
   // with the nodal scheme (80 of 80, step 1) flipped between the two
-  // segments of a groove at every iteration. Ordinary steps converge
-  // before (one or two iterations per ramp step), with a free pairing.
+  // segments of a groove at every iteration. Ordinary steps converge before
+  // (doc/validation.md, "Newton"), with a free pairing.
   constexpr unsigned int hold_pairing_after = 4;
 
   // While the pairing is held, an accepted iterate stops a point that has
   // passed its partner's end at that vertex, with the vertex normal: past
   // a groove's vertex the segment's extension runs inside the neighbouring
-  // segment, and holding points there ended a rotation of C (facet
-  // normals, nodal scheme, one element per step) 6.8 % low. The line
-  // search's trials follow the extension instead (Pairing::hold): the
-  // switch to the vertex is a jump of the residual, which stopped the
-  // search (C, facet normals, nodal, 80 around, failed at step 5).
+  // segment, and holding points there ended a rotation of C (facet normals,
+  // nodal scheme, one element per step) low. The line search's trials follow
+  // the extension instead (Pairing::hold): the switch to the vertex is a jump
+  // of the residual, which stopped the search (C, facet normals, nodal, 80
+  // around, failed early in the rotation). Both: doc/validation.md, "The
+  // rotation at p = 1e7 Pa".
   Pairing
   NewtonSolver::accepted_pairing() const
   {
@@ -146,11 +147,12 @@ namespace RingContact
         // The next iterate without its tangent first when it is expected to
         // converge (see ConvergenceRecord): the test of convergence needs
         // only the residual, and after the last update of a step the
-        // tangent was thrown away (21 of 48 assemblies on A's ramp). The
-        // forecast uses this run's own quadratic rate: always assembling
-        // the residual first wasted an assembly at every iteration that did
-        // not converge (a loss on the rotation modelisations); on A's ramp
-        // the forecast skips 19 tangents and wastes none.
+        // tangent was thrown away (a large share of the assemblies on A's
+        // ramp). The forecast uses this run's own quadratic rate: always
+        // assembling the residual first wasted an assembly at every iteration
+        // that did not converge (a loss on the rotation modelisations); on A's
+        // ramp the forecast skips most of those tangents and wastes none
+        // (doc/validation.md, "Time and memory behind the code's choices").
         updated       = true;
         update_lifted = problem.imposing_boundary_increment();
         update_from   = final_residual;
@@ -236,12 +238,12 @@ namespace RingContact
   // slip states are chosen under the model's laws right away, their edges
   // extrapolated there for as many iterations as a step's first. The
   // linearised stick zone is not the finite-strain one (a = R / 10 strains
-  // the bodies by 5 %: steel on aluminium, mu = 0.2, h = 0.005, its edge is
-  // 3 nodes further in), and finding it first cost 4 to 6 damped
-  // iterations, after which the finite-strain iteration moved the edge a
-  // node per iteration: h = 0.0025, 13 to 16 iterations (and cuts under the
-  // default 12); now 8 or 9 (bench/first-step). Returns the number of
-  // states changed by the new assembly.
+  // the bodies by 5 %: steel on aluminium, mu = 0.2, its edge is several nodes
+  // further in), and finding it first cost damped iterations, after which the
+  // finite-strain iteration moved the edge a node per iteration: on a fine mesh
+  // more iterations than the default 12, and cuts (bench/first-step;
+  // doc/validation.md, "Curved geometry, ties and touching bodies"). Returns
+  // the number of states changed by the new assembly.
   unsigned int
   NewtonSolver::release_held_stick(const unsigned int it)
   {
@@ -391,9 +393,8 @@ namespace RingContact
       }
     // The changes are counted from here: each trial of the line search is
     // assembled afresh, and counting against the trial before it said
-    // "changed 0" while the active set grew by three nodes per iteration
-    // (and an iterate could pass as converged with a set it was not solved
-    // with).
+    // "changed 0" while the active set grew at every iteration (and an iterate
+    // could pass as converged with a set it was not solved with).
     double     step_length   = 1;
     const auto count_changes = [&]() {
       n_changed           = n_changed_since(states_before);
@@ -504,10 +505,10 @@ namespace RingContact
         // that opens or closes nodes is taken whatever its merit: the
         // merit of a state with another active set has other rows (a gap
         // where there was a pressure), and its increase says nothing about
-        // the step. Damped, a zone grew by three nodes per iteration from a
-        // touching point (steps of 1/16); whole, it finds its width in two
-        // or three iterations. The line search stays for the rest: a fixed
-        // active set, friction's stick and slip, faceted masters.
+        // the step. Damped, a zone grew slowly from a touching point; whole, it
+        // finds its width in a few iterations (doc/validation.md, "Curved
+        // geometry, ties and touching bodies"). The line search stays for the
+        // rest: a fixed active set, friction's stick and slip, faceted masters.
         if (halving == 0 && first_step.extrapolating_edges() &&
             !problem.state_rejected() &&
             n_closed_changed_since(states_before) > 0)
@@ -516,10 +517,11 @@ namespace RingContact
         // no state, one that changes only friction's states (a stall on the
         // kink between stick and slip: the fraction taken keeps the states,
         // and the next update aims at the same states again; the residual
-        // halved at each iteration, 8e-8, 4e-8, 2e-8, ...). Never back to
-        // states this step has met: the method can cycle (with every such
-        // update whole, the second step of the problem above alternated
-        // between two sets of 14 and 15 closed nodes).
+        // halved at each iteration). Never back to states this step has met:
+        // the method can cycle (with every such update whole, the second step
+        // of the problem above alternated between two sets of closed nodes).
+        // The figures: doc/validation.md, "Curved geometry, ties and touching
+        // bodies".
         const bool whole_state_change =
           stalled_on_kink && n_closed_changed_since(states_before) == 0;
         if (halving == 0 && whole_state_change && !problem.state_rejected() &&

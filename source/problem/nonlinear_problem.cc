@@ -69,9 +69,9 @@ namespace RingContact
   ContactProblem::residual_measure() const
   {
     // Several roundings per term, the linear solver's backward error, and
-    // the row sums of the noise: a factor of ten over eps |K| |z|, measured
-    // on the variants of scripts/studies/variants (the stalled residuals of
-    // steel/aluminium at p = 1e2 are 0.05 to 0.3 of eps |K| |z|).
+    // the row sums of the noise: a factor of ten over eps |K| |z|, above the
+    // stalled residuals measured on the variants of scripts/studies/variants
+    // (doc/validation.md, "Newton").
     constexpr double round_off_factor = 10;
     const double     eps              = std::numeric_limits<double>::epsilon();
 
@@ -190,8 +190,9 @@ namespace RingContact
   // the system) is a failure of the iteration with its reason, not an
   // exception that ends the run: usually a body that nothing holds in some
   // direction (a missing support, or a contact that is open). Before this
-  // was so, UMFPACK's code ended the run, or a block pushed sideways with
-  // no support "converged", slid away, to 13 % of its contact pressure.
+  // was so, UMFPACK's code ended the run, or a block pushed sideways with no
+  // support "converged", slid away, with a fraction of its contact pressure
+  // (doc/validation.md, "Figures that were in the code's comments").
   bool
   ContactProblem::solve_linear_system(Vector<double> &newton_update,
                                       std::string    &failure_reason)

@@ -96,9 +96,9 @@ namespace RingContact
       // already is in this cycle, the shorter one waits for the next; neither
       // is coarsened. Refined on its own, one surface ends up several times
       // finer than the other, which the contact does not survive (Hertz,
-      // segment-based 2, 8 cycles: p0 -5.5 % without the rule, -0.07 %
-      // with it). Other rules measured (doc/validation.md): the master a
-      // level ahead of the slave, the slave at least as fine as the master.
+      // segment-based 2: p0 far off without the rule, close with it). Other
+      // rules measured: the master a level ahead of the slave, the slave at
+      // least as fine as the master (doc/validation.md, "Adaptive refinement").
       const auto future_length = [](const auto &cell, const unsigned int f) {
         const double length = cell->face(f)->measure();
         return cell->refine_flag_set() ? length / 2 : length;

@@ -525,7 +525,8 @@ namespace RingContact
     // This process's cells; the contact couplings are few and the same on
     // every process. The couplings of constrained unknowns are left out
     // (keep_constrained_dofs = false): AffineConstraints condenses them
-    // away in the assembly, and dropping them halved UMFPACK's time.
+    // away in the assembly, and dropping them made UMFPACK much faster
+    // (doc/validation.md, "Time and memory behind the code's choices").
     system->release();
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(

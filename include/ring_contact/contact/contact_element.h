@@ -36,12 +36,13 @@ namespace RingContact
     // neighbours, and with friction the old partner), the multipliers and
     // the tangential tractions. AD numbers of a static capacity (their
     // derivatives sized to the element's unknowns at run time) need no
-    // allocation: with dynamic ones, C's assembly on the seed mesh took
-    // 1.1 ms per iteration instead of 0.9 ms (bench/alternate --seed). The
-    // capacity of degree 2 (2 x 3 + 4 x 2 x 3 + 3 + 3 = 36) serves the
-    // linear and quadratic surfaces; the elements of cubic and quartic ones
-    // (up to 2 x 5 + 4 x 2 x 5 + 5 + 5 = 60) take numbers of that capacity:
-    // with those for every element, C's assembly took 38 % longer.
+    // allocation: dynamic ones allocate, and made C's assembly slower
+    // (bench/alternate --seed; doc/validation.md, "Time and memory behind the
+    // code's choices"). The capacity of degree 2 (2 x 3 + 4 x 2 x 3 + 3 + 3 =
+    // 36) serves the linear and quadratic surfaces; the elements of cubic and
+    // quartic ones (up to 2 x 5 + 4 x 2 x 5 + 5 + 5 = 60) take numbers of that
+    // capacity: given to every element, it made the common case slower (the
+    // same section).
     constexpr unsigned int small_capacity = 2 * 3 + 4 * 2 * 3 + 3 + 3;
     constexpr unsigned int large_capacity = 2 * 5 + 4 * 2 * 5 + 5 + 5;
     using SmallAD = Sacado::Fad::SLFad<double, small_capacity>;

@@ -35,8 +35,9 @@ namespace RingContact
   /// its linear factors (t - t_j) / (t_i - t_j), with its first and second
   /// derivatives carried along by Leibniz's rule: the projections of the
   /// contact search evaluate the segments' curves millions of times, and
-  /// deal.II's general Polynomial (any number of derivatives, its roots in
-  /// a std::vector) made this a third of the search.
+  /// deal.II's general Polynomial (any number of derivatives, its roots in a
+  /// std::vector) made this a large part of the search (doc/validation.md,
+  /// "Time and memory behind the code's choices").
   class LagrangeBasis1D
   {
   public:

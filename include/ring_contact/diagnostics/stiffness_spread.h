@@ -6,8 +6,9 @@
 // stiffnesses differ by a factor S, the forces of the stiffest cells,
 // computed from displacements set by the softest, carry a round-off of
 // about eps S of the load: bodies of very different Young's moduli, or a
-// body very thin against its cells' length, exhaust double precision, and
-// the direct solve's residual, about 6 eps S (measured), exceeds its bound.
+// body very thin against its cells' length, exhaust double precision, and the
+// direct solve's residual, a few times eps S (measured: doc/validation.md,
+// "Stiffnesses too far apart for double precision"), exceeds its bound.
 // Said before the first step (refused past eps S = 1e-7, S = 4.5e8), and
 // named when a solve fails, instead of a body free to move rigidly.
 #ifndef ring_contact_diagnostics_stiffness_spread_h

@@ -35,9 +35,9 @@
 // elasticity as its near-null space: the translations and the rotation).
 // (B Gamma D, zero but for the friction's regularisation on sticking rows,
 // is left out of the preconditioner.) With exact inverses GMRES would
-// converge in two iterations. Measured (bench/scale, tests/iterative_solver):
-// 6-11 iterations per solve on the seed meshes, but growing with the mesh on
-// the rings (37 at 160 x 12, 53 at 320 x 24, 73 at 640 x 48): the diagonal
+// converge in two iterations. Measured (bench/scale, tests/iterative_solver;
+// doc/validation.md, "The iterative solver"): few iterations per solve on the
+// seed meshes, but more with every refinement of the rings: the diagonal
 // approximation of A^-1 in S misses the long-range compliance of the
 // bodies, and the V-cycle's error multiplies it. On these two-dimensional
 // meshes a direct factorization is faster; the iterative solver needs less

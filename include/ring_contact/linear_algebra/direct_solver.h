@@ -3,11 +3,11 @@
 // analysis (the fill-reducing ordering and the elimination tree) is kept
 // while the sparsity pattern does not change, so that a Newton iteration
 // with the same contact couplings only factorizes numerically (deal.II's
-// class analyses at every call). Measured on the rings at 640 x 48 (126 720
-// unknowns, OpenBLAS): analysis 0.14 s, factorization 0.46-0.57 s for
-// 4.8e9 flops; UMFPACK's other choices are no faster there (symmetric
-// strategy the same, unsymmetric twice the time, METIS ordering 3.5e9 flops
-// in the same time and a 0.5 s analysis).
+// class analyses at every call). UMFPACK's other choices (its symmetric and
+// unsymmetric strategies, the METIS ordering) were measured on the rings at
+// 640 x 48 and are no faster there; their figures, with the time of the
+// analysis and of the factorization, are in doc/validation.md, "Time and memory
+// behind the code's choices".
 // The matrix is handed over as it is stored (deal.II's compressed rows,
 // which are the compressed columns of A^T, solved with UMFPACK_At), each
 // row's columns sorted, as UMFPACK requires, once per pattern.

@@ -5,14 +5,14 @@
 // right-hand side and solution whole on every process (they are, in this
 // program: see LinearSystem). The pivot order is METIS's nested dissection
 // of the whole pattern, computed on process 0 (MUMPS's own choice, PORD in
-// Debian's build, which has neither METIS nor Scotch, makes a third more
-// flops on the rings).
+// Debian's build, which has neither METIS nor Scotch, makes more flops on the
+// rings: doc/validation.md, "Time and memory behind the code's choices").
 //
 // Trilinos's Amesos_Mumps does the same through Epetra, but rebuilds its
-// triplets and redistributes the matrix at every factorization: at 640 x 48
-// on two processes it took 0.39-0.45 s per factorization, of which MUMPS's
-// own factorization driver was 0.24 s. The same reason the serial path calls
-// UMFPACK itself (DirectSolver).
+// triplets and redistributes the matrix at every factorization, which took a
+// large part of each factorization's time beside MUMPS's own work (measured at
+// 640 x 48 on two processes: the same section). The same reason the serial path
+// calls UMFPACK itself (DirectSolver).
 #ifndef ring_contact_linear_algebra_mumps_solver_h
 #define ring_contact_linear_algebra_mumps_solver_h
 

@@ -4,16 +4,16 @@
 // for the force on one boundary: its applied load where it is loaded, its
 // part of the support reactions where it is supported. The reactions are
 // nodal, and a corner node belongs to two boundaries; summing the nodal
-// forces over a boundary's nodes, as was done first, gave for blocks
-// loaded by (0.1 p, -p) with one x-support -92 857 instead of -100 000 on
-// the support, 62 447 instead of 100 000 on the loaded edge and -71 429
-// instead of 0 on a free edge. The split of a corner's reaction is set up
-// once per mesh (the constructor: which boundaries hold each node, along
-// which directions, with which weights) and applied to each state's
-// reactions (resultant()). The reactions leave out the contact forces: a
-// support whose end node lies on a contact surface once reported that
-// node's contact force as its own. general.cc uses the two helpers below
-// too, for its check of a load along a held direction.
+// forces over a boundary's nodes, as was done first, gave wrong resultants for
+// blocks loaded by (0.1 p, -p) with one x-support, on the support, the loaded
+// edge and a free edge alike (doc/validation.md, "Figures that were in the
+// code's comments"). The split of a corner's reaction is set up once per mesh
+// (the constructor: which boundaries hold each node, along which directions,
+// with which weights) and applied to each state's reactions (resultant()). The
+// reactions leave out the contact forces: a support whose end node lies on a
+// contact surface once reported that node's contact force as its own.
+// general.cc uses the two helpers below too, for its check of a load along a
+// held direction.
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -326,9 +326,10 @@ namespace RingContact
     // is estimated from its traction density next to the node, the
     // reaction of its neighbouring nodes over their weights (int phi ds):
     // exact where each boundary's traction is uniform near the corner (a
-    // split by face lengths alone was off by 9 % in the frictional patch
-    // test, whose sides carry sigma_xx and its bottom sigma_xy). What the
-    // estimates leave of c is shared by weight, so that the parts sum to c.
+    // split by face lengths alone was off in the frictional patch test, whose
+    // sides carry sigma_xx and its bottom sigma_xy: doc/validation.md, "Figures
+    // that were in the code's comments"). What the estimates leave of c is
+    // shared by weight, so that the parts sum to c.
     for (const SharedDirection &shared : shared_directions)
       {
         const auto member = std::find_if(shared.members.begin(),

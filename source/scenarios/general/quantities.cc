@@ -279,7 +279,8 @@ namespace RingContact
     // configuration (the expression's x and y, as every check's). The rule,
     // Gauss points on 8 pieces of each segment, integrates p_h^2 exactly and
     // follows a reference that is not smooth, as Hertz's sqrt at the edge of
-    // the contact (4 points per segment read 0.55 % where 24 read 0.56 %).
+    // the contact (fewer points per segment read a smaller error:
+    // doc/validation.md, "Figures that were in the code's comments").
     double
     CheckedQuantities::pressure_l2_error(const ProblemCheckParameters &check,
                                          const SolutionState          &state,
@@ -314,12 +315,12 @@ namespace RingContact
     CheckedQuantities::resultant_force(const ProblemCheckParameters &check,
                                        const SolutionState &state) const
     {
-      // Summing the nodal forces over a boundary's nodes gave, for blocks
-      // loaded by (0.1 p, -p) with one x-support, -92 857 instead of
-      // -100 000 on the support and -71 429 instead of 0 on a free edge: a
-      // corner node's force belongs to two boundaries. The reactions used
-      // leave the contact forces out: a support whose end node lies on a
-      // contact surface took that node's contact force as its own.
+      // Summing the nodal forces over a boundary's nodes gave wrong resultants
+      // for blocks loaded by (0.1 p, -p) with one x-support, on the support and
+      // on a free edge (doc/validation.md, "Figures that were in the code's
+      // comments"): a corner node's force belongs to two boundaries. The
+      // reactions used leave the contact forces out: a support whose end node
+      // lies on a contact surface took that node's contact force as its own.
       if (!resultants || resultants_mesh != state.mesh_version())
         {
           resultants_mesh = state.mesh_version();
