@@ -60,7 +60,7 @@ namespace RingContact
                                     normal_target,
                                     normal_component,
                                     contact_interfaces(),
-                                    parameters.contact.friction_coefficient > 0,
+                                    parameters.contact.frictional(),
                                     log);
     // Coulomb friction's discrete problem is proved to have one solution
     // only for small coefficients; past about 1 a second one can appear, as

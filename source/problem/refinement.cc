@@ -298,7 +298,7 @@ namespace RingContact
                                solution,
                                materials,
                                slave_boundaries(parameters),
-                               parameters.contact.friction_coefficient > 0};
+                               parameters.contact.frictional()};
     return RingContact::estimate_error(parameters.refinement.estimator, input);
   }
 

@@ -212,7 +212,7 @@ namespace RingContact
       // FE_Nothing, which adds no unknown. A frictionless run then has the
       // same unknowns, numbering and digits as before friction existed.
       const std::unique_ptr<FiniteElement<dim>> tangential =
-        parameters.contact.friction_coefficient > 0 ?
+        parameters.contact.frictional() ?
            std::unique_ptr<FiniteElement<dim>>(
             std::make_unique<FE_Q<dim>>(fe.multiplier_degree)) :
            std::make_unique<FE_Nothing<dim>>();

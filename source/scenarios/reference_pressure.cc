@@ -253,7 +253,7 @@ namespace RingContact
   std::vector<std::string>
   ReferencePressureScenario::trailing_columns() const
   {
-    if (run_parameters().contact.friction_coefficient > 0)
+    if (run_parameters().contact.frictional())
       return Friction::columns();
     return {};
   }
@@ -268,7 +268,7 @@ namespace RingContact
                               reference_pressure(state.load_state()),
                               parameters.contact.reported_pressure,
                               row.leading);
-    if (parameters.contact.friction_coefficient > 0)
+    if (parameters.contact.frictional())
       Friction::report(state, parameters.contact.probe_point, row.trailing);
   }
 
@@ -276,7 +276,7 @@ namespace RingContact
   ReferencePressureScenario::step_fields(const HistoryRow &row) const
   {
     auto fields = ReferencePressure::step_fields(row);
-    if (run_parameters().contact.friction_coefficient > 0)
+    if (run_parameters().contact.frictional())
       for (auto &field : Friction::step_fields(row))
         fields.push_back(field);
     return fields;

@@ -156,6 +156,14 @@ namespace RingContact
     PressureMeasure                reported_pressure;
     Point<dim>                     probe_point;
 
+    /// Whether the contact is frictional (Coulomb, mu > 0): the one
+    /// place outside contact/ that reads the coefficient to decide it.
+    bool
+    frictional() const
+    {
+      return friction_coefficient > 0;
+    }
+
     void
     add_parameters(ParameterHandler &prm);
     /// Slave and master differ.

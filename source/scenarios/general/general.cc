@@ -364,7 +364,7 @@ namespace RingContact
           std::vector<std::string> columns;
           for (const auto &check : problem.checks)
             columns.push_back(check.column());
-          if (parameters.contact.friction_coefficient > 0)
+          if (parameters.contact.frictional())
             columns.emplace_back("slipping_nodes");
           return columns;
         }
@@ -381,7 +381,7 @@ namespace RingContact
           for (const auto &check : problem.checks)
             row.trailing.emplace_back(check.column(),
                                       quantities.value(check, state));
-          if (parameters.contact.friction_coefficient > 0)
+          if (parameters.contact.frictional())
             row.trailing.emplace_back("slipping_nodes",
                                       static_cast<double>(
                                         Friction::n_slipping(state)));
@@ -404,7 +404,7 @@ namespace RingContact
                format_number(row.value(problem.checks[k].column())),
                10,
                1});
-          if (parameters.contact.friction_coefficient > 0)
+          if (parameters.contact.frictional())
             fields.push_back(
               {"sliding", format_number(row.value("slipping_nodes")), 7, 2});
           return fields;

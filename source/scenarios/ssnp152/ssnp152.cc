@@ -353,7 +353,7 @@ namespace RingContact
       // The slip of a point is measured from its partner in the last
       // converged state; on a rotated copy of the master that old state
       // would have to be turned too, which is not done.
-      require(parameters.contact.friction_coefficient == 0 ||
+      require(!parameters.contact.frictional() ||
                 sector_elements == 0,
               "Contact",
               "Friction coefficient",
