@@ -1,7 +1,8 @@
 // @sect3{Registered families}
 //
 // The families of choices a parameter file makes by name (the material
-// laws; the scenarios have their own table, scenarios/scenario.h) register
+// laws, the contact integration schemes, the refinement estimators; the
+// scenarios have their own table, scenarios/scenario.h) register
 // themselves as the scenarios do: each member's .cc file holds one
 // Registry<Entry>::Add, a static object whose constructor adds the member
 // to its family's table as the library loads. The entry that chooses among
@@ -21,6 +22,7 @@
 #define ring_contact_base_registry_h
 
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -42,13 +44,14 @@ namespace RingContact
                                         entries.end(),
                                         entry,
                                         [](const Entry &a, const Entry &b) {
-                                          return a.name < b.name;
+                                          return before(a.name, b.name);
                                         }),
                        std::move(entry));
       }
     };
 
-    /// Every member, sorted by name (kept so as each registers: the order
+    /// Every member, sorted by name in the order of a dictionary (case
+    /// aside: "Gauss, nodal, Simpson"), kept so as each registers: the order
     /// of the object files, in which they do, is the linker's).
     static const std::vector<Entry> &
     members()
@@ -103,18 +106,28 @@ namespace RingContact
         {
           text += (text.empty() ? "" : " ") + entry.name + ": " +
                   entry.documentation;
-          if (!entry.old_names.empty())
-            {
-              text += " (also read as";
-              for (const std::string &old_name : entry.old_names)
-                text += " '" + old_name + "'";
-              text += ")";
-            }
+          // "Also read as 'a' or 'b'.", a sentence of its own.
+          for (unsigned int k = 0; k < entry.old_names.size(); ++k)
+            text += (k == 0 ? " Also read as '" : " or '") +
+                    entry.old_names[k] +
+                    (k + 1 == entry.old_names.size() ? "'." : "'");
         }
       return text;
     }
 
   private:
+    // Whether name a comes before name b in a dictionary: letters compared
+    // without their case, and a name before its longer versions.
+    static bool
+    before(const std::string &a, const std::string &b)
+    {
+      return std::lexicographical_compare(
+        a.begin(), a.end(), b.begin(), b.end(), [](const char x, const char y) {
+          return std::tolower(static_cast<unsigned char>(x)) <
+                 std::tolower(static_cast<unsigned char>(y));
+        });
+    }
+
     // A function's static, so that the table exists before the first
     // registration whatever the order of the files.
     static std::vector<Entry> &

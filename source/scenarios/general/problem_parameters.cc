@@ -27,6 +27,36 @@ namespace RingContact
 {
   using namespace ParameterChecks;
 
+  namespace
+  {
+    // A body's law under the entry's old name (Body n/Kinematics, until
+    // version 0.11): read as its Material law, with a note, unless Material
+    // law says otherwise.
+    void
+    read_old_law_names(std::vector<BodyParameters> &bodies,
+                       std::vector<std::string>    &notes)
+    {
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].old_kinematics.empty())
+          {
+            const std::string name = "Body " + std::to_string(b + 1);
+            const std::string old_law =
+              MaterialLaws::get(bodies[b].old_kinematics).name;
+            require(bodies[b].law.empty() ||
+                      MaterialLaws::get(bodies[b].law).name == old_law,
+                    name,
+                    "Kinematics",
+                    "is the old name of Material law, which the file sets "
+                    "to '" +
+                      bodies[b].law + "'; give Material law alone");
+            bodies[b].law = old_law;
+            notes.push_back("Note: " + name + "/Kinematics is the old name of " +
+                            name + "/Material law; read as Material law = " +
+                            old_law + ".");
+          }
+    }
+  } // namespace
+
   // @sect4{The whole description}
   //
   // The common entries a general problem reads of subsection Load program
@@ -179,26 +209,7 @@ namespace RingContact
       check.finish(constants);
 
     refuse_unread_slots(parameters);
-    // A body's law under the entry's old name: read as Material law, with
-    // a note, unless Material law says otherwise.
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (!bodies[b].old_kinematics.empty())
-        {
-          const std::string name = "Body " + std::to_string(b + 1);
-          const std::string old_law =
-            MaterialLaws::get(bodies[b].old_kinematics).name;
-          require(bodies[b].law.empty() ||
-                    MaterialLaws::get(bodies[b].law).name == old_law,
-                  name,
-                  "Kinematics",
-                  "is the old name of Material law, which the file sets to '" +
-                    bodies[b].law + "'; give Material law alone");
-          bodies[b].law = old_law;
-          parameters.notes.push_back("Note: " + name +
-                                     "/Kinematics is the old name of " + name +
-                                     "/Material law; read as Material law = " +
-                                     old_law + ".");
-        }
+    read_old_law_names(bodies, parameters.notes);
     // The probe places the rings' node A (history.csv's pressure_A): a
     // general problem has no node A, and its history no such column. A
     // quantity at a point is a check's, reported at every step.
