@@ -245,7 +245,7 @@ namespace
 
   private:
     Vector<double> u, u_start;
-    LoadState      load{0, 0, 0};
+    LoadState      load{};
     double         converged_time = 0;
     bool           tangent        = false;
     double         r = 0, dr = 0;
