@@ -54,7 +54,7 @@ main()
                                log);
     ContactProblemInspector inspector(nan_problem);
     inspector.setup();
-    inspector.set_load_state({1e5, 0});
+    inspector.set_load_state({0, {{"pressure", 1e5}, {"rotation", 0}}});
     const auto &dof_handler = inspector.get_dof_handler();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->at_boundary())

@@ -245,7 +245,7 @@ namespace
 
   private:
     Vector<double> u, u_start;
-    LoadState      load{0, 0, 0};
+    LoadState      load{};
     double         converged_time = 0;
     bool           tangent        = false;
     double         r = 0, dr = 0;
@@ -365,7 +365,7 @@ main()
     toy.closed_after_update = {1, 4, 6, 7, 7};
     toy.add_pair(true, 0);
     NewtonSolver newton(toy, newton_parameters(false), std::cerr);
-    toy.apply_boundary_motion({0, 0, 1});
+    toy.apply_boundary_motion({1, {}});
     unsigned int iterations = 0;
     double       residual   = 0;
     check(newton.solve(iterations, residual), "the held step converges");

@@ -39,9 +39,8 @@ namespace RingContact
                                             hanging_node_constraints);
     hanging_node_constraints.close();
     imposed_dofs.clear();
-    const ImposedMotion motion = scenario->boundary_motion(dof_handler,
-                                                           mapping_collection,
-                                                           LoadState{0, 0, 0});
+    const ImposedMotion motion =
+      scenario->boundary_motion(dof_handler, mapping_collection, LoadState{});
     for (const auto &[dof, value] : motion.values)
       imposed_dofs.push_back(dof);
     normal_target = motion.normal;
@@ -123,9 +122,8 @@ namespace RingContact
       {
         fixed_dofs->assign(dof_handler.n_dofs(), false);
         for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-          (*fixed_dofs)[i] =
-            target.is_constrained(i) &&
-            !hanging_node_constraints.is_constrained(i);
+          (*fixed_dofs)[i] = target.is_constrained(i) &&
+                             !hanging_node_constraints.is_constrained(i);
       }
 
     // The multiplier lives on the slave surface only. The layer's nodes off

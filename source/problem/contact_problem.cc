@@ -46,7 +46,7 @@ namespace RingContact
       , triangulation(Triangulation<dim>::limit_level_difference_at_vertices)
       , dof_handler(triangulation)
       , displacement(0)
-      , current_load{0, 0}
+      , current_load{}
       // The summary is printed by run() when it ends, not by the
       // destructor: a run that ends by an error prints the error only.
       , timer(log, TimerOutput::never, TimerOutput::wall_times)

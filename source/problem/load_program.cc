@@ -12,9 +12,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace RingContact
 {
+  double
+  LoadState::operator()(const std::string &name) const
+  {
+    if (parameters.empty())
+      return 0;
+    const auto found = parameters.find(name);
+    if (found == parameters.end())
+      throw std::logic_error("the load program has no parameter '" + name +
+                             "'");
+    return found->second;
+  }
+
   LoadProgram::LoadProgram(const LoadParameters &parameters)
       : parameters(parameters)
   {}
@@ -65,13 +78,13 @@ namespace RingContact
         const double dt = parameters.time_step;
         const double p =
           parameters.reference_pressure * std::pow(10.0, std::max(t, dt) - 1.1);
-        return {t < dt ? p * t / dt : p, 0.0, t};
+        return {t, {{"pressure", t < dt ? p * t / dt : p}, {"rotation", 0.0}}};
       }
-    // Steps: the expressions of the problem take t itself. Pressure and
-    // rotation stay zero, which tells the predictor to extrapolate in t
+    // Steps: the expressions of the problem take t itself; no parameter
+    // moves, which tells the predictor to extrapolate in t
     // (extrapolation_factor()).
     if (parameters.program == LoadProgramType::steps)
-      return {0.0, 0.0, t};
+      return {t, {}};
     // Rotation: the full pressure from the first step on (reached linearly
     // within the first step if that step has to be cut), s = s_end t. The
     // document's program: the first step both loads the rings and turns
@@ -79,7 +92,8 @@ namespace RingContact
     // exactly one element when t = 1.
     const double t1 = time(1);
     const double p  = parameters.rotation_pressure * std::min(1.0, t / t1);
-    return {p, parameters.rotation_elements * t, t};
+    return {t,
+            {{"pressure", p}, {"rotation", parameters.rotation_elements * t}}};
   }
 
   LoadState

@@ -51,12 +51,12 @@ namespace RingContact
   // @sect4{The predictor}
   //
   // The predictor of a load step: extrapolate the last increment when it
-  // was of the same kind (pressure only, or rotation only), in the
-  // parameter the state is linear in: the pressure of the ramp, the
-  // rotation, or else the pseudo-time, in which a general problem's
-  // boundary data are written (its load states carry no pressure or
-  // rotation: it was never extrapolated). Returns the factor of the last
-  // increment (0: no extrapolation).
+  // and the next move one and the same of the load program's parameters
+  // (LoadState: the rings' pressure only, or their rotation only), in that
+  // parameter; when none moves, in the pseudo-time, in which a general
+  // problem's boundary data are written (its program has no parameters).
+  // The stepper knows no parameter by name: it asks which moved. Returns
+  // the factor of the last increment (0: no extrapolation).
   //
   // The increments must be of the same kind because the factor is a ratio
   // of one parameter's increments: the rotation program presses the rings
@@ -71,17 +71,22 @@ namespace RingContact
     const LoadState next = load_program.state(t_next);
     const LoadState now  = problem.load_state();
     const LoadState prev = load_program.state(previous_time);
-    const double    dp0  = now.pressure - prev.pressure,
-                 dp1     = next.pressure - now.pressure;
-    const double ds0     = now.rotation_elements - prev.rotation_elements,
-                 ds1     = next.rotation_elements - now.rotation_elements;
-    if (ds0 == 0 && ds1 == 0 && dp0 != 0)
-      return dp1 / dp0;
-    if (dp0 == 0 && dp1 == 0 && ds0 != 0)
-      return ds1 / ds0;
-    if (dp0 == 0 && dp1 == 0 && ds0 == 0 && ds1 == 0)
+    // The parameters that move over the last increment or the next, and
+    // the ratio of the next increment to the last of the one that does.
+    unsigned int moved  = 0;
+    double       factor = 0;
+    for (const auto &[name, value] : now.parameters)
+      {
+        const double last = value - prev(name), coming = next(name) - value;
+        if (last != 0 || coming != 0)
+          {
+            ++moved;
+            factor = last != 0 ? coming / last : 0;
+          }
+      }
+    if (moved == 0)
       return (t_next - current_time) / (current_time - previous_time);
-    return 0;
+    return moved == 1 ? factor : 0;
   }
 
   void

@@ -79,8 +79,8 @@ namespace RingContact
       // The error at A keeps its sign, so that a history shows on which side of
       // the reference the pressure lies; the checks take its magnitude.
       into.insert(into.end(),
-                  {{"load_factor", state.load_state().pressure},
-                   {"rotation", state.load_state().rotation_elements},
+                  {{"load_factor", state.load_state()("pressure")},
+                   {"rotation", state.load_state()("rotation")},
                    {"pressure_A", pressure_A},
                    {"analytic", reference},
                    {"relative_error", (pressure_A - reference) / reference},

@@ -9,16 +9,29 @@
 
 #include <ring_contact/input/parameters.h>
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace RingContact
 {
-  /// What is imposed at one instant.
+  /// What is imposed at one instant: the pseudo-time and the load
+  /// program's parameters at it, by their names. The rings' ramp and
+  /// rotation programs name the pressure p [Pa] "pressure" and the rotation
+  /// s [elements turned] "rotation"; the steps program of a general problem
+  /// has none (its boundary data are expressions of t). The scenario reads
+  /// the parameters its boundary data are written in; the predictor asks
+  /// which of them moved (LoadStepper), knowing none by name.
   struct LoadState
   {
-    double pressure;          ///< equivalent external pressure p [Pa]
-    double rotation_elements; ///< rotation parameter s (elements turned)
-    double time = 0;          ///< the pseudo-time t
+    double                        time = 0; ///< the pseudo-time t
+    std::map<std::string, double> parameters;
+
+    /// The parameter of a name; 0 in a state without parameters (the
+    /// unloaded start the constraints are set up in). A name the program
+    /// does not have in a state that has some is a program error, refused.
+    double
+    operator()(const std::string &name) const;
   };
 
   class LoadProgram

@@ -299,11 +299,11 @@ namespace RingContact
                     // At every pseudo-time of the program: a load that turns
                     // into a held direction only later (a traction written
                     // with sin t) is found too. A general problem's load
-                    // states carry no pressure or rotation, only t.
+                    // states carry no parameters, only t.
                     for (const BoundaryNode &node : nodes)
                       for (const double t : times)
                         {
-                          const LoadState      state{0, 0, t};
+                          const LoadState      state{t, {}};
                           const Tensor<1, dim> value =
                             load.value(node.X, state);
                           // A pressure pushes along the inward normal, -p N,

@@ -351,10 +351,10 @@ namespace RingContact
         // small-strain shortening: in finite strain the state stays uniform but
         // its pressure is not exactly p.
         const double shortening =
-          load.pressure * (0.5 / modulus(blocks.youngs_modulus_lower,
-                                         blocks.poissons_ratio_lower) +
-                           0.5 / modulus(blocks.youngs_modulus_upper,
-                                         blocks.poissons_ratio_upper));
+          load("pressure") * (0.5 / modulus(blocks.youngs_modulus_lower,
+                                            blocks.poissons_ratio_lower) +
+                              0.5 / modulus(blocks.youngs_modulus_upper,
+                                            blocks.poissons_ratio_upper));
         // The same unknowns are held at every load state, since they define the
         // constraints; only the shortening changes with p.
         std::map<types::global_dof_index, double> values;
@@ -400,7 +400,7 @@ namespace RingContact
       double
       reference_pressure(const LoadState &load) const override
       {
-        return load.pressure;
+        return load("pressure");
       }
 
       const Parameters &

@@ -353,8 +353,7 @@ namespace RingContact
       // The slip of a point is measured from its partner in the last
       // converged state; on a rotated copy of the master that old state
       // would have to be turned too, which is not done.
-      require(!parameters.contact.frictional() ||
-                sector_elements == 0,
+      require(!parameters.contact.frictional() || sector_elements == 0,
               "Contact",
               "Friction coefficient",
               "> 0 needs the whole rings: friction is not implemented with "
@@ -568,7 +567,7 @@ namespace RingContact
             }
           // The rotation is counted in elements of the refined mesh, so that
           // s = 1 always brings the meshes face to face again.
-          const double angle = 2 * numbers::PI * load.rotation_elements /
+          const double angle = 2 * numbers::PI * load("rotation") /
                                (rings.elements_around *
                                 (1u << parameters.mesh.global_refinements));
           // The closed form's radial displacements of r = R1 and r = R3 at
@@ -576,10 +575,10 @@ namespace RingContact
           // radius and turned rigidly through the angle.
           // Functions of every component of the system, the multiplier's
           // too; the mask of the interpolation picks the displacement.
-          const BoundaryMotion outer(analytic.f_R1(load.pressure),
+          const BoundaryMotion outer(analytic.f_R1(load("pressure")),
                                      0.0,
                                      Components::n_components);
-          const BoundaryMotion inner(analytic.f_R3(load.pressure),
+          const BoundaryMotion inner(analytic.f_R3(load("pressure")),
                                      angle,
                                      Components::n_components);
           const std::map<types::boundary_id, const Function<dim> *> motion = {
@@ -606,7 +605,7 @@ namespace RingContact
           return {BoundaryLoad{Ids::outer_boundary,
                                BoundaryLoad::Type::pressure,
                                [](const Point<dim> &, const LoadState &load) {
-                                 return Tensor<1, dim>({load.pressure, 0.0});
+                                 return Tensor<1, dim>({load("pressure"), 0.0});
                                }}};
         }
 
@@ -645,7 +644,7 @@ namespace RingContact
         double
         reference_pressure(const LoadState &load) const override
         {
-          return analytic.contact_pressure(load.pressure);
+          return analytic.contact_pressure(load("pressure"));
         }
 
         const Parameters &
