@@ -536,6 +536,11 @@ namespace RingContact
         signal(SIGINT, SIG_IGN);
         signal(SIGTERM, SIG_IGN);
         signal(SIGPIPE, SIG_DFL);
+        // A fault of gmsh's ends the child by gmsh's own signal, which the
+        // parent names. A sanitizer build's handlers would turn it into
+        // an abort (SIGABRT) and the message would name the wrong signal.
+        for (const int fault : {SIGSEGV, SIGBUS, SIGFPE, SIGILL})
+          signal(fault, SIG_DFL);
 #ifndef __SANITIZE_ADDRESS__
         // (Not under AddressSanitizer: its shadow memory already holds
         // terabytes of address space.)
