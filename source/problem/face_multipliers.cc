@@ -6,11 +6,14 @@
 // interpolating a parent face's polynomial on its children (refinement.cc),
 // and the contact estimator measures the jumps of the pressure's slope
 // between neighbouring faces (estimators/kelly_and_contact.cc).
+#include <deal.II/base/polynomial.h>
 #include <deal.II/dofs/dof_accessor.h>
 #include <deal.II/fe/fe.h>
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/problem/face_multipliers.h>
+
+#include <array>
 
 namespace RingContact
 {
@@ -35,48 +38,57 @@ namespace RingContact
       return points;
     }
 
-    // The value at t of the Lagrange polynomial through a face's values of
-    // `component` (at the support points `points` of its element).
+    namespace
+    {
+      // The value and the slope at t of the Lagrange polynomial through a
+      // face's values of `component` (at the support points `points` of its
+      // element): deal.II's Lagrange basis through those points, each basis
+      // function weighted by its value.
+      std::array<double, 2>
+      value_and_slope(const FaceValues             &values,
+                      const std::vector<FacePoint> &points,
+                      const unsigned int            component,
+                      const double                  t)
+      {
+        std::vector<Point<1>>     support;
+        std::vector<unsigned int> indices;
+        for (const auto &p : points)
+          if (p.component == component)
+            {
+              support.emplace_back(p.t);
+              indices.push_back(p.index);
+            }
+        const std::vector<Polynomials::Polynomial<double>> basis =
+          Polynomials::generate_complete_Lagrange_basis(support);
+        std::array<double, 2> sum = {{0, 0}};
+        std::vector<double>   basis_values(2);
+        for (unsigned int k = 0; k < basis.size(); ++k)
+          {
+            basis[k].value(t, basis_values);
+            const double value = values.at({component, indices[k]});
+            sum[0] += basis_values[0] * value;
+            sum[1] += basis_values[1] * value;
+          }
+        return sum;
+      }
+    } // namespace
+
     double
     interpolate(const FaceValues             &values,
                 const std::vector<FacePoint> &points,
                 const unsigned int            component,
                 const double                  t)
     {
-      double sum = 0;
-      for (const auto &p : points)
-        if (p.component == component)
-          {
-            double basis = 1;
-            for (const auto &q : points)
-              if (q.component == component && q.index != p.index)
-                basis *= (t - q.t) / (p.t - q.t);
-            sum += basis * values.at({component, p.index});
-          }
-      return sum;
+      return value_and_slope(values, points, component, t)[0];
     }
 
-    // d/dt of that polynomial.
     double
     derivative(const FaceValues             &values,
                const std::vector<FacePoint> &points,
                const unsigned int            component,
                const double                  t)
     {
-      double sum = 0;
-      for (const auto &p : points)
-        if (p.component == component)
-          for (const auto &r : points)
-            if (r.component == component && r.index != p.index)
-              {
-                double term = 1 / (p.t - r.t);
-                for (const auto &q : points)
-                  if (q.component == component && q.index != p.index &&
-                      q.index != r.index)
-                    term *= (t - q.t) / (p.t - q.t);
-                sum += term * values.at({component, p.index});
-              }
-      return sum;
+      return value_and_slope(values, points, component, t)[1];
     }
 
     // The multipliers of `u` on face f of a slave layer's cell.

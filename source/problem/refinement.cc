@@ -352,7 +352,7 @@ namespace RingContact
       {record_multipliers(dof_handler, slave_ids, solution),
        record_multipliers(dof_handler, slave_ids, previous_solution)}};
 
-    SolutionTransfer<2, Vector<double>> transfer(displacement_dofs);
+    SolutionTransfer<dim, Vector<double>> transfer(displacement_dofs);
     triangulation.prepare_coarsening_and_refinement();
     // The rest of the cycle's line in the log (refine_and_solve_again()
     // starts it): the flags as deal.II's smoothing left them.
