@@ -154,7 +154,7 @@ main()
     ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
     ContactProblemInspector inspector(problem);
     inspector.setup();
-    inspector.set_load_state(LoadProgram(parameters.load).state(t));
+    inspector.set_load_state(LoadProgram::steps(parameters.load).state(t));
     set_uniform_state(inspector, t, mu);
     inspector.assemble_newton_system();
     const ResidualMeasure measure = inspector.residual_measure();

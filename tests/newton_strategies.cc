@@ -271,11 +271,11 @@ namespace
   steps(const unsigned int n)
   {
     LoadParameters parameters{};
-    parameters.program = LoadProgramType::steps;
+    parameters.program = "steps";
     for (unsigned int k = 1; k <= n; ++k)
       parameters.time_points.push_back(k);
     parameters.number_of_steps = n;
-    return LoadProgram(parameters);
+    return LoadProgram::steps(parameters);
   }
 } // namespace
 

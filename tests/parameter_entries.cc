@@ -116,7 +116,7 @@ main()
     check(rings(p).youngs_modulus_outer == 1e9 &&
             printed_default("Materials", "Young's modulus outer ring") == "1e9",
           "number default");
-    check(p.load.ramp_steps == 21 &&
+    check(rings(p).reference.ramp.steps == 21 &&
             printed_default("Load program", "Ramp steps") == "21",
           "integer default");
     check(p.newton.extrapolate &&
@@ -130,9 +130,11 @@ main()
     check(p.contact.schemes.empty() &&
             printed_default("Contact", "Integration schemes") == "automatic",
           "list default");
-    check(p.contact.probe_point.distance(Point<2>(0.6, 0)) == 0,
+    check(rings(p).reference.probe_point.distance(Point<2>(0.6, 0)) == 0,
           "point default");
-    check(p.checks.every_step && p.checks.steps.empty(), "steps default");
+    check(rings(p).reference.checks.every_step &&
+            rings(p).reference.checks.steps.empty(),
+          "steps default");
     check(general(p).bodies.size() == ProblemParameters::max_bodies &&
             general(p).checks.size() == ProblemParameters::max_checks,
           "every slot of a general problem is bound before the file is read");
@@ -174,18 +176,21 @@ main()
     check(p.materials.plane == PlaneAssumption::plane_strain, "choice");
     check(p.materials.law == "neo-Hookean", "material law");
     check(p.finite_elements.reduced_integration, "flag");
-    check(p.load.ramp_steps == 5, "integer set twice: the last value");
+    check(rings(p).reference.ramp.steps == 5,
+          "integer set twice: the last value");
     check(p.contact.schemes.size() == 2 &&
             p.contact.schemes[1].name() == "Gauss 3",
           "list");
-    check(p.contact.probe_point.distance(Point<2>(0.6, 0.01)) == 0, "point");
-    check(!p.checks.every_step && p.checks.steps.size() == 2 &&
-            p.checks.steps[1] == 3,
+    const ReferencePressureEntries &reference = rings(p).reference;
+    check(reference.probe_point.distance(Point<2>(0.6, 0.01)) == 0, "point");
+    check(!reference.checks.every_step && reference.checks.steps.size() == 2 &&
+            reference.checks.steps[1] == 3,
           "steps");
     check(p.newton.linear_solver == LinearSolverType::mumps, "solver");
     check(p.output.directory == "elsewhere", "text");
     // Untouched entries keep their defaults.
-    check(rings(p).youngs_modulus_inner == 1e9 && p.load.time_step == 0.1,
+    check(rings(p).youngs_modulus_inner == 1e9 &&
+            rings(p).reference.ramp.time_step == 0.1,
           "defaults of the entries not set");
     deallog_file << "values: every kind of entry reaches its member"
                  << std::endl;

@@ -44,14 +44,14 @@ namespace RingContact
     set_master_window(Sector            &sector,
                       const unsigned int sector_elements,
                       const unsigned int elements_around,
-                      const double       rotation_elements)
+                      const double       slave_turn)
     {
       const unsigned int k = sector_elements, n = elements_around;
       AssertThrow(k >= 1 && k <= n,
                   ExcMessage("cyclic symmetry: the sector must have between "
                              "one element and all the elements around"));
-      sector.copies = 1 + static_cast<unsigned int>(
-                            std::ceil(std::abs(rotation_elements) / k));
+      sector.copies =
+        1 + static_cast<unsigned int>(std::ceil(std::abs(slave_turn) / k));
       // Whole elements before and after the sector.
       unsigned int before = sector.copies * k, after = sector.copies * k;
       if (k + before + after >= n)
@@ -69,9 +69,9 @@ namespace RingContact
             std::max((n - k + 1) / 2,
                      std::min(n - k,
                               static_cast<unsigned int>(
-                                std::ceil(std::abs(rotation_elements))) +
+                                std::ceil(std::abs(slave_turn))) +
                                 1));
-          after  = rotation_elements >= 0 ? lead : n - k - lead;
+          after  = slave_turn >= 0 ? lead : n - k - lead;
           before = n - k - after;
         }
       const double element_angle = 2 * numbers::PI / n;
@@ -86,9 +86,9 @@ namespace RingContact
     //
     // Each node on the end side (at angle Phi) is the image Q X_s of a node on
     // the start side. Both are found by the support points of the cells' dofs,
-    // mapped to the real cell, per ring: on r = R2 both rings have a node at
+    // mapped to the real cell, per body: on r = R2 both rings have a node at
     // the same place (the interface nodes are duplicated: the rings are two
-    // bodies), so a node is known by its ring and its position.
+    // bodies), so a node is known by its body and its position.
     std::vector<NodePair>
     find_node_pairs(const DoFHandler<dim>            &dof_handler,
                     const hp::MappingCollection<dim> &mapping,
@@ -96,11 +96,11 @@ namespace RingContact
                     const types::boundary_id          start_side,
                     const types::boundary_id          end_side)
     {
-      // The nodes of each side: position, ring, and dof per component.
+      // The nodes of each side: position, body, and dof per component.
       struct Node
       {
         Point<dim>                                                    position;
-        types::material_id                                            ring;
+        types::material_id                                            body;
         std::array<types::global_dof_index, Components::n_components> dofs;
       };
       std::array<std::vector<Node>, 2> side_nodes; // start, end
@@ -142,7 +142,7 @@ namespace RingContact
                 // nodes.
                 Node *node = nullptr;
                 for (auto &n : nodes)
-                  if (n.ring == cell->material_id() &&
+                  if (n.body == cell->material_id() &&
                       n.position.distance(x) < tolerance)
                     node = &n;
                 if (node == nullptr)
@@ -165,12 +165,12 @@ namespace RingContact
       const Tensor<2, dim> R =
         Physics::Transformations::Rotations::rotation_matrix_2d(sector_angle);
       std::vector<NodePair> pairs;
-      // Within the same ring, by turning each start node through Phi.
+      // Within the same body, by turning each start node through Phi.
       for (const Node &end : side_nodes[1])
         {
           const Node *image = nullptr;
           for (const Node &start : side_nodes[0])
-            if (start.ring == end.ring && end.position.distance(Point<dim>(
+            if (start.body == end.body && end.position.distance(Point<dim>(
                                             R * start.position)) < tolerance)
               image = &start;
           // Sides that do not match under the rotation cannot be tied: refused

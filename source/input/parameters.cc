@@ -29,6 +29,7 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -65,17 +66,7 @@ namespace RingContact
   std::vector<std::string>
   Parameters::restricted_entries()
   {
-    return {"Load program/Number of steps",
-            "Load program/Time points",
-            "Load program/Reference pressure",
-            "Load program/Ramp steps",
-            "Load program/Time step",
-            "Load program/Rotation pressure",
-            "Load program/Rotation steps",
-            "Load program/Rotation in elements",
-            "Checks/Quantity",
-            "Checks/Steps",
-            "Checks/Tolerance"};
+    return {"Load program/Number of steps", "Load program/Time points"};
   }
 
   namespace
@@ -122,15 +113,35 @@ namespace RingContact
             documentation,
             Patterns::Selection(names));
     }
+    // What the common entries offer that the scenarios define: the load
+    // programs (the default scenario's first is the default) and the
+    // default contact surfaces, the default scenario's.
+    std::vector<std::pair<std::string, std::string>> programs;
+    std::pair<unsigned int, unsigned int>            surfaces;
+    const auto add_programs = [&](const ScenarioParameters &entries) {
+      for (const auto &program : entries.load_programs())
+        if (std::none_of(programs.begin(), programs.end(), [&](const auto &p) {
+              return p.first == program.first;
+            }))
+          programs.push_back(program);
+    };
+    for (const auto &registered : registered_scenarios())
+      if (registered.is_default)
+        {
+          surfaces =
+            scenario_parameters.at(registered.name)->default_contact_surfaces();
+          add_programs(*scenario_parameters.at(registered.name));
+        }
+    for (const auto &registered : registered_scenarios())
+      add_programs(*scenario_parameters.at(registered.name));
     mesh.add_parameters(prm);
     refinement.add_parameters(prm);
     materials.add_parameters(prm);
     finite_elements.add_parameters(prm);
-    contact.add_parameters(prm);
-    load.add_parameters(prm);
+    contact.add_parameters(prm, surfaces);
+    load.add_parameters(prm, programs);
     newton.add_parameters(prm);
     output.add_parameters(prm);
-    checks.add_parameters(prm);
     // Who reads the entries that only some scenarios read: the common
     // ones some scenarios say they read, and every scenario's own.
     readers.clear();
@@ -223,9 +234,13 @@ namespace RingContact
                 if (registered.name == scenario)
                   current = &registered;
               }
+            const std::string why =
+              scenario_parameters.at(scenario)->why_not_read(key);
             require(false,
                     key.substr(0, slash),
                     key.substr(slash + 1),
+                    !why.empty() ?
+                      why :
                     only != nullptr ?
                       "is read only when Problem/Scenario = " + only->name :
                       "is read for " + describe_readers(reader->second) +
@@ -233,11 +248,11 @@ namespace RingContact
                         current->foreign_entry_hint);
           }
         // The common subsections' checks first, the scenario's last: they
-        // compare its entries with the common ones, and may set common ones
-        // that the file left alone (the rings put the probe at their node A).
+        // compare its entries with the common ones.
         mesh.finish(mesh_folder);
         refinement.finish();
-        materials.finish(origins.count(entry_key("Materials", "Material law")) > 0,
+        materials.finish(origins.count(entry_key("Materials", "Material law")) >
+                           0,
                          notes);
         require(refinement.adaptive_cycles == 0 ||
                   refinement.maximum_level > mesh.global_refinements,

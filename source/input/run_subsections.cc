@@ -1,8 +1,10 @@
 // @sect3{Run-time parameters: the subsections of the run}
 //
 // The common subsections that say how a problem is solved and what a run
-// writes: the load program, the Newton solver, the output and the checks
-// (those of the model, Mesh to Contact, are in subsections.cc). How an
+// writes: the load program, the Newton solver and the output (those of the
+// model, Mesh to Contact, are in subsections.cc; the checks against a
+// reference pressure are those scenarios' own,
+// scenarios/reference_pressure_entries.cc). How an
 // entry is declared, checked and documented is told at the top of
 // parameters.cc.
 
@@ -31,12 +33,13 @@ namespace RingContact
 
   // @sect4{Subsection Load program}
   //
-  // The three programs of problem/load_program.h: the ramp and the rotation of
-  // the rings (the patch test takes the ramp), and the given pseudo-times of a
-  // general problem, whose boundary data are expressions of t. Each program's
-  // entries are read only by the scenarios that claim them
-  // (restricted_entries() below): a general problem's file that sets the ramp's
-  // steps is refused, not run with its own steps as if the line were not there.
+  // Which program loads the problem, one of the scenarios' (the rings' ramp and
+  // rotation, which the scenarios declare with their entries), and the steps
+  // program's entries: the given pseudo-times of a general problem, whose
+  // boundary data are expressions of t. Each program's entries are read only by
+  // the scenarios that run it (restricted_entries()): a general problem's file
+  // that sets the ramp's steps is refused, not run with its own steps as if the
+  // line were not there.
 
   namespace
   {
@@ -120,26 +123,23 @@ namespace RingContact
   } // namespace
 
   void
-  LoadParameters::add_parameters(ParameterHandler &prm)
+  LoadParameters::add_parameters(
+    ParameterHandler                                       &prm,
+    const std::vector<std::pair<std::string, std::string>> &programs)
   {
-    Subsection s(prm, "Load program");
-    // The defaults are the rings' ramp (A, B, H): p = p0 10^(t - 1.1) at the
-    // times t = k dt, dt = 0.1, k = 1..21, that is 1e5 Pa at step 1,
-    // p0 = 1e6 Pa at step 11 and 1e7 Pa at step 21. The rings are elastic, so
-    // each step is an independent problem at its own load: the ramp maps the
-    // error over two decades of load.
+    Subsection  s(prm, "Load program");
+    std::string names, documentation;
+    for (const auto &[name, sentence] : programs)
+      {
+        names += (names.empty() ? "" : "|") + name;
+        documentation +=
+          (documentation.empty() ? "" : "; ") + name + ": " + sentence;
+      }
     s.add("Program",
           program,
-          "ramp",
-          {{"ramp", LoadProgramType::ramp},
-           {"rotation", LoadProgramType::rotation},
-           {"steps", LoadProgramType::steps}},
-          "ramp: the pressure p(t) = p0 10^(t - 1.1) at t = k dt "
-          "(the rings' A, B, H, the patch test); rotation: the pressure "
-          "fixed, a boundary turned through s elements (the rings' C-G); "
-          "steps: the pseudo-times of 'Time points', or t = k / n for "
-          "k = 1..n with n = 'Number of steps' (a general problem, whose "
-          "expressions take t).");
+          programs.front().first,
+          documentation + ".",
+          Patterns::Selection(names));
     s.add("Number of steps",
           number_of_steps,
           "1",
@@ -158,66 +158,16 @@ namespace RingContact
           [this](const std::string &text) {
             time_points = parse_time_points(text);
           });
-    s.add("Reference pressure",
-          reference_pressure,
-          "1e6",
-          "p0 [Pa] of the ramp (p = p0 at t = 1.1).",
-          positive());
-    s.add("Ramp steps",
-          ramp_steps,
-          "21",
-          1,
-          max_steps,
-          "Number of steps of the ramp.");
-    s.add("Time step",
-          time_step,
-          "0.1",
-          "dt of the ramp [pseudo-time].",
-          positive());
-    // The rotation (C-G): p = 1e7 Pa held while s goes from 0 to 1 in 100 equal
-    // steps, the document's N_t (the newest published inputs take 10). At s = 1
-    // the inner ring has turned through one element and the meshes face each
-    // other again.
-    s.add("Rotation pressure",
-          rotation_pressure,
-          "1e7",
-          "Equivalent pressure p [Pa] held during the rotation.",
-          positive());
-    s.add("Rotation steps",
-          rotation_steps,
-          "100",
-          1,
-          max_steps,
-          "Nt, number of equal rotation steps.");
-    s.add("Rotation in elements",
-          rotation_elements,
-          "1",
-          "Final rotation parameter s: the angle is "
-          "2 pi s / (elements around).");
   }
 
+  // No Time points: 'Number of steps' equal steps from 0 to 1. Done here, not
+  // in an action, because the two entries may come in either order.
   void
   LoadParameters::finish()
   {
-    // No Time points: 'Number of steps' equal steps from 0 to 1. Done here, not
-    // in an action, because the two entries may come in either order.
     if (time_points.empty())
       for (unsigned int k = 1; k <= number_of_steps; ++k)
         time_points.push_back(static_cast<double>(k) / number_of_steps);
-    // The last pressure of the ramp, p0 10^(n dt - 1.1), must be a number.
-    // Named: the pressure itself when it is beyond reason on its own
-    // (over 1e99 Pa), else the time step that ramps it too far. The test is
-    // written in logarithms, so that it cannot overflow itself.
-    require(program != LoadProgramType::ramp ||
-              std::log10(reference_pressure) + ramp_steps * time_step - 1.1 <
-                100,
-            "Load program",
-            reference_pressure >= 1e99 ? "Reference pressure" : "Time step",
-            "makes the last pressure of the ramp, p0 10^(n dt - 1.1), "
-            "exceed 1e100 Pa (p0 = " +
-              to_text(reference_pressure) +
-              " Pa, n = " + std::to_string(ramp_steps) +
-              ", dt = " + to_text(time_step) + ")");
   }
 
   // @sect4{Subsection Newton}
@@ -369,48 +319,5 @@ namespace RingContact
   {
     if (directory.empty())
       directory = "results/" + prm_name;
-  }
-
-  // @sect4{Subsection Checks}
-  //
-  // The original's TEST_RESU, for the scenarios that know the pressure
-  // everywhere on the slave surface (the rings' closed form, the patch test's
-  // uniform p): one quantity, the steps it is checked at and the tolerance. A
-  // general problem has its own checks ('Check 1' to '12'), so these entries
-  // are restricted to the scenarios that read them.
-
-  void
-  CheckParameters::add_parameters(ParameterHandler &prm)
-  {
-    Subsection s(prm, "Checks");
-    // The pressure at A is the original's check. The spread is the patch
-    // test's: its exact pressure is uniform, so the spread is zero in any
-    // kinematics, where the value p itself is exact in small strain only.
-    s.add("Quantity",
-          quantity,
-          "pressure at A",
-          {{"pressure at A", CheckedQuantity::pressure_at_A},
-           {"L2 error of pressure", CheckedQuantity::l2_pressure_error},
-           {"pressure spread", CheckedQuantity::pressure_spread}},
-          "The checked value (the original's TEST_RESU): the "
-          "contact pressure at node A against the analytic "
-          "pressure, the relative L2 error of the pressure "
-          "over the slave surface (reference 0), or the spread "
-          "(largest - smallest nodal pressure) / analytic "
-          "pressure (reference 0).");
-    s.add("Steps",
-          "all",
-          Patterns::Anything(),
-          "'all', 'last', 'none', or a comma-separated list of "
-          "step numbers (1-based).",
-          [this](const std::string &text) {
-            steps_from_text(text, "Checks", "Steps", every_step, steps);
-          });
-    // 2 %, the document's tolerance for the ramps; the rotation files set 4 %.
-    s.add("Tolerance",
-          tolerance,
-          "0.02",
-          "Largest admitted relative error (0.02 = 2 %).",
-          not_negative());
   }
 } // namespace RingContact

@@ -476,15 +476,16 @@ namespace RingContact
   // '4') give only their two surfaces.
 
   void
-  ContactParameters::add_parameters(ParameterHandler &prm)
+  ContactParameters::add_parameters(
+    ParameterHandler                            &prm,
+    const std::pair<unsigned int, unsigned int> &surfaces)
   {
     Subsection s(prm, "Contact");
-    // The defaults are the original's tags: the inner ring's S2R2 (400) is the
-    // slave and the outer ring's S1R2 (300) the master, in all modelisations
-    // but E. Tags go up to 1e9 because gmsh's are ints.
+    // The defaults are the default scenario's surfaces (the original's tags,
+    // scenarios/ssnp152). Tags go up to 1e9 because gmsh's are ints.
     s.add("Slave boundary",
           slave_boundary_id,
-          "400",
+          std::to_string(surfaces.first),
           0,
           max_tag,
           "Boundary id (gmsh physical tag) of the slave surface, "
@@ -492,7 +493,7 @@ namespace RingContact
           "inner ring's, or 300, S1R2, the outer ring's).");
     s.add("Master boundary",
           master_boundary_id,
-          "300",
+          std::to_string(surfaces.second),
           0,
           max_tag,
           "Boundary id of the master surface (the normal is the "
@@ -546,23 +547,6 @@ namespace RingContact
           "Cauchy: force per current length of the slave "
           "surface (the multiplier itself); nominal: force per "
           "reference length.");
-    // (0.6, 0) is node A of the seed rings, and also lies on the patch test's
-    // interface. The rings replace it by (R2, 0) when the file does not set
-    // the entry, and check that the point is near the slave surface, since
-    // the nearest slave node is used whatever the distance. A general
-    // problem refuses it: it has no node A, its checks name their points.
-    s.add("Probe point",
-          "0.6, 0",
-          Patterns::List(Patterns::Double(), 2, 2),
-          "Reference position [m] of the probe, the slave node "
-          "whose pressure is reported (the nearest slave node is "
-          "used). Not set: node A at (R2, 0) for any interface radius. "
-          "The rings and the patch test only: a general problem reports "
-          "the quantities of its Check subsections.",
-          [this](const std::string &text) {
-            const auto xy = point_from_text(text, "Contact", "Probe point");
-            probe_point   = Point<dim>(xy[0], xy[1]);
-          });
   }
 
   // Checked once the file is read, since either entry may be set first. A

@@ -263,13 +263,14 @@ namespace RingContact
                                     HistoryRow          &row) const
   {
     const Parameters &parameters = run_parameters();
+    const Point<dim> &probe      = reference_entries().probe_point;
     ReferencePressure::report(state,
-                              parameters.contact.probe_point,
+                              probe,
                               reference_pressure(state.load_state()),
                               parameters.contact.reported_pressure,
                               row.leading);
     if (parameters.contact.frictional())
-      Friction::report(state, parameters.contact.probe_point, row.trailing);
+      Friction::report(state, probe, row.trailing);
   }
 
   std::vector<StepField>
@@ -294,7 +295,7 @@ namespace RingContact
     const std::string             &scheme,
     const std::vector<HistoryRow> &history) const
   {
-    return ReferencePressure::evaluate_checks(run_parameters().checks,
+    return ReferencePressure::evaluate_checks(reference_entries().checks,
                                               scheme,
                                               history,
                                               load_program().n_steps());

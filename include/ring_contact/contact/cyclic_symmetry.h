@@ -60,11 +60,11 @@ namespace RingContact
 
     /// The rotated master copies a sector of `sector_elements` elements
     /// (of `elements_around` around, both of the refined mesh) needs for a
-    /// rotation of up to `rotation_elements` elements: c = 1 + ceil(|s| /
+    /// rotation of up to `slave_turn` elements: c = 1 + ceil(|s| /
     /// k) copies on each side, trimmed to the window [-w, k + w) with w =
     /// c k, or, where the sector and its copies would go further round than
     /// the circle ((2c + 1) k >= Ne), to a window of exactly the circle,
-    /// whose side towards which the slave slides (`rotation_elements`:
+    /// whose side towards which the slave slides (`slave_turn`:
     /// the slave's motion along the master, signed) gets max(ceil((Ne -
     /// k) / 2), min(Ne - k, ceil(|s|) + 1)) elements and the other side
     /// the rest. Either way no master position appears twice modulo the
@@ -74,11 +74,11 @@ namespace RingContact
     set_master_window(Sector            &sector,
                       const unsigned int sector_elements,
                       const unsigned int elements_around,
-                      const double       rotation_elements);
+                      const double       slave_turn);
 
     /// A node on the end side of the sector and its image on the start
     /// side: the dofs of the displacement (x, y) and of the multiplier
-    /// (invalid where the ring has none) at both.
+    /// (invalid where the body has none) at both.
     struct NodePair
     {
       std::array<types::global_dof_index, Components::n_components> end;

@@ -51,15 +51,6 @@ namespace RingContact
     nominal ///< force per reference length of the slave surface
   };
 
-  /// The load programs: the pseudo-times of the steps and the load state at
-  /// each (load_program.h).
-  enum class LoadProgramType
-  {
-    ramp,     ///< p(t) = p0 10^(t - 1.1) at t = k dt, no rotation
-    rotation, ///< p fixed, a boundary turned through s elements
-    steps     ///< given pseudo-times, the boundary data expressions of t
-  };
-
   /// The linear solver of the Newton systems.
   enum class LinearSolverType
   {
@@ -67,15 +58,6 @@ namespace RingContact
     umfpack,   ///< SuiteSparse's UMFPACK (one process)
     mumps,     ///< MUMPS through Trilinos Amesos (one or several processes)
     iterative  ///< GMRES with a block preconditioner (AMG; see BlockSolver)
-  };
-
-  /// The quantity checked against a scenario's reference pressure
-  /// (subsection Checks).
-  enum class CheckedQuantity
-  {
-    pressure_at_A,     ///< contact pressure at the probe node A
-    l2_pressure_error, ///< relative L2 error of the pressure on the slave
-    pressure_spread    ///< (max - min) / reference over the slave nodes
   };
 
   struct MeshParameters
@@ -154,7 +136,6 @@ namespace RingContact
     double                         complementarity_constant; ///< 0: automatic
     double                         friction_coefficient;     ///< mu; 0: none
     PressureMeasure                reported_pressure;
-    Point<dim>                     probe_point;
 
     /// Whether the contact is frictional (Coulomb, mu > 0): the one
     /// place outside contact/ that reads the coefficient to decide it.
@@ -164,8 +145,11 @@ namespace RingContact
       return friction_coefficient > 0;
     }
 
+    /// Declare subsection Contact; the default surfaces are the default
+    /// scenario's (ScenarioParameters::default_contact_surfaces()).
     void
-    add_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler                            &prm,
+                   const std::pair<unsigned int, unsigned int> &surfaces);
     /// Slave and master differ.
     void
     finish() const;
@@ -181,15 +165,15 @@ namespace RingContact
                    const unsigned int displacement_degree);
   };
 
+  /// Subsection Load program: which program loads the problem, and the
+  /// entries of the steps program, the given pseudo-times in which a
+  /// general problem's boundary data are written. The other programs and
+  /// their entries are the scenarios' (ScenarioParameters::load_programs()).
   struct LoadParameters
   {
-    LoadProgramType program;
-    double          reference_pressure; ///< p0 of the ramp
-    unsigned int    ramp_steps;
-    double          time_step;
-    double          rotation_pressure;
-    unsigned int    rotation_steps;
-    double          rotation_elements; ///< final s
+    /// The name of the program, one of the scenarios' (the scenario
+    /// refuses a program it does not run).
+    std::string program;
     /// Program = steps: the pseudo-time at the end of each step.
     std::vector<double> time_points;
     /// Program = steps: n equal steps when no time points are given.
@@ -197,10 +181,13 @@ namespace RingContact
     /// The most steps of a load program.
     static constexpr int max_steps = 100000;
 
+    /// Declare the entries; `programs` are every scenario's (name and
+    /// sentence), the first the default.
     void
-    add_parameters(ParameterHandler &prm);
-    /// The equal steps when no time points are given; the ramp's last
-    /// pressure a number.
+    add_parameters(
+      ParameterHandler                                       &prm,
+      const std::vector<std::pair<std::string, std::string>> &programs);
+    /// The equal steps when no time points are given.
     void
     finish();
   };
@@ -234,20 +221,6 @@ namespace RingContact
     /// An empty directory becomes results/<prm_name>.
     void
     finish(const std::string &prm_name);
-  };
-
-  /// The checks against a scenario's reference pressure (subsection
-  /// Checks, the original's TEST_RESU): for the scenarios that know the
-  /// pressure everywhere on the slave surface.
-  struct CheckParameters
-  {
-    CheckedQuantity           quantity;
-    bool                      every_step;
-    std::vector<unsigned int> steps; ///< when not every step
-    double                    tolerance;
-
-    void
-    add_parameters(ParameterHandler &prm);
   };
 
   struct Parameters;
@@ -302,6 +275,29 @@ namespace RingContact
       return {};
     }
 
+    /// The load programs the scenario runs: each one's name and its
+    /// sentence of the entry Load program/Program (the first is the
+    /// default of the default scenario).
+    virtual std::vector<std::pair<std::string, std::string>>
+    load_programs() const = 0;
+
+    /// The default slave and master boundaries of subsection Contact: the
+    /// default scenario's are the entries' defaults (none by default).
+    virtual std::pair<unsigned int, unsigned int>
+    default_contact_surfaces() const
+    {
+      return {0, 0};
+    }
+
+    /// Why the scenario does not read an entry ("Subsection/Entry") that
+    /// another declares, where it has more to say than who reads it ("":
+    /// nothing more).
+    virtual std::string
+    why_not_read(const std::string &) const
+    {
+      return "";
+    }
+
     /// "Subsection/Entry" of every entry the scenario declared.
     std::vector<std::string> declared;
 
@@ -327,7 +323,6 @@ namespace RingContact
     LoadParameters          load;
     NewtonParameters        newton;
     OutputParameters        output;
-    CheckParameters         checks;
 
     /// Each registered scenario's entries, by its name.
     std::map<std::string, std::shared_ptr<ScenarioParameters>>
@@ -383,8 +378,8 @@ namespace RingContact
     std::map<std::string, std::set<std::string>> readers;
 
     /// The entries of the common subsections that only some scenarios
-    /// read: the load programs' own and the checks against a reference
-    /// pressure (ScenarioParameters::reads says who reads them).
+    /// read: the steps program's (ScenarioParameters::reads says who
+    /// reads them).
     static std::vector<std::string>
     restricted_entries();
 

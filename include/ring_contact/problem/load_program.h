@@ -1,13 +1,15 @@
-// The load programs as functions of a pseudo-time t: the steps the user
-// asks for, and the load state at any t in between (used when a step is cut
-// into smaller increments). A ramp of the pressure, p(t) = p0 10^(t - 1.1)
-// at t = k dt (the rings' A, B and H, the patch test); a rotation of s
-// elements at a fixed pressure (the rings' C to G); or given pseudo-times,
-// in which a general problem's expressions are written.
+// A load program: the steps the user asks for, as pseudo-times t, and the
+// load state at any t in between (used when a step is cut into smaller
+// increments). The scenario makes its program from its own entries (the
+// rings' ramp and rotation, the patch test's ramp); the steps program, the
+// given pseudo-times in which a general problem's expressions are written,
+// is common.
 #ifndef ring_contact_problem_load_program_h
 #define ring_contact_problem_load_program_h
 
 #include <ring_contact/input/parameters.h>
+
+#include <functional>
 
 #include <map>
 #include <string>
@@ -37,7 +39,16 @@ namespace RingContact
   class LoadProgram
   {
   public:
-    explicit LoadProgram(const LoadParameters &parameters);
+    /// The program whose step k ends at `times[k - 1]` and whose state at a
+    /// pseudo-time t is `state(t)`.
+    LoadProgram(const std::vector<double>              &times,
+                const std::function<LoadState(double)> &state);
+
+    /// The steps program: the pseudo-times of Load program/Time points (or
+    /// its Number of steps), with no parameters (a general problem's
+    /// boundary data are expressions of t).
+    static LoadProgram
+    steps(const LoadParameters &parameters);
 
     /// Number of steps (step numbers run 1..n_steps()).
     unsigned int
@@ -56,7 +67,8 @@ namespace RingContact
     state_at_step(const unsigned int step) const;
 
   private:
-    const LoadParameters parameters;
+    std::vector<double>              times;
+    std::function<LoadState(double)> state_at;
   };
 } // namespace RingContact
 

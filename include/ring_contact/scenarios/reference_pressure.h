@@ -18,6 +18,7 @@
 #include <ring_contact/output/history.h>
 #include <ring_contact/output/verdicts.h>
 #include <ring_contact/problem/solution_state.h>
+#include <ring_contact/scenarios/reference_pressure_entries.h>
 #include <ring_contact/scenarios/scenario.h>
 
 #include <ostream>
@@ -140,6 +141,10 @@ namespace RingContact
     /// The parameters of the run.
     virtual const Parameters &
     run_parameters() const = 0;
+
+    /// The scenario's ramp, probe and checks.
+    virtual const ReferencePressureEntries &
+    reference_entries() const = 0;
   };
 } // namespace RingContact
 

@@ -147,7 +147,7 @@ namespace RingContact
         explicit GeneralProblem(const Parameters &parameters)
             : parameters(parameters)
             , problem(parameters.scenario_entries<ProblemParameters>())
-            , program(parameters.load)
+            , program(LoadProgram::steps(parameters.load))
             , quantities(problem)
         {}
 

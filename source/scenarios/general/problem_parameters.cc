@@ -50,9 +50,9 @@ namespace RingContact
                     "to '" +
                       bodies[b].law + "'; give Material law alone");
             bodies[b].law = old_law;
-            notes.push_back("Note: " + name + "/Kinematics is the old name of " +
-                            name + "/Material law; read as Material law = " +
-                            old_law + ".");
+            notes.push_back(
+              "Note: " + name + "/Kinematics is the old name of " + name +
+              "/Material law; read as Material law = " + old_law + ".");
           }
     }
   } // namespace
@@ -167,6 +167,29 @@ namespace RingContact
   // the description checked against itself and against the common
   // entries. Every refusal names the entry whose value is wrong; the
   // reader adds the file and line that set it.
+  std::vector<std::pair<std::string, std::string>>
+  ProblemParameters::load_programs() const
+  {
+    return {{"steps",
+             "the pseudo-times of 'Time points', or t = k / n for k = 1..n "
+             "with n = 'Number of steps' (a general problem, whose "
+             "expressions take t)"}};
+  }
+
+  // The probe places the rings' node A (history.csv's pressure_A): a general
+  // problem has no node A, and its history no such column. A quantity at a
+  // point is a check's, reported at every step.
+  std::string
+  ProblemParameters::why_not_read(const std::string &entry) const
+  {
+    if (entry != "Contact/Probe point")
+      return "";
+    return "has no meaning in a general problem (it places the rings' node "
+           "A); a quantity at a point is a Check subsection's, reported at "
+           "every step (Quantity = contact pressure, Point = x, y; Steps = "
+           "none to report it without checking it)";
+  }
+
   void
   ProblemParameters::finish(Parameters &parameters)
   {
@@ -210,17 +233,6 @@ namespace RingContact
 
     refuse_unread_slots(parameters);
     read_old_law_names(bodies, parameters.notes);
-    // The probe places the rings' node A (history.csv's pressure_A): a
-    // general problem has no node A, and its history no such column. A
-    // quantity at a point is a check's, reported at every step.
-    require(parameters.origins.count(entry_key("Contact", "Probe point")) == 0,
-            "Contact",
-            "Probe point",
-            "has no meaning in a general problem (it places the rings' node "
-            "A); a quantity at a point is a Check subsection's, reported at "
-            "every step (Quantity = contact pressure, Point = x, y; Steps = "
-            "none to report it without checking it)");
-
     // The description refers to the mesh by its physical groups: only a
     // gmsh mesh has them (the generated meshes are the rings' and the
     // patch test's). Its load states are pseudo-times, which only the
@@ -230,7 +242,7 @@ namespace RingContact
             "Mesh source",
             "must be 'gmsh file' for Problem/Scenario = general (its bodies "
             "and boundaries are the physical groups of the mesh)");
-    require(parameters.load.program == LoadProgramType::steps,
+    require(parameters.load.program == "steps",
             "Load program",
             "Program",
             "must be 'steps' for Problem/Scenario = general (the ramp and "

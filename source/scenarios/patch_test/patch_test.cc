@@ -58,20 +58,12 @@ namespace RingContact
     // along the interface have no common divisor, so the two meshes match at
     // the ends only and every slave segment meets master vertices inside it.
     // Degrees go up to 4: the quartic patch test checks that the contact rules
-    // integrate quartic surfaces exactly. Of the restricted common entries it
-    // reads the ramp's (its pressure follows the ramp) and the checks', since
-    // its reference pressure is known everywhere.
+    // integrate quartic surfaces exactly. Its pressure follows the ramp, and
+    // its reference pressure is known everywhere: it declares the ramp, the
+    // probe and the checks as the rings do (reference_pressure_entries.h).
     struct PatchTestParameters : public ScenarioParameters
     {
-      PatchTestParameters()
-      {
-        reads = {"Load program/Reference pressure",
-                 "Load program/Ramp steps",
-                 "Load program/Time step",
-                 "Checks/Quantity",
-                 "Checks/Steps",
-                 "Checks/Tolerance"};
-      }
+      ReferencePressureEntries reference;
 
       unsigned int elements_lower, elements_upper;
       double       youngs_modulus_lower, poissons_ratio_lower;
@@ -84,9 +76,16 @@ namespace RingContact
         return std::max(degree_lower, degree_upper);
       }
 
+      std::vector<std::pair<std::string, std::string>>
+      load_programs() const override
+      {
+        return {PressureRamp::program_choice()};
+      }
+
       void
       add_parameters(ParameterHandler &prm) override
       {
+        reference.add_parameters(prm, declared);
         Subsection s(prm, "Patch test", &declared);
         // -1 < nu < 0.5 is the range of a positive definite isotropic law:
         // lambda = E nu / ((1 + nu) (1 - 2 nu)) grows without bound as nu tends
@@ -147,11 +146,12 @@ namespace RingContact
         // The blocks are driven by the load state's pressure p: the steps
         // program carries none (p = 0 there), and the rotation's turn means
         // nothing to blocks.
-        require(parameters.load.program == LoadProgramType::ramp,
+        require(parameters.load.program == "ramp",
                 "Load program",
                 "Program",
                 "must be 'ramp' for Problem/Scenario = patch test (its "
                 "pressure follows the ramp)");
+        reference.ramp.finish();
         // The multiplier lives on the upper block, the slave: no richer than
         // its displacement, for the inf-sup condition (doc/intro.md).
         require(parameters.finite_elements.multiplier_degree <= degree_upper,
@@ -161,7 +161,7 @@ namespace RingContact
                 "(slave) block");
         // The probe must be on the interface, 0 <= x <= 1, y = 0, or near. The
         // default probe, the rings' (0.6, 0), lies on it.
-        const Point<dim> &x         = parameters.contact.probe_point;
+        const Point<dim> &x         = reference.probe_point;
         const double      nearest_x = std::min(1.0, std::max(0.0, x[0]));
         const double      distance  = Point<dim>(nearest_x, 0).distance(x);
         require(distance <= 0.05,
@@ -170,16 +170,8 @@ namespace RingContact
                 "(" + to_text(x[0]) + ", " + to_text(x[1]) +
                   ") is not near the slave surface: it is " +
                   to_text(distance) + " m from it (at most 0.05 m accepted)");
-        // A checked step beyond the ramp's last is a typo, refused here by its
-        // line rather than failed as 'not reached' after the run.
-        const unsigned int n_steps = parameters.load.ramp_steps;
-        for (const unsigned int step : parameters.checks.steps)
-          require(step == numbers::invalid_unsigned_int || step <= n_steps,
-                  "Checks",
-                  "Steps",
-                  "names step " + std::to_string(step) +
-                    ", but the load program has " + std::to_string(n_steps) +
-                    " steps");
+        // A checked step beyond the ramp's last is a typo.
+        reference.checks.check_steps(reference.ramp.steps);
       }
 
       // The two entries that lived in subsection Mesh while the patch test was
@@ -276,7 +268,7 @@ namespace RingContact
       explicit PatchTest(const Parameters &parameters)
           : parameters(parameters)
           , blocks(parameters.scenario_entries<PatchTestParameters>())
-          , program(parameters.load)
+          , program(blocks.reference.ramp.program())
       {}
 
       void
@@ -407,6 +399,12 @@ namespace RingContact
       run_parameters() const override
       {
         return parameters;
+      }
+
+      const ReferencePressureEntries &
+      reference_entries() const override
+      {
+        return blocks.reference;
       }
 
     private:

@@ -59,23 +59,6 @@ namespace RingContact
       return ring == Ids::outer_ring ? degree_outer : degree_inner;
     }
 
-    // The common entries only some scenarios read: the rings read both
-    // load programs and the checks against a reference pressure. A file of
-    // another scenario that sets one of them is refused, not silently
-    // ignored (parameters.h).
-    RingParameters::RingParameters()
-    {
-      reads = {"Load program/Reference pressure",
-               "Load program/Ramp steps",
-               "Load program/Time step",
-               "Load program/Rotation pressure",
-               "Load program/Rotation steps",
-               "Load program/Rotation in elements",
-               "Checks/Quantity",
-               "Checks/Steps",
-               "Checks/Tolerance"};
-    }
-
     // Each entry declared once, bound to its member, with its default,
     // range and documentation (parameter_checks.h); the defaults are
     // SSNP152's seed mesh and materials. The ranges refuse only the absurd:
@@ -136,23 +119,91 @@ namespace RingContact
               "Polynomial degree of the displacement on the inner "
               "ring.");
       }
-      {
-        Subsection s(prm, "Load program", &declared);
-        s.add(
-          "Loading",
-          loading,
-          "imposed displacements",
-          {{"imposed displacements", Loading::imposed_displacements},
-           {"pressure", Loading::pressure}},
-          "imposed displacements: the analytic displacements of pressure p on "
-          "r = R1 and r = R3 (the original's loading, the only one the "
-          "rotation program takes); pressure: the pressure p on r = R1 as "
-          "the problem states it, on the current configuration (a follower "
-          "load; a dead load in small strain), r = R3 free, and each ring's "
-          "rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at "
-          "(0, r) of r = R1 and r = R3 (the symmetric solution satisfies "
-          "them; the mesh needs nodes there).");
-      }
+      add_load_parameters(prm);
+      // The ramp, the probe and the checks, which the patch test declares
+      // too (scenarios/reference_pressure_entries.cc).
+      reference.add_parameters(prm, declared);
+    }
+
+
+    // The entries of subsection Load program: how the load reaches the
+    // rings, and the rotation program. The rotation (C-G): p = 1e7 Pa held
+    // while s goes from 0 to 1 in 100 equal steps, the document's N_t (the
+    // newest published inputs take 10). At s = 1 the inner ring has turned
+    // through one element and the meshes face each other again.
+    void
+    RingParameters::add_load_parameters(ParameterHandler &prm)
+    {
+      Subsection s(prm, "Load program", &declared);
+      s.add(
+        "Loading",
+        loading,
+        "imposed displacements",
+        {{"imposed displacements", Loading::imposed_displacements},
+         {"pressure", Loading::pressure}},
+        "imposed displacements: the analytic displacements of pressure p on "
+        "r = R1 and r = R3 (the original's loading, the only one the "
+        "rotation program takes); pressure: the pressure p on r = R1 as "
+        "the problem states it, on the current configuration (a follower "
+        "load; a dead load in small strain), r = R3 free, and each ring's "
+        "rigid-body modes removed by u_y = 0 at (+-r, 0) and u_x = 0 at "
+        "(0, r) of r = R1 and r = R3 (the symmetric solution satisfies "
+        "them; the mesh needs nodes there).");
+      s.add("Rotation pressure",
+            rotation_pressure,
+            "1e7",
+            "Equivalent pressure p [Pa] held during the rotation.",
+            positive());
+      s.add("Rotation steps",
+            rotation_steps,
+            "100",
+            1,
+            LoadParameters::max_steps,
+            "Nt, number of equal rotation steps.");
+      s.add("Rotation in elements",
+            rotation_elements,
+            "1",
+            "Final rotation parameter s: the angle is "
+            "2 pi s / (elements around).");
+    }
+
+    // The ramp and the rotation. Rotation: the full pressure from the first
+    // step on (reached linearly within the first step if that step has to
+    // be cut), s = s_end t, t = k / N_t: the pseudo-time runs from 0 to 1
+    // over the steps, not s itself, so that a program of zero rotation
+    // still advances. The document's program: the first step both loads the
+    // rings and turns them by s_end / N_t; at s_end = 1 the inner ring has
+    // turned through exactly one element when t = 1.
+    std::vector<std::pair<std::string, std::string>>
+    RingParameters::load_programs() const
+    {
+      return {PressureRamp::program_choice(),
+              {"rotation",
+               "the pressure fixed, a boundary turned through s elements (the "
+               "rings' C-G)"}};
+    }
+
+    bool
+    RingParameters::rotating(const Parameters &parameters)
+    {
+      return parameters.load.program == "rotation";
+    }
+
+    LoadProgram
+    RingParameters::load_program(const Parameters &parameters) const
+    {
+      if (!rotating(parameters))
+        return reference.ramp.program();
+      std::vector<double> times;
+      for (unsigned int step = 1; step <= rotation_steps; ++step)
+        times.push_back(static_cast<double>(step) / rotation_steps);
+      const double p = rotation_pressure, s_end = rotation_elements,
+                   t1 = times.front();
+      return LoadProgram(times, [p, s_end, t1](const double t) {
+        return LoadState{t,
+                         {{"pressure", p * std::min(1.0, t / t1)},
+                          {"rotation", s_end * t}}};
+      });
     }
 
 
@@ -226,15 +277,17 @@ namespace RingContact
       // (Before, such a file was refused: the default probe point was no
       // longer near the slave surface.)
       if (parameters.origins.count(entry_key("Contact", "Probe point")) == 0)
-        parameters.contact.probe_point = Point<dim>(interface_radius, 0);
+        reference.probe_point = Point<dim>(interface_radius, 0);
       check_geometry(parameters);
       // The rings' load states carry a pressure and a rotation, which only
       // the ramp and the rotation program give.
-      require(parameters.load.program != LoadProgramType::steps,
+      require(parameters.load.program == "ramp" || rotating(parameters),
               "Load program",
               "Program",
               "= steps takes Problem/Scenario = general (SSNP152 is loaded by "
               "the ramp or the rotation)");
+      if (!rotating(parameters))
+        reference.ramp.finish();
       check_contact_surfaces(parameters);
       check_loading(parameters);
       check_probe_point(parameters);
@@ -325,22 +378,20 @@ namespace RingContact
       const double elements_around_refined =
         static_cast<double>(elements_around) *
         (1u << parameters.mesh.global_refinements);
-      require(parameters.load.program != LoadProgramType::rotation ||
-                std::abs(parameters.load.rotation_elements) <=
-                  10 * elements_around_refined,
+      require(!rotating(parameters) ||
+                std::abs(rotation_elements) <= 10 * elements_around_refined,
               "Load program",
               "Rotation in elements",
               "must be at most ten turns (|s| <= 10 x " +
                 to_text(elements_around_refined) +
                 " elements around the refined mesh), got " +
-                to_text(parameters.load.rotation_elements));
+                to_text(rotation_elements));
 
       // The pressure load: the ramp on the whole rings. r = R3 is free
       // there, so the rotation has nothing to turn; and each ring is held
       // only at three points (add_rigid_body_points()), of which a sector
       // lacks some, leaving its rigid rotation free.
-      require(loading != Loading::pressure ||
-                parameters.load.program == LoadProgramType::ramp,
+      require(loading != Loading::pressure || !rotating(parameters),
               "Load program",
               "Loading",
               "= pressure takes the ramp program only: the rotation turns an "
@@ -371,7 +422,7 @@ namespace RingContact
       // distance is radial, and 5 % of R2 accepts any point meant to be on
       // the interface, not one meant elsewhere.
       {
-        const Point<dim> &x = parameters.contact.probe_point;
+        const Point<dim> &x = reference.probe_point;
         double            distance;
         double            scale;
         distance = std::abs(x.norm() - interface_radius);
@@ -407,17 +458,16 @@ namespace RingContact
       // the seam is the same copy of the same segments (turned by a multiple
       // of 2 pi): any rotation is consistent (k = 1 through a whole turn).
       if (sector_elements > 0 && elements_around % sector_elements != 0 &&
-          parameters.load.program == LoadProgramType::rotation)
+          rotating(parameters))
         {
           const double k = static_cast<double>(sector_elements) *
                            (1u << parameters.mesh.global_refinements);
-          require(k + std::abs(parameters.load.rotation_elements) <
-                    elements_around_refined,
+          require(k + std::abs(rotation_elements) < elements_around_refined,
                   "Mesh",
                   "Sector elements",
                   "= " + std::to_string(sector_elements) +
                     " is too wide for a rotation of " +
-                    to_text(parameters.load.rotation_elements) +
+                    to_text(rotation_elements) +
                     " elements: the sector would slide round to its own start "
                     "side (k + |s| must stay below " +
                     to_text(elements_around_refined) +
@@ -425,18 +475,8 @@ namespace RingContact
         }
 
       // A checked step beyond the last one of the load program is a typo.
-      // (invalid_unsigned_int stands for Steps = last, always reached.)
-      const unsigned int n_steps =
-        parameters.load.program == LoadProgramType::ramp ?
-          parameters.load.ramp_steps :
-          parameters.load.rotation_steps;
-      for (const unsigned int step : parameters.checks.steps)
-        require(step == numbers::invalid_unsigned_int || step <= n_steps,
-                "Checks",
-                "Steps",
-                "names step " + std::to_string(step) +
-                  ", but the load program has " + std::to_string(n_steps) +
-                  " steps");
+      reference.checks.check_steps(rotating(parameters) ? rotation_steps :
+                                                          reference.ramp.steps);
     }
 
     // @sect4{The scenario}
@@ -457,7 +497,7 @@ namespace RingContact
             , rings(parameters.scenario_entries<RingParameters>())
             , analytic(rings, parameters.materials.plane)
             , pressure_loading(rings.loading == Loading::pressure)
-            , program(parameters.load)
+            , program(rings.load_program(parameters))
         {}
 
         // The mesh: generated, or read from a gmsh file or script with the
@@ -628,8 +668,8 @@ namespace RingContact
             static_cast<types::boundary_id>(Ids::sector_end),
             rings.sector_elements * refined,
             rings.elements_around * refined,
-            parameters.load.program == LoadProgramType::rotation ?
-              (inner_slave ? 1.0 : -1.0) * parameters.load.rotation_elements :
+            RingParameters::rotating(parameters) ?
+              (inner_slave ? 1.0 : -1.0) * rings.rotation_elements :
               0.0};
         }
 
@@ -651,6 +691,12 @@ namespace RingContact
         run_parameters() const override
         {
           return parameters;
+        }
+
+        const ReferencePressureEntries &
+        reference_entries() const override
+        {
+          return rings.reference;
         }
 
       private:

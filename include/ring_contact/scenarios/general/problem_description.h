@@ -213,6 +213,15 @@ namespace RingContact
       const std::vector<std::pair<unsigned int, unsigned int>> &pairs) const;
 
   public:
+    /// The steps program: the pseudo-times its expressions take.
+    std::vector<std::pair<std::string, std::string>>
+    load_programs() const override;
+
+    /// The probe (node A of the rings): a quantity at a point is a
+    /// check's here.
+    std::string
+    why_not_read(const std::string &entry) const override;
+
     std::vector<std::pair<unsigned int, unsigned int>>
     more_contact_pairs() const override
     {

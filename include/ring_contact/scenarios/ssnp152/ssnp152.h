@@ -17,6 +17,8 @@
 
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
+#include <ring_contact/problem/load_program.h>
+#include <ring_contact/scenarios/reference_pressure_entries.h>
 
 #include <algorithm>
 
@@ -57,10 +59,6 @@ namespace RingContact
     /// The rings' entries of the parameter file.
     struct RingParameters : public ScenarioParameters
     {
-      /// The common entries the rings read (the ramp, the rotation, the
-      /// checks against the closed form).
-      RingParameters();
-
       // Mesh
       unsigned int elements_around;
       unsigned int radial_elements_outer;
@@ -81,6 +79,22 @@ namespace RingContact
       unsigned int degree_inner;
       // Load program
       Loading loading;
+      /// The ramp, the probe (node A) and the checks against the closed
+      /// form.
+      ReferencePressureEntries reference;
+      /// The rotation program: p [Pa] held, s from 0 to its final value in
+      /// equal steps.
+      double       rotation_pressure;
+      unsigned int rotation_steps;
+      double       rotation_elements; ///< final s
+
+      /// Whether the file chose the rotation program (else the ramp).
+      static bool
+      rotating(const Parameters &parameters);
+
+      /// The load program the file chose: the ramp or the rotation.
+      LoadProgram
+      load_program(const Parameters &parameters) const;
 
       /// The angle of the sector, 2 pi k / Ne (0: the whole rings).
       double
@@ -106,6 +120,18 @@ namespace RingContact
         return "nodal";
       }
 
+      /// The ramp (A, B, H) and the rotation (C to G).
+      std::vector<std::pair<std::string, std::string>>
+      load_programs() const override;
+
+      /// The original's: the inner ring's S2R2 is the slave, the outer
+      /// ring's S1R2 the master (all modelisations but E).
+      std::pair<unsigned int, unsigned int>
+      default_contact_surfaces() const override
+      {
+        return {Ids::inner_ring_contact, Ids::outer_ring_contact};
+      }
+
       unsigned int
       highest_displacement_degree() const override
       {
@@ -116,6 +142,9 @@ namespace RingContact
       /// The entries of subsection Mesh.
       void
       add_mesh_parameters(ParameterHandler &prm);
+      /// The entries of subsection Load program.
+      void
+      add_load_parameters(ParameterHandler &prm);
       /// The radii and the sector.
       void
       check_geometry(const Parameters &parameters) const;
@@ -131,8 +160,6 @@ namespace RingContact
       /// A sector under the rotation; the checked steps.
       void
       check_sector_and_steps(const Parameters &parameters) const;
-
-    public:
     };
 
     /// Build the structured rings in code: `elements_around` cells around
