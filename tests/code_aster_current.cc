@@ -23,7 +23,7 @@ namespace
     return RingContactTests::pressures_at_A(
       letter,
       scheme,
-      "subsection Materials\n set Material law = logarithmic strain\nend\n" +
+      "subsection Materials\n set Material law = Hencky\nend\n" +
         extra);
   }
 

@@ -27,7 +27,7 @@ main()
               << "\n set Radial elements outer ring = " << 3 * around / 40
               << "\n set Radial elements inner ring = " << 3 * around / 40
               << "\nend\nsubsection Materials\n"
-              << " set Material law = small strain\nend\n"
+              << " set Material law = linear elasticity\nend\n"
               << "subsection Contact\n set Integration schemes = " << scheme
               << "\nend\nsubsection Load program\n set Ramp steps = 1\n"
               << "end\n";

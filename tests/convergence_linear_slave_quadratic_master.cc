@@ -30,7 +30,7 @@ namespace
         << "\n set Radial elements outer ring = " << 3 * around / 40
         << "\n set Radial elements inner ring = " << 3 * around / 40
         << "\n set Sector elements = 1\nend\n"
-        << "subsection Materials\n set Material law = small strain\nend\n"
+        << "subsection Materials\n set Material law = linear elasticity\nend\n"
         << "subsection Finite elements\n"
         << " set Displacement degree outer ring = " << (outer_slave ? 1 : 2)
         << "\n set Displacement degree inner ring = " << (outer_slave ? 2 : 1)

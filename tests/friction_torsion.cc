@@ -111,7 +111,7 @@ namespace
         << " set Poisson's ratio outer ring = " << rings.nu_outer << '\n'
         << " set Young's modulus inner ring = " << rings.E_inner << '\n'
         << " set Poisson's ratio inner ring = " << rings.nu_inner << '\n'
-        << " set Material law = small strain\n"
+        << " set Material law = linear elasticity\n"
         << " set Plane assumption = " << rings.plane << "\nend\n"
         << "subsection Contact\n set Integration schemes = " << scheme
         << "\n set Friction coefficient = " << mu << "\nend\n"

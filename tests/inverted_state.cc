@@ -22,7 +22,7 @@ main()
   {
     std::ofstream prm("inverted.prm");
     prm << "include " << RING_CONTACT_SOURCE_DIR << "/prm/ssnp152a.prm\n"
-        << "subsection Materials\n set Material law = small strain\nend\n"
+        << "subsection Materials\n set Material law = linear elasticity\nend\n"
         << "subsection Contact\n set Integration schemes = nodal\nend\n"
         << "subsection Load program\n set Reference pressure = 1e10\n"
         << " set Ramp steps = 1\n set Time step = 1.1\nend\n"

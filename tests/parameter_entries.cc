@@ -367,5 +367,24 @@ main()
             body.notes.size() == 1,
           "Body 2/Kinematics read as Material law");
     deallog_file << "old name of a body: " << body.notes.at(0) << std::endl;
+    // An old value under the new name: read as the law, with a note too.
+    write("old_value.prm",
+          "subsection Materials\n  set Material law = finite strain\nend\n");
+    Parameters old_value;
+    old_value.read("old_value.prm");
+    check(old_value.materials.law == "Saint Venant-Kirchhoff" &&
+            old_value.notes.size() == 1,
+          "Material law = finite strain read as Saint Venant-Kirchhoff");
+    deallog_file << "old value: " << old_value.notes.at(0) << std::endl;
+    write("old_value_body.prm",
+          head + "subsection Body 2\n  set Material law = small strain\nend\n");
+    Parameters body_value;
+    body_value.read("old_value_body.prm");
+    check(body_value.scenario_entries<ProblemParameters>().bodies.at(1).law ==
+              "linear elasticity" &&
+            body_value.notes.size() == 1,
+          "Body 2/Material law = small strain read as linear elasticity");
+    deallog_file << "old value of a body: " << body_value.notes.at(0)
+                 << std::endl;
   }
 }

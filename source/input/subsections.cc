@@ -332,9 +332,7 @@ namespace RingContact
           "Saint Venant-Kirchhoff",
           Patterns::Selection(MaterialLaws::selection()),
           "The law of every body. " + MaterialLaws::documentation(),
-          [this](const std::string &text) {
-            law = MaterialLaws::get(text).name;
-          });
+          [this](const std::string &text) { law = text; });
     // The entry's name until version 0.11: a kinematics chose the law.
     // Still read, with a note (finish()).
     s.add("Kinematics",
@@ -355,10 +353,19 @@ namespace RingContact
           "(E33 = 0, D_PLAN).");
   }
 
+  // A law under one of its old names (finite strain, small strain,
+  // logarithmic strain, until version 0.11) is read as the law, with a note,
+  // as the entry's old name is.
   void
   MaterialParameters::finish(const bool                law_set,
                              std::vector<std::string> &notes)
   {
+    const std::string name = MaterialLaws::get(law).name;
+    if (name != law)
+      notes.push_back("Note: '" + law + "' is the old name of the law '" +
+                      name + "'; read as Materials/Material law = " + name +
+                      ".");
+    law = name;
     if (old_kinematics.empty())
       return;
     const std::string old_law = MaterialLaws::get(old_kinematics).name;

@@ -31,11 +31,23 @@ namespace RingContact
   {
     // A body's law under the entry's old name (Body n/Kinematics, until
     // version 0.11): read as its Material law, with a note, unless Material
-    // law says otherwise.
+    // law says otherwise. A law under one of its old names (finite strain,
+    // ...) is read as the law, with a note too.
     void
     read_old_law_names(std::vector<BodyParameters> &bodies,
                        std::vector<std::string>    &notes)
     {
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].law.empty() &&
+            MaterialLaws::get(bodies[b].law).name != bodies[b].law)
+          {
+            const std::string name = MaterialLaws::get(bodies[b].law).name;
+            notes.push_back("Note: '" + bodies[b].law +
+                            "' is the old name of the law '" + name +
+                            "'; read as Body " + std::to_string(b + 1) +
+                            "/Material law = " + name + ".");
+            bodies[b].law = name;
+          }
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (!bodies[b].old_kinematics.empty())
           {
