@@ -8,24 +8,16 @@
 // entry is declared, checked and documented is told at the top of
 // parameters.cc.
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
-#include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/parameter_checks.h>
-#include <ring_contact/input/parameter_file.h>
 #include <ring_contact/input/parameters.h>
-#include <ring_contact/scenarios/scenario.h>
 
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
-#include <cctype>
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <sstream>
-#include <tuple>
+#include <string>
+#include <vector>
 
 namespace RingContact
 {
