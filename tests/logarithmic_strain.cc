@@ -105,7 +105,7 @@ main()
   for (const auto plane :
        {PlaneAssumption::plane_strain, PlaneAssumption::plane_stress})
     {
-      const Material material(E, nu, plane, "logarithmic strain");
+      const Material<2>      material(E, nu, plane, "logarithmic strain");
       const ElasticConstants c(E, nu, plane);
       const std::string plane_name = plane == PlaneAssumption::plane_strain ?
                                        "plane strain" :

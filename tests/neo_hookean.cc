@@ -107,7 +107,7 @@ main()
   for (const auto plane :
        {PlaneAssumption::plane_strain, PlaneAssumption::plane_stress})
     {
-      const Material         material(E, nu, plane, "neo-Hookean");
+      const Material<2>      material(E, nu, plane, "neo-Hookean");
       const ElasticConstants c(E, nu, plane);
       const double           lambda = c.lambda_3d, mu = c.mu;
       const std::string plane_name = plane == PlaneAssumption::plane_strain ?
@@ -222,19 +222,13 @@ main()
 
   // Uniaxial strain in plane strain: the closed form, and the monotonic
   // stress down to s = 0.05 (SVK's maximum shown beside).
-  const double   lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  const double   mu     = E / (2 * (1 + nu));
-  const Material neo(E,
-                     nu,
-                     PlaneAssumption::plane_strain,
-                     "neo-Hookean");
-  const Material svk(E,
-                     nu,
-                     PlaneAssumption::plane_strain,
-                     "finite strain");
-  double         worst     = 0;
-  bool           monotonic = true;
-  double         previous = 0, svk_previous = 0, svk_peak = 0;
+  const double      lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double      mu     = E / (2 * (1 + nu));
+  const Material<2> neo(E, nu, PlaneAssumption::plane_strain, "neo-Hookean");
+  const Material<2> svk(E, nu, PlaneAssumption::plane_strain, "finite strain");
+  double            worst     = 0;
+  bool              monotonic = true;
+  double            previous = 0, svk_previous = 0, svk_peak = 0;
   for (unsigned int n = 0; n <= 95; ++n)
     {
       const double s = 1 - 0.01 * n; // 1 down to 0.05

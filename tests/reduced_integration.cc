@@ -37,12 +37,12 @@ namespace
     const QGauss<2> quadrature(n_gauss);
     FEValues<2> fe_values(fe, quadrature, update_gradients | update_JxW_values);
     fe_values.reinit(dof_handler.begin_active());
-    const Material material(1e9,
-                            0.2,
-                            PlaneAssumption::plane_stress,
-                            "small strain");
-    Tensor<2, 2>   P;
-    Tensor<4, 2>   A;
+    const Material<2> material(1e9,
+                               0.2,
+                               PlaneAssumption::plane_stress,
+                               "small strain");
+    Tensor<2, 2>      P;
+    Tensor<4, 2>      A;
     material.stress_and_tangent(Tensor<2, 2>(), P, A);
     const FEValuesExtractors::Vector u(0);
     LAPACKFullMatrix<double>         K(fe.n_dofs_per_cell());

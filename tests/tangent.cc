@@ -41,8 +41,8 @@ namespace
                  const std::string    &kinematics,
                  const std::string    &name)
   {
-    const Material material(1e9, 0.3, plane, kinematics);
-    Tensor<2, 2>   H;
+    const Material<2> material(1e9, 0.3, plane, kinematics);
+    Tensor<2, 2>      H;
     H[0][0] = 0.03;
     H[0][1] = -0.2;
     H[1][0] = 0.15;

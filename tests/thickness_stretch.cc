@@ -31,22 +31,22 @@ main()
   const double E = 2e11;
   for (const double nu : {0.1, 0.3, 0.45})
     {
-      const double lambda  = E * nu / ((1 + nu) * (1 - 2 * nu)),
-                   mu      = E / (2 * (1 + nu));
-      const double   ratio = nu / (1 - nu); // lambda / (lambda + 2 mu), 3d
-      const Material svk(E,
-                         nu,
-                         PlaneAssumption::plane_stress,
-                         "finite strain");
-      const Material neo_hookean(E,
-                                 nu,
-                                 PlaneAssumption::plane_stress,
-                                 "neo-Hookean");
-      const Material hencky(E,
+      const double lambda     = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                   mu         = E / (2 * (1 + nu));
+      const double      ratio = nu / (1 - nu); // lambda / (lambda + 2 mu), 3d
+      const Material<2> svk(E,
                             nu,
                             PlaneAssumption::plane_stress,
-                            "logarithmic strain");
-      const double   svk_bound = std::sqrt(1 + 0.5 / ratio);
+                            "finite strain");
+      const Material<2> neo_hookean(E,
+                                    nu,
+                                    PlaneAssumption::plane_stress,
+                                    "neo-Hookean");
+      const Material<2> hencky(E,
+                               nu,
+                               PlaneAssumption::plane_stress,
+                               "logarithmic strain");
+      const double      svk_bound = std::sqrt(1 + 0.5 / ratio);
       out << "nu = " << nu
           << ": Saint Venant-Kirchhoff has F33 below s = " << svk_bound
           << std::endl;

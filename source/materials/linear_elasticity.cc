@@ -11,14 +11,14 @@
 // its tangent is the constant Hooke tensor; the finite-strain laws all
 // tend to it at small H (the Hencky and neo-Hookean tests check this at
 // strains of 1e-7).
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 namespace RingContact
 {
   namespace
   {
-    class LinearElasticity : public MaterialLaw
+    template <int dim>
+    class LinearElasticity : public MaterialLaw<dim>
     {
     public:
       explicit LinearElasticity(const ElasticConstants &constants)
@@ -89,15 +89,13 @@ namespace RingContact
 
   namespace
   {
-    const MaterialLaws::Add registration{MaterialLawRegistration{
-      linear_elasticity_law,
-      {"small strain"},
-      "small-strain linear elasticity, sigma = lambda tr(eps) I + 2 mu eps; "
-      "geometrically linear: the problem, its contact and its loads are "
-      "written on the reference configuration.",
-      true,
-      [](const ElasticConstants &constants) {
-        return std::make_shared<LinearElasticity>(constants);
-      }}};
+    const MaterialLaws::Add registration{
+      MaterialLawRegistration::of<LinearElasticity>(
+        linear_elasticity_law,
+        {"small strain"},
+        "small-strain linear elasticity, sigma = lambda tr(eps) I + 2 mu eps; "
+        "geometrically linear: the problem, its contact and its loads are "
+        "written on the reference configuration.",
+        true)};
   } // namespace
 } // namespace RingContact

@@ -6,13 +6,13 @@
 // file (saint_venant_kirchhoff.cc, linear_elasticity.cc,
 // logarithmic_strain.cc, neo_hookean.cc) behind the MaterialLaw interface;
 // this file holds what they share: the Lame constants of the 2d
-// assumption, the Material that finds its law among the registered ones,
-// and the two
-// outputs that are the same formula for every finite-strain law, the
-// Cauchy stress and the von Mises stress written to the VTU files.
+// assumption, det F - 1 without cancellation, the Material that finds its
+// law among the registered ones, and the two outputs that are the same
+// formula for every finite-strain law, the Cauchy stress and the von Mises
+// stress written to the VTU files. Each is a template on the dimension,
+// instantiated at the end of the file for 2 and 3.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <algorithm>
@@ -63,6 +63,24 @@ namespace RingContact
       , lambda_3d(lame_lambda(E, nu))
   {}
 
+  // @sect4{det F - 1}
+  //
+  // det(I + H) = 1 + tr H + I2(H) + det H in 3d, I2 = ((tr H)^2 - tr(H^2))
+  // / 2 the second invariant; in 2d I2(H) = det H and there is no third
+  // term. The 2d form is the one every 2d law used before (its digits).
+  template <int dim>
+  double
+  det_F_minus_one(const Tensor<2, dim> &H)
+  {
+    if constexpr (dim == 2)
+      return trace(H) + determinant(H);
+    else
+      {
+        const double tr = trace(H);
+        return tr + 0.5 * (tr * tr - trace(H * H)) + determinant(H);
+      }
+  }
+
   // A law holds only its constants (no state at the quadrature points:
   // the laws are hyperelastic, without history), so one instance is shared
   // by every copy of the Material: the problem and the VTU writer keep
@@ -70,16 +88,21 @@ namespace RingContact
   // The name is one the parameters admitted (their pattern is the
   // registry's selection), possibly an old one: the registration found by
   // it gives the registered name.
-  Material::Material(const double          E,
-                     const double          nu,
-                     const PlaneAssumption plane,
-                     const std::string    &law)
+  // A three-dimensional body has no plane assumption: it takes plane
+  // strain's constants, the 3d ones, with which no law takes a branch of
+  // plane stress.
+  template <int dim>
+  Material<dim>::Material(const double          E,
+                          const double          nu,
+                          const PlaneAssumption plane_assumption,
+                          const std::string    &law)
       : youngs_modulus(E)
       , poissons_ratio(nu)
-      , plane(plane)
+      , plane(dim == 3 ? PlaneAssumption::plane_strain : plane_assumption)
       , law_name(MaterialLaws::get(law).name)
       , geometrically_linear(MaterialLaws::get(law).geometrically_linear)
-      , law(MaterialLaws::get(law).make(ElasticConstants(E, nu, plane)))
+      , law(MaterialLaws::get(law).template make<dim>(
+          ElasticConstants(E, nu, plane)))
   {}
 
   // @sect4{The Cauchy stress of the finite-strain laws}
@@ -89,9 +112,11 @@ namespace RingContact
   // body thins (F33 < 1 under tension), so the thickness stretch enters J;
   // in plane strain F33 = 1. Written once here for Saint Venant-Kirchhoff,
   // Hencky and neo-Hookean alike (each had its own copy before); small
-  // strain overrides it, its stress being sigma already.
+  // strain overrides it, its stress being sigma already. In 3d F is whole
+  // and F33 = 1 in this formula.
+  template <int dim>
   Tensor<2, dim>
-  MaterialLaw::cauchy_stress(const Tensor<2, dim> &H) const
+  MaterialLaw<dim>::cauchy_stress(const Tensor<2, dim> &H) const
   {
     const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
     return stress(H) * transpose(F) / (determinant(F) * thickness_stretch(H));
@@ -99,14 +124,16 @@ namespace RingContact
 
   // Every law has a state wherever det F > 0, but one: Saint Venant-
   // Kirchhoff in plane stress (saint_venant_kirchhoff.cc) overrides these.
+  template <int dim>
   bool
-  MaterialLaw::in_range(const Tensor<2, dim> &) const
+  MaterialLaw<dim>::in_range(const Tensor<2, dim> &) const
   {
     return true;
   }
 
+  template <int dim>
   std::string
-  MaterialLaw::range_condition() const
+  MaterialLaw<dim>::range_condition() const
   {
     return "";
   }
@@ -119,21 +146,46 @@ namespace RingContact
   // misstated it. The components are scaled by the largest of them before
   // they are squared: at a load of 1e-200 Pa the squares underflowed, and
   // the VTU files showed a von Mises stress of zero beside stresses of
-  // 1e-200.
+  // 1e-200. In 3d the two further shears enter as s12 does.
+  template <int dim>
   double
-  Material::von_mises_stress(const Tensor<2, dim> &grad_u) const
+  Material<dim>::von_mises_stress(const Tensor<2, dim> &grad_u) const
   {
-    const Tensor<2, dim> s     = cauchy_stress(grad_u);
-    const double         s33   = out_of_plane_stress(grad_u);
-    const double         scale = std::max(
-      {std::abs(s[0][0]), std::abs(s[1][1]), std::abs(s33), std::abs(s[0][1])});
+    const Tensor<2, dim> s = cauchy_stress(grad_u);
+    const double         s33 =
+      dim == 3 ? s[dim - 1][dim - 1] : law->out_of_plane_stress(grad_u);
+    // The shears beyond s12: s13 and s23 in 3d.
+    double s13 = 0, s23 = 0;
+    if constexpr (dim == 3)
+      {
+        s13 = s[0][2];
+        s23 = s[1][2];
+      }
+    const double scale = std::max({std::abs(s[0][0]),
+                                   std::abs(s[1][1]),
+                                   std::abs(s33),
+                                   std::abs(s[0][1]),
+                                   std::abs(s13),
+                                   std::abs(s23)});
     if (!(scale > 0))
       return scale; // zero, or not a number
     const double s11 = s[0][0] / scale, s22 = s[1][1] / scale,
-                 s12 = s[0][1] / scale, z = s33 / scale;
+                 s12 = s[0][1] / scale, z = s33 / scale,
+                 shear = s12 * s12 + (s13 / scale) * (s13 / scale) +
+                         (s23 / scale) * (s23 / scale);
     return scale *
            std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - z) * (s22 - z) +
                             (z - s11) * (z - s11)) +
-                     3 * s12 * s12);
+                     3 * shear);
   }
+
+  // The two dimensions of the program (issue 48).
+  template double
+  det_F_minus_one<2>(const Tensor<2, 2> &);
+  template double
+  det_F_minus_one<3>(const Tensor<2, 3> &);
+  template class MaterialLaw<2>;
+  template class MaterialLaw<3>;
+  template class Material<2>;
+  template class Material<3>;
 } // namespace RingContact

@@ -22,8 +22,8 @@
 // F33 (one root, found by Newton's method from F33 = 1, kept within a
 // bracket of the root), and the in-plane
 // tangent is condensed: dP/dF2 = dP/dF2|_F33 - dP/dF33 (dP33/dF33)^-1
-// dP33/dF2.
-#include <ring_contact/base/dimension.h>
+// dP33/dF2. A body in three dimensions has the same P and A with its whole
+// F, without the condensation (its constants are plane strain's).
 #include <ring_contact/materials/material.h>
 
 #include <algorithm>
@@ -34,7 +34,8 @@ namespace RingContact
 {
   namespace
   {
-    class NeoHookean : public MaterialLaw
+    template <int dim>
+    class NeoHookean : public MaterialLaw<dim>
     {
     public:
       explicit NeoHookean(const ElasticConstants &constants)
@@ -86,7 +87,7 @@ namespace RingContact
       static double
       log_J2(const Tensor<2, dim> &H)
       {
-        return std::log1p(trace(H) + determinant(H));
+        return std::log1p(det_F_minus_one(H));
       }
 
       // ln F33 of plane stress: f(x) = mu (e^2x - 1) + lambda (ln J2 + x) =
@@ -170,15 +171,13 @@ namespace RingContact
   // The registration line: Material law = neo-Hookean.
   namespace
   {
-    const MaterialLaws::Add registration{MaterialLawRegistration{
-      "neo-Hookean",
-      {},
-      "the compressible neo-Hookean law W = mu/2 (tr C - 3 - 2 ln J) + "
-      "lambda/2 (ln J)^2 (finite strain; linear elasticity at small strain; "
-      "in plane stress F33 from sigma33 = 0).",
-      false,
-      [](const ElasticConstants &constants) {
-        return std::make_shared<NeoHookean>(constants);
-      }}};
+    const MaterialLaws::Add registration{
+      MaterialLawRegistration::of<NeoHookean>(
+        "neo-Hookean",
+        {},
+        "the compressible neo-Hookean law W = mu/2 (tr C - 3 - 2 ln J) + "
+        "lambda/2 (ln J)^2 (finite strain; linear elasticity at small strain; "
+        "in plane stress F33 from sigma33 = 0).",
+        false)};
   } // namespace
 } // namespace RingContact

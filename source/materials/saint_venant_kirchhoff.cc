@@ -5,9 +5,9 @@
 // + 2 mu E, and P = F S, in plane stress (S33 = 0, through lambda*) or
 // plane strain (E33 = 0). The original's GROT_GDEP.
 //
-// The law of Material law = Saint Venant-Kirchhoff, the one the original computes
-// with. Finite strain at all because the inner ring turns through a finite
-// angle, and a linearised rotation strains it (doc/intro.md). The law's
+// The law of Material law = Saint Venant-Kirchhoff, the one the original
+// computes with. Finite strain at all because the inner ring turns through a
+// finite angle, and a linearised rotation strains it (doc/intro.md). The law's
 // limit is compression: in uniaxial strain its stress turns back at a
 // stretch of 0.58 and Newton finds no state beyond it, which is why
 // problems pressed hard use the neo-Hookean law. In plane stress it has a
@@ -19,7 +19,6 @@
 // over E33 is at the bound F33 = 0, where S33 is not zero): the state is
 // outside the law (in_range()), rejected by the Newton iteration as an
 // inverted one; F33 was its square root, a NaN in the Cauchy stress.
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 
 #include <cmath>
@@ -35,13 +34,15 @@ namespace RingContact
     // E = (F^T F - I) / 2 written in H = Grad u: F^T F - I loses the digits
     // of small strains (at |H| = 1e-7 it keeps 9 of 16, and Newton stalled
     // at a relative residual of 1e-9 on steel at p = 1e4).
+    template <int dim>
     Tensor<2, dim>
     green_lagrange(const Tensor<2, dim> &H)
     {
       return 0.5 * (H + transpose(H) + transpose(H) * H);
     }
 
-    class SaintVenantKirchhoff : public MaterialLaw
+    template <int dim>
+    class SaintVenantKirchhoff : public MaterialLaw<dim>
     {
     public:
       explicit SaintVenantKirchhoff(const ElasticConstants &constants)
@@ -154,14 +155,12 @@ namespace RingContact
   // former Kinematics = finite strain), the default.
   namespace
   {
-    const MaterialLaws::Add registration{MaterialLawRegistration{
-      "Saint Venant-Kirchhoff",
-      {"finite strain"},
-      "total Lagrangian Saint Venant-Kirchhoff (Green-Lagrange strain, "
-      "second Piola-Kirchhoff stress; the original's GROT_GDEP).",
-      false,
-      [](const ElasticConstants &constants) {
-        return std::make_shared<SaintVenantKirchhoff>(constants);
-      }}};
+    const MaterialLaws::Add registration{
+      MaterialLawRegistration::of<SaintVenantKirchhoff>(
+        "Saint Venant-Kirchhoff",
+        {"finite strain"},
+        "total Lagrangian Saint Venant-Kirchhoff (Green-Lagrange strain, "
+        "second Piola-Kirchhoff stress; the original's GROT_GDEP).",
+        false)};
   } // namespace
 } // namespace RingContact

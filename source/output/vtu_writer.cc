@@ -117,13 +117,13 @@ namespace RingContact
     // physical group of a gmsh model, constant on the cell. Under MPI the
     // cells of the process's subdomain alone.
     VtuGrid
-    bulk_grid(const DoFHandler<dim>                  &dof_handler,
-              const hp::MappingCollection<dim>       &mapping,
-              const Vector<double>                   &solution,
-              const std::map<unsigned int, Material> &materials,
-              const unsigned int                      n,
-              const unsigned int                      piece,
-              const unsigned int                      n_pieces)
+    bulk_grid(const DoFHandler<dim>                       &dof_handler,
+              const hp::MappingCollection<dim>            &mapping,
+              const Vector<double>                        &solution,
+              const std::map<unsigned int, Material<dim>> &materials,
+              const unsigned int                           n,
+              const unsigned int                           piece,
+              const unsigned int                           n_pieces)
     {
       VtuGrid grid;
       grid.point_data    = {{"displacement", 3},
@@ -153,8 +153,8 @@ namespace RingContact
           gradients.resize(v.n_quadrature_points);
           v[u].get_function_values(solution, values);
           v[u].get_function_gradients(solution, gradients);
-          const Material    &material = materials.at(cell->material_id());
-          const std::int64_t first    = grid.n_points();
+          const Material<dim> &material = materials.at(cell->material_id());
+          const std::int64_t   first    = grid.n_points();
           for (unsigned int q = 0; q < v.n_quadrature_points; ++q)
             {
               const Point<dim> x = v.quadrature_point(q);
@@ -317,14 +317,14 @@ namespace RingContact
   // Any process's failure is every process's: write() is collective, and
   // a process that threw alone would leave the others waiting.
   void
-  VtuWriter::write(const DoFHandler<dim>                  &dof_handler,
-                   const hp::MappingCollection<dim>       &mapping,
-                   const Vector<double>                   &solution,
-                   const std::vector<SurfaceField>        &surface_fields,
-                   const std::map<unsigned int, Material> &materials,
-                   const std::vector<SlaveFace>           &slave_faces,
-                   const unsigned int                      step,
-                   const double                            time)
+  VtuWriter::write(const DoFHandler<dim>                       &dof_handler,
+                   const hp::MappingCollection<dim>            &mapping,
+                   const Vector<double>                        &solution,
+                   const std::vector<SurfaceField>             &surface_fields,
+                   const std::map<unsigned int, Material<dim>> &materials,
+                   const std::vector<SlaveFace>                &slave_faces,
+                   const unsigned int                           step,
+                   const double                                 time)
   {
     // Under MPI every process holds the whole mesh and state; each writes
     // the cells it owns (its subdomain), so that the pieces partition the

@@ -295,7 +295,7 @@ namespace RingContact
           continue;
         const FiniteElement<dim> &fe       = cell->get_fe();
         const unsigned int        n        = fe.n_dofs_per_cell();
-        const Material           &material = materials.at(cell->material_id());
+        const Material<dim>      &material = materials.at(cell->material_id());
         const auto &layout = reference_geometry.layout[cell->active_fe_index()];
         const auto &u_dofs = layout.u_dofs;
         const auto &component         = layout.component;
@@ -405,7 +405,7 @@ namespace RingContact
   // that of an imaginary thickness), counted with the inverted points; the
   // body of the smallest material id is named.
   bool
-  ContactProblem::outside_law(const Material          &material,
+  ContactProblem::outside_law(const Material<dim>     &material,
                               const Tensor<2, dim>    &grad_u,
                               const types::material_id body)
   {

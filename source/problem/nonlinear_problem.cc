@@ -49,7 +49,6 @@ namespace RingContact
   {
     return !force_floor_known && !converged(tolerance) &&
            gap <= std::max(tolerance, gap_floor);
-
   }
 
   // The convergence measures of the assembled system, each relative to the
@@ -293,12 +292,13 @@ namespace RingContact
     for (const auto &contact : contacts)
       {
         ContactPairState pair;
-        pair.small_strain          = contact->small_strain();
-        pair.friction              = contact->has_friction();
-        pair.zone_grows_from_point = contact->active_set().zone_grows_from_point();
-        pair.piecewise_linear      = contact->piecewise_linear();
-        pair.n_closed              = contact->active_set().n_active();
-        pair.n_nodes               = contact->nodes().size();
+        pair.small_strain = contact->small_strain();
+        pair.friction     = contact->has_friction();
+        pair.zone_grows_from_point =
+          contact->active_set().zone_grows_from_point();
+        pair.piecewise_linear = contact->piecewise_linear();
+        pair.n_closed         = contact->active_set().n_active();
+        pair.n_nodes          = contact->nodes().size();
         pairs.push_back(pair);
       }
     return pairs;
@@ -359,10 +359,10 @@ namespace RingContact
       {
         model_materials = materials;
         for (auto &[id, material] : materials)
-          material = Material(material.youngs_modulus,
-                              material.poissons_ratio,
-                              material.plane,
-                              linear_elasticity_law);
+          material = Material<dim>(material.youngs_modulus,
+                                   material.poissons_ratio,
+                                   material.plane,
+                                   linear_elasticity_law);
       }
     else
       {

@@ -12,8 +12,11 @@
 // - compressible neo-Hookean, W = mu/2 (tr C - 3 - 2 ln J) + lambda/2
 //   (ln J)^2, the law of the published large-sliding benchmarks
 //   (neo_hookean.cc).
-// Each in plane stress (the out-of-plane stress zero) or plane strain (E33 =
-// 0). The laws are registered (base/registry.h): each file ends with the
+// In two dimensions each in plane stress (the out-of-plane stress zero) or
+// plane strain (E33 = 0); in three dimensions the same laws without an
+// assumption (their constants are those of plane strain, the 3d ones). Every
+// class is a template on the dimension, instantiated for 2 and 3 (issue 48).
+// The laws are registered (base/registry.h): each file ends with the
 // law's registration, its name in Materials/Material law, its documentation
 // and its factory. Adding a law is one new file and its line in
 // CMakeLists.txt.
@@ -23,7 +26,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/registry.h>
 #include <ring_contact/input/parameters.h>
 
@@ -36,7 +38,9 @@ namespace RingContact
 {
   using namespace dealii;
 
-  /// The elastic constants of an isotropic body and its 2d assumption.
+  /// The elastic constants of an isotropic body and its 2d assumption (a
+  /// three-dimensional body takes plane strain's: its lambda is the 3d one
+  /// and no branch of plane stress is taken).
   struct ElasticConstants
   {
     ElasticConstants(const double          youngs_modulus,
@@ -53,7 +57,16 @@ namespace RingContact
     double lambda_3d;
   };
 
+  /// det F - 1 of F = I + H, written in H without the cancellation of
+  /// det F ~ 1 (tr H + det H in 2d, tr H + I2(H) + det H in 3d): the laws
+  /// take ln J = log1p() of it, so that the strains of 1e-8 that a stiff
+  /// body under a small load has keep their digits.
+  template <int dim>
+  double
+  det_F_minus_one(const Tensor<2, dim> &H);
+
   /// What the assembly and the output need of a material law.
+  template <int dim>
   class MaterialLaw
   {
   public:
@@ -71,17 +84,20 @@ namespace RingContact
                        Tensor<2, dim>       &P,
                        Tensor<4, dim>       &A) const = 0;
 
-    /// In-plane Cauchy stress. By default that of a finite-strain law,
-    /// sigma = P F^T / det F, det F including the thickness stretch F33 of
-    /// plane stress; small strain overrides it (sigma is its stress).
+    /// Cauchy stress (in 2d its in-plane part). By default that of a
+    /// finite-strain law, sigma = P F^T / det F, det F including the thickness
+    /// stretch F33 of plane stress; small strain overrides it (sigma is its
+    /// stress).
     virtual Tensor<2, dim>
     cauchy_stress(const Tensor<2, dim> &grad_u) const;
 
-    /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress).
+    /// Out-of-plane Cauchy stress sigma_33 (0 in plane stress); in 3d
+    /// the Cauchy stress has it (Material asks only in 2d).
     virtual double
     out_of_plane_stress(const Tensor<2, dim> &grad_u) const = 0;
 
-    /// Out-of-plane stretch F33 (1 in plane strain and small strain).
+    /// Out-of-plane stretch F33 (1 in plane strain, small strain and 3d,
+    /// where F is whole).
     /// Throws a one-line std::domain_error where the law has none (see
     /// in_range()).
     virtual double
@@ -115,9 +131,45 @@ namespace RingContact
     /// is then written on the reference configuration, the contact paired
     /// and measured there and a pressure load dead (design.md).
     bool geometrically_linear;
-    /// The law with its constants.
-    std::function<std::shared_ptr<const MaterialLaw>(const ElasticConstants &)>
-      make;
+    /// The law with its constants, in two and in three dimensions.
+    std::function<std::shared_ptr<const MaterialLaw<2>>(
+      const ElasticConstants &)>
+      make_2d;
+    std::function<std::shared_ptr<const MaterialLaw<3>>(
+      const ElasticConstants &)>
+      make_3d;
+
+    /// The law in dimension dim.
+    template <int dim>
+    std::shared_ptr<const MaterialLaw<dim>>
+    make(const ElasticConstants &constants) const
+    {
+      if constexpr (dim == 2)
+        return make_2d(constants);
+      else
+        return make_3d(constants);
+    }
+
+    /// The registration of a law written as a class template Law<dim>
+    /// with a constructor from the constants: its two factories.
+    template <template <int> class Law>
+    static MaterialLawRegistration
+    of(const std::string              &name,
+       const std::vector<std::string> &old_names,
+       const std::string              &documentation,
+       const bool                      geometrically_linear)
+    {
+      return {name,
+              old_names,
+              documentation,
+              geometrically_linear,
+              [](const ElasticConstants &c) {
+                return std::make_shared<const Law<2>>(c);
+              },
+              [](const ElasticConstants &c) {
+                return std::make_shared<const Law<3>>(c);
+              }};
+    }
   };
 
   /// Every registered law, by name (base/registry.h).
@@ -129,11 +181,12 @@ namespace RingContact
 
   /// A body's material: its constants and its law, a value that can be
   /// copied and stored (the law is shared, it has no state).
+  template <int dim>
   class Material
   {
   public:
-    /// E [Pa], nu [-], the 2d assumption and the name of a registered law
-    /// (or one of its old names).
+    /// E [Pa], nu [-], the 2d assumption (ignored in 3d) and the name of a
+    /// registered law (or one of its old names).
     Material(const double          youngs_modulus,
              const double          poissons_ratio,
              const PlaneAssumption plane,
@@ -159,10 +212,15 @@ namespace RingContact
       return law->cauchy_stress(grad_u);
     }
 
+    /// sigma_33: of a plane body the out-of-plane stress, of a 3d body
+    /// the zz component of its Cauchy stress.
     double
     out_of_plane_stress(const Tensor<2, dim> &grad_u) const
     {
-      return law->out_of_plane_stress(grad_u);
+      if constexpr (dim == 3)
+        return law->cauchy_stress(grad_u)[2][2];
+      else
+        return law->out_of_plane_stress(grad_u);
     }
 
     double
@@ -183,7 +241,7 @@ namespace RingContact
       return law->range_condition();
     }
 
-    /// The von Mises stress of the Cauchy stress, sigma_33 included.
+    /// The von Mises stress of the Cauchy stress (in 2d with sigma_33).
     double
     von_mises_stress(const Tensor<2, dim> &grad_u) const;
 
@@ -196,7 +254,7 @@ namespace RingContact
     bool geometrically_linear;
 
   private:
-    std::shared_ptr<const MaterialLaw> law;
+    std::shared_ptr<const MaterialLaw<dim>> law;
   };
 } // namespace RingContact
 

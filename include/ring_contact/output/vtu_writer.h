@@ -69,14 +69,14 @@ namespace RingContact
     };
 
     void
-    write(const DoFHandler<dim>                  &dof_handler,
-          const hp::MappingCollection<dim>       &mapping,
-          const Vector<double>                   &solution,
-          const std::vector<SurfaceField>        &surface_fields,
-          const std::map<unsigned int, Material> &materials,
-          const std::vector<SlaveFace>           &slave_faces,
-          const unsigned int                      step,
-          const double                            time);
+    write(const DoFHandler<dim>                       &dof_handler,
+          const hp::MappingCollection<dim>            &mapping,
+          const Vector<double>                        &solution,
+          const std::vector<SurfaceField>             &surface_fields,
+          const std::map<unsigned int, Material<dim>> &materials,
+          const std::vector<SlaveFace>                &slave_faces,
+          const unsigned int                           step,
+          const double                                 time);
 
   private:
     /// The bodies' .vtu file, or this process's piece of it; the name the

@@ -309,7 +309,7 @@ namespace RingContact
     /// Whether `material` has no state at `grad_u` (MaterialLaw::
     /// in_range()): the point is then counted as rejected.
     bool
-    outside_law(const Material          &material,
+    outside_law(const Material<dim>     &material,
                 const Tensor<2, dim>    &grad_u,
                 const types::material_id body);
     /// @}
@@ -439,7 +439,7 @@ namespace RingContact
     const std::vector<Body>               bodies;
     const std::vector<BoundaryLoad>       boundary_loads;
     const LoadProgram                    &load_program;
-    std::map<unsigned int, Material>      materials; ///< by material id
+    std::map<unsigned int, Material<dim>> materials; ///< by material id
 
     Triangulation<dim>               triangulation;
     DoFHandler<dim>                  dof_handler;
@@ -559,7 +559,7 @@ namespace RingContact
     double largest_estimate_said = 0;
     /// The model's own materials while the problem is linearised (empty
     /// otherwise, see linearise()).
-    std::map<unsigned int, Material> model_materials;
+    std::map<unsigned int, Material<dim>> model_materials;
     /// The current iterate, the converged state the last increment started
     /// from (both carried over by refine_mesh()), and the load state.
     Vector<double> solution;

@@ -44,9 +44,9 @@ namespace RingContact
     const hp::QCollection<1> face_quadrature;
     /// The degree of the one mapping Kelly's estimator takes: the bodies'
     /// highest.
-    const unsigned int                      mapping_degree;
-    const Vector<double>                   &solution;
-    const std::map<unsigned int, Material> &materials; ///< by material id
+    const unsigned int                           mapping_degree;
+    const Vector<double>                        &solution;
+    const std::map<unsigned int, Material<dim>> &materials; ///< by material id
     /// The slave surfaces of every contact pair.
     const std::set<types::boundary_id> slave_boundaries;
     /// Whether the tangential traction is a multiplier of its own.

@@ -58,7 +58,7 @@ namespace RingContact
     std::string        name;           ///< "outer ring", "Body 1"
     unsigned int       degree;         ///< displacement degree
     unsigned int       mapping_degree; ///< of the geometry
-    Material           material;
+    Material<dim>      material;
   };
 
   /// A load on a boundary, at a reference point and a load state.

@@ -41,7 +41,7 @@ namespace RingContact
     // int |P N + lambda cof(F) N|^2 dS (its normal part with friction).
     double
     contact_residual(const EstimatorInput    &input,
-                     const Material          &material,
+                     const Material<dim>     &material,
                      const FEFaceValues<dim> &fv)
     {
       const FEValuesExtractors::Vector displacement(0);
@@ -78,9 +78,10 @@ namespace RingContact
         [&](const DoFHandler<dim>::active_cell_iterator &cell,
             const unsigned int                           f,
             const FEFaceValues<dim>                     &fv) {
-          const Material &material = input.materials.at(cell->material_id());
-          const double    sum      = contact_residual(input, material, fv);
-          const double    E        = material.youngs_modulus;
+          const Material<dim> &material =
+            input.materials.at(cell->material_id());
+          const double sum = contact_residual(input, material, fv);
+          const double E   = material.youngs_modulus;
           indicator[cell->active_cell_index()] =
             std::sqrt(std::pow(indicator[cell->active_cell_index()], 2) +
                       cell->diameter() / 24 * sum / (E * E));

@@ -205,10 +205,10 @@ namespace RingContact
                      parameters.finite_elements.mapping_degree > 0 ?
                        parameters.finite_elements.mapping_degree :
                        body.degree,
-                     Material(body.youngs_modulus,
-                              body.poissons_ratio,
-                              m.plane,
-                              body.law.empty() ? m.law : body.law)});
+                     Material<dim>(body.youngs_modulus,
+                                   body.poissons_ratio,
+                                   m.plane,
+                                   body.law.empty() ? m.law : body.law)});
             }
           return bodies;
         }

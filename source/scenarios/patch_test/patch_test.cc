@@ -304,18 +304,18 @@ namespace RingContact
                      "lower block",
                      blocks.degree_lower,
                      mapping(blocks.degree_lower),
-                     Material(blocks.youngs_modulus_lower,
-                              blocks.poissons_ratio_lower,
-                              m.plane,
-                              m.law)},
+                     Material<dim>(blocks.youngs_modulus_lower,
+                                   blocks.poissons_ratio_lower,
+                                   m.plane,
+                                   m.law)},
                 Body{Ids::upper_block,
                      "upper block",
                      blocks.degree_upper,
                      mapping(blocks.degree_upper),
-                     Material(blocks.youngs_modulus_upper,
-                              blocks.poissons_ratio_upper,
-                              m.plane,
-                              m.law)}};
+                     Material<dim>(blocks.youngs_modulus_upper,
+                                   blocks.poissons_ratio_upper,
+                                   m.plane,
+                                   m.law)}};
       }
 
       const LoadProgram &

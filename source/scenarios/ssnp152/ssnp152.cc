@@ -563,18 +563,18 @@ namespace RingContact
                        "outer ring",
                        rings.degree_outer,
                        rings.mapping_degree_of(Ids::outer_ring, fe),
-                       Material(rings.youngs_modulus_outer,
-                                rings.poissons_ratio_outer,
-                                m.plane,
-                                m.law)},
+                       Material<dim>(rings.youngs_modulus_outer,
+                                     rings.poissons_ratio_outer,
+                                     m.plane,
+                                     m.law)},
                   Body{Ids::inner_ring,
                        "inner ring",
                        rings.degree_inner,
                        rings.mapping_degree_of(Ids::inner_ring, fe),
-                       Material(rings.youngs_modulus_inner,
-                                rings.poissons_ratio_inner,
-                                m.plane,
-                                m.law)}};
+                       Material<dim>(rings.youngs_modulus_inner,
+                                     rings.poissons_ratio_inner,
+                                     m.plane,
+                                     m.law)}};
         }
 
         // The ramp (the pressure raised step by step) or the rotation (the
