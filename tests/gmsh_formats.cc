@@ -11,10 +11,10 @@
 // give the cells of the 9-node ones.
 #include <deal.II/grid/tria.h>
 
-#include <ring_contact/config.h>
-#include <ring_contact/input/gmsh_mesh.h>
-#include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/config.h>
+#include <ring_contact/input/gmsh_file.h>
+#include <ring_contact/input/gmsh_mesh.h>
 
 #include "run_problem.h"
 
@@ -196,7 +196,7 @@ main()
   gmsh::write("quad8.msh");
   gmsh::finalize();
   unsigned int n_quad8 = 0;
-  for (const auto &element : Geometry::read_gmsh_file("quad8.msh").elements)
+  for (const auto &element : Geometry::read_gmsh_file<2>("quad8.msh").elements)
     n_quad8 += element.type == 16;
   const Cells quad8 = cells_of("quad8.msh"),
               quad9 = cells_of(meshes + "ssnp152.geo", 2);

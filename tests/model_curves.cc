@@ -121,8 +121,8 @@ main()
 
   for (const bool curved : {false, true})
     {
-      Triangulation<2>         triangulation;
-      const Geometry::GmshMesh mesh =
+      Triangulation<2>            triangulation;
+      const Geometry::GmshMesh<2> mesh =
         Geometry::read_gmsh(triangulation, "curves.geo", {}, 1, false);
       if (curved)
         {
@@ -170,8 +170,8 @@ main()
     }
 
   std::ofstream("closed.geo") << closed;
-  Triangulation<2>         triangulation;
-  const Geometry::GmshMesh mesh =
+  Triangulation<2>            triangulation;
+  const Geometry::GmshMesh<2> mesh =
     Geometry::read_gmsh(triangulation, "closed.geo", {}, 1, false);
   Geometry::attach_model_curves(triangulation, mesh);
   triangulation.refine_global(3);
@@ -194,7 +194,7 @@ main()
     std::ofstream("scaled.geo") << "Mesh.ScalingFactor = 0.001;\n" << script;
     Triangulation<2> unscaled, scaled;
     Geometry::read_gmsh(unscaled, "curves.geo", {}, 1, false);
-    const Geometry::GmshMesh mesh =
+    const Geometry::GmshMesh<2> mesh =
       Geometry::read_gmsh(scaled, "scaled.geo", {}, 1, false);
     double worst_vertex = 0;
     for (unsigned int v = 0; v < scaled.n_vertices(); ++v)

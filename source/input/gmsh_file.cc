@@ -8,14 +8,14 @@
 // check of the text, because gmsh 4.8's readers trust the file (a low
 // count silently drops the rest of a section, a file that is not a mesh is
 // run as a script). After: what gmsh returns is held to what the program
-// needs (quadrilaterals and lines, finite nodes in the plane, one physical
-// tag per entity, cells that are not folded). The result, a GmshMesh, is
-// made into a triangulation by gmsh_mesh.cc. The hand-written reader this
-// replaced lost 19 of 40 fixed segments of a format-1 file with a low
-// count, crashed on a triangle and read a short element past its end: each
-// of those is now a one-line error that names the file.
-#include <ring_contact/base/dimension.h>
+// needs (gmsh_checks.cc: the cells and boundary elements of the dimension,
+// finite nodes, one physical tag per entity, cells that are not folded).
+// The result, a GmshMesh, is made into a triangulation by gmsh_mesh.cc. The
+// hand-written reader this replaced lost 19 of 40 fixed segments of a format-1
+// file with a low count, crashed on a triangle and read a short element past
+// its end: each of those is now a one-line error that names the file.
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/input/gmsh_checks.h>
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/gmsh_process.h>
 #include <ring_contact/input/parameter_file.h>
@@ -39,15 +39,6 @@ namespace RingContact
       // comments"); a file much larger than that is not one of ours.
       constexpr std::size_t max_mesh_file_bytes = std::size_t(512) << 20;
 
-      // Every error names the file first: a run reads a parameter file and
-      // possibly a mesh, and the user must know which one is at fault.
-      [[noreturn]] void
-      fail(const std::string &filename, const std::string &what)
-      {
-        throw std::runtime_error("cannot read mesh file '" +
-                                 printable(filename, 200) + "': " + what);
-      }
-
       std::string
       in_quotes(const std::string &text)
       {
@@ -68,67 +59,6 @@ namespace RingContact
               extension[i])
             return false;
         return true;
-      }
-
-      // The nodes of each accepted element type (0: not accepted). The
-      // cells take only their four vertices, so the 8-node quadrilateral
-      // (the original's meshes of E, F and H) is as good as the 9-node one;
-      // points are accepted here and dropped later (a script's geometry
-      // points are elements of type 15).
-      unsigned int
-      nodes_of_type(const int type)
-      {
-        switch (type)
-          {
-            case 1:
-              return 2; // 2-node line
-            case 3:
-              return 4; // 4-node quadrilateral
-            case 8:
-              return 3; // 3-node line
-            case 10:
-              return 9; // 9-node quadrilateral
-            case 15:
-              return 1; // point
-            case 16:
-              return 8; // 8-node quadrilateral
-            default:
-              return 0;
-          }
-      }
-
-      // For the message only: a user whose mesh is made of triangles is
-      // told so in words, not by a gmsh type number.
-      std::string
-      name_of_type(const int type)
-      {
-        switch (type)
-          {
-            case 2:
-              return "3-node triangle";
-            case 4:
-              return "4-node tetrahedron";
-            case 5:
-              return "8-node hexahedron";
-            case 6:
-              return "6-node prism";
-            case 7:
-              return "5-node pyramid";
-            case 9:
-              return "6-node triangle";
-            case 11:
-              return "10-node tetrahedron";
-            case 12:
-              return "27-node hexahedron";
-            case 20:
-            case 21:
-              return "higher-order triangle";
-            case 36:
-            case 37:
-              return "higher-order quadrilateral";
-            default:
-              return "element";
-          }
       }
 
       // @sect4{The light check of the file, before gmsh sees it}
@@ -200,9 +130,10 @@ namespace RingContact
             for (const char c : line)
               if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') ||
                   c == 0x7F)
-                fail(filename,
-                     "line " + std::to_string(lines.size() + 1) +
-                       ": a control character (not an ASCII gmsh file?)");
+                refuse_mesh_file(
+                  filename,
+                  "line " + std::to_string(lines.size() + 1) +
+                    ": a control character (not an ASCII gmsh file?)");
             lines.push_back(line);
             start = end + 1;
           }
@@ -223,7 +154,8 @@ namespace RingContact
                     const std::size_t               text_size)
       {
         const auto at_line = [&](const std::size_t k, const std::string &what) {
-          fail(filename, "line " + std::to_string(k + 1) + ": " + what);
+          refuse_mesh_file(filename,
+                           "line " + std::to_string(k + 1) + ": " + what);
         };
         const std::string what = nodes ? "node" : "element";
         // The count line: one number in formats 1 and 2.2; in 4.1
@@ -285,7 +217,8 @@ namespace RingContact
         bool       have_nodes    = false;
         bool       have_elements = false;
         const auto at_line = [&](const std::size_t i, const std::string &what) {
-          fail(filename, "line " + std::to_string(i + 1) + ": " + what);
+          refuse_mesh_file(filename,
+                           "line " + std::to_string(i + 1) + ": " + what);
         };
         // Section by section: each line at this level must open one, and
         // the whole section (up to its end marker) is skipped at once.
@@ -355,9 +288,10 @@ namespace RingContact
         // Without either section there is no mesh to give gmsh, whatever
         // else the file holds.
         if (!have_nodes)
-          fail(filename, "no node section (" + nodes_name + ")");
+          refuse_mesh_file(filename, "no node section (" + nodes_name + ")");
         if (!have_elements)
-          fail(filename, "no element section (" + elements_name + ")");
+          refuse_mesh_file(filename,
+                           "no element section (" + elements_name + ")");
         return declared;
       }
 
@@ -377,24 +311,25 @@ namespace RingContact
         // byte order.
         int one = 0;
         if (header_end + sizeof(int) > text.size())
-          fail(filename, "the binary file ends in its header");
+          refuse_mesh_file(filename, "the binary file ends in its header");
         // Copied, not cast: the text's bytes have no alignment.
         std::memcpy(&one, text.data() + header_end, sizeof(int));
         if (one != 1)
-          fail(filename,
-               "a binary file of another byte order, or damaged (convert it "
-               "to ASCII with gmsh)");
+          refuse_mesh_file(
+            filename,
+            "a binary file of another byte order, or damaged (convert it "
+            "to ASCII with gmsh)");
         // A section's name is a text line of its own even in a binary
         // file: searched with its line ends, from after the header.
         const auto count_of = [&](const std::string &name) -> std::size_t {
           const std::size_t at = text.find("\n" + name + "\n", header_end);
           if (at == std::string::npos)
-            fail(filename, "no " + name + " section");
+            refuse_mesh_file(filename, "no " + name + " section");
           // The data start after the name and its two line ends; the end
           // marker must follow somewhere, or the file was cut short.
           const std::size_t data = at + name.size() + 2;
           if (text.find("\n$End" + name.substr(1), data) == std::string::npos)
-            fail(filename, "section '" + name + "' is not closed");
+            refuse_mesh_file(filename, "section '" + name + "' is not closed");
           std::size_t count = 0;
           if (format == Format::msh2_binary)
             {
@@ -404,8 +339,9 @@ namespace RingContact
               if (eol == std::string::npos ||
                   !read_integers(
                     text.substr(data, eol - data), values, 1, true))
-                fail(filename,
-                     "the count of section '" + name + "' is not a number");
+                refuse_mesh_file(filename,
+                                 "the count of section '" + name +
+                                   "' is not a number");
               count = values[0];
             }
           else
@@ -413,7 +349,8 @@ namespace RingContact
               // numEntityBlocks, count, minTag, maxTag as size_t, whose
               // size the format line declared as 8 (check_file()).
               if (data + 4 * sizeof(std::size_t) > text.size())
-                fail(filename, "section '" + name + "' ends in its header");
+                refuse_mesh_file(filename,
+                                 "section '" + name + "' ends in its header");
               std::memcpy(&count,
                           text.data() + data + sizeof(std::size_t),
                           sizeof(std::size_t));
@@ -421,9 +358,10 @@ namespace RingContact
           // Damaged bytes read as a count give a number beyond the file's
           // size: said here, before gmsh tries to allocate for it.
           if (count > text.size())
-            fail(filename,
-                 "section '" + name + "' declares " + std::to_string(count) +
-                   " items: more than the file can hold");
+            refuse_mesh_file(filename,
+                             "section '" + name + "' declares " +
+                               std::to_string(count) +
+                               " items: more than the file can hold");
           return count;
         };
         declared.nodes    = count_of("$Nodes");
@@ -440,17 +378,18 @@ namespace RingContact
         if (is_geo_file(filename))
           {
             if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-              fail(filename, "the gmsh script is empty");
+              refuse_mesh_file(filename, "the gmsh script is empty");
             return Declared();
           }
         // gmsh chooses its reader by the name first: a mesh must be named
         // so that gmsh reads it as one.
         if (!has_extension(filename, ".msh"))
-          fail(filename,
-               "its name must end in .msh (a gmsh mesh) or .geo (a gmsh "
-               "script)");
+          refuse_mesh_file(
+            filename,
+            "its name must end in .msh (a gmsh mesh) or .geo (a gmsh "
+            "script)");
         if (text.empty())
-          fail(filename, "the file is empty");
+          refuse_mesh_file(filename, "the file is empty");
         // The first line, cut at 80 characters: it is quoted in the
         // message when it is not a gmsh header (a binary file has no line
         // end where a text file would).
@@ -466,14 +405,15 @@ namespace RingContact
         if (first == "$NOD")
           return check_ascii(filename, text, Format::msh1);
         if (first != "$MeshFormat")
-          fail(filename,
-               "not a gmsh mesh: it starts with " + in_quotes(first) +
-                 " (a mesh file starts with '$MeshFormat', or '$NOD' for "
-                 "format 1; a gmsh script must be named *.geo)");
+          refuse_mesh_file(
+            filename,
+            "not a gmsh mesh: it starts with " + in_quotes(first) +
+              " (a mesh file starts with '$MeshFormat', or '$NOD' for "
+              "format 1; a gmsh script must be named *.geo)");
         const std::size_t start = eol + 1;
         eol                     = text.find('\n', start);
         if (eol == std::string::npos)
-          fail(filename, "the file ends in '$MeshFormat'");
+          refuse_mesh_file(filename, "the file ends in '$MeshFormat'");
         // "version file-type data-size": 2.0 to 2.2 share gmsh's 2.2
         // reader; of format 4, only 4.1, whose layout of lines the checks
         // above count (4.0 lists its nodes otherwise). File-type 0 is
@@ -485,15 +425,17 @@ namespace RingContact
         const bool v2 = version == "2" || version == "2.0" ||
                         version == "2.1" || version == "2.2";
         if (!v2 && version != "4.1")
-          fail(filename,
-               "gmsh format " + in_quotes(version) +
-                 " (this program reads formats 1, 2.2 and 4.1; gmsh writes "
-                 "them with Mesh.MshFileVersion or '-format msh22' / "
-                 "'msh41')");
+          refuse_mesh_file(
+            filename,
+            "gmsh format " + in_quotes(version) +
+              " (this program reads formats 1, 2.2 and 4.1; gmsh writes "
+              "them with Mesh.MshFileVersion or '-format msh22' / "
+              "'msh41')");
         if ((file_type != "0" && file_type != "1") || data_size != "8")
-          fail(filename,
-               "the format line " + in_quotes(text.substr(start, eol - start)) +
-                 " is not 'version 0|1 8'");
+          refuse_mesh_file(filename,
+                           "the format line " +
+                             in_quotes(text.substr(start, eol - start)) +
+                             " is not 'version 0|1 8'");
         if (file_type == "0")
           return check_ascii(filename,
                              text,
@@ -504,292 +446,6 @@ namespace RingContact
                             eol + 1);
       }
 
-      // @sect4{What gmsh read, checked}
-      //
-      // gmsh gives back what the file says, damaged or not; deal.II builds
-      // a triangulation from whatever it is handed. Between the two, what
-      // a mesh of bodies in contact must be: the cells, the nodes, the
-      // elements and their physical tags.
-
-      // No cell repeats a corner, is folded or flat; no edge is shared by
-      // more than two cells; every line joins two corners of a cell. Edges
-      // are pairs of node tags, not of positions: the two copies of a
-      // contact interface lie on each other but are different nodes, so
-      // their cells share no edge.
-      void
-      check_cells(const GmshMesh &mesh)
-      {
-        const auto element_fail = [&](const GmshElement &e,
-                                      const std::string &what) {
-          fail(mesh.filename, "element " + std::to_string(e.tag) + ": " + what);
-        };
-        std::map<std::pair<std::size_t, std::size_t>, unsigned int> edge_use;
-        bool any_cell = false, linear = false;
-        for (const auto &e : mesh.elements)
-          if (e.type == 3 || e.type == 10 || e.type == 16)
-            {
-              any_cell = true;
-              linear   = linear || e.type == 3;
-              const std::set<std::size_t> corners(e.nodes.begin(),
-                                                  e.nodes.begin() + 4);
-              if (corners.size() != 4)
-                element_fail(e, "a quadrilateral that repeats a corner node");
-              // gmsh numbers the corners around the cell: the turns at the
-              // four corners must all have one sign. One sign, not a
-              // positive one: cells drawn clockwise (a surface whose outline
-              // runs clockwise) are reoriented when the triangulation is
-              // built. The cross product is compared with 1e-12 of the edge
-              // lengths' product, so the test does not depend on the units.
-              int sign = 0;
-              for (unsigned int i = 0; i < 4; ++i)
-                {
-                  const Point<dim> a     = mesh.nodes.at(e.nodes[i]);
-                  const Point<dim> b     = mesh.nodes.at(e.nodes[(i + 1) % 4]);
-                  const Point<dim> c     = mesh.nodes.at(e.nodes[(i + 2) % 4]);
-                  const double     cross = (b[0] - a[0]) * (c[1] - b[1]) -
-                                       (b[1] - a[1]) * (c[0] - b[0]);
-                  const double scale = (b - a).norm() * (c - b).norm();
-                  const int    s     = cross > 1e-12 * scale  ? 1 :
-                                       cross < -1e-12 * scale ? -1 :
-                                                                0;
-                  if (s == 0 || (sign != 0 && s != sign))
-                    element_fail(
-                      e, "a quadrilateral that is flat, folded or not convex");
-                  sign = s;
-                }
-              // An edge of three cells is no surface deal.II can build.
-              for (unsigned int i = 0; i < 4; ++i)
-                {
-                  const auto a = e.nodes[i], b = e.nodes[(i + 1) % 4];
-                  if (++edge_use[{std::min(a, b), std::max(a, b)}] > 2)
-                    element_fail(e,
-                                 "an edge shared by more than two "
-                                 "quadrilaterals");
-                }
-            }
-        // A mesh of triangles, or of lines only, has no cell this program
-        // can use; the message says how gmsh makes quadrilaterals.
-        if (!any_cell)
-          fail(mesh.filename,
-               "no quadrilaterals (the bodies are meshed with gmsh types 3, 10 "
-               "or 16; in a .geo, 'Recombine Surface' makes them)");
-        if (linear && mesh.quadratic)
-          fail(mesh.filename, "linear and quadratic elements mixed");
-        // A boundary line must lie on the cells it bounds, or the boundary
-        // id it carries would be given to no face.
-        for (const auto &e : mesh.elements)
-          if (e.type == 1 || e.type == 8)
-            {
-              const auto a = e.nodes[0], b = e.nodes[1];
-              if (edge_use.count({std::min(a, b), std::max(a, b)}) == 0)
-                element_fail(e,
-                             "a line (physical tag " +
-                               std::to_string(e.physical) +
-                               ") that is not an edge of a quadrilateral");
-            }
-      }
-
-      // The nodes gmsh read: as many as the file declares, each once, with
-      // finite coordinates in the plane z = 0 (to 1e-10 of the largest
-      // coordinate: a mesh drawn in 3D would be silently flattened).
-      void
-      read_nodes(const GmshModel &model,
-                 const Declared  &declared,
-                 GmshMesh        &mesh)
-      {
-        const bool         geo         = declared.format == Format::geo;
-        const std::string &filename    = mesh.filename;
-        const auto        &node_tags   = model.node_tags;
-        const auto        &coordinates = model.coordinates;
-        // Every declared node must have been read: a shortfall (a node
-        // number given twice, say) would otherwise pass unnoticed. A script
-        // declares nothing.
-        if (!geo && node_tags.size() != declared.nodes)
-          fail(filename,
-               "the file declares " + std::to_string(declared.nodes) +
-                 " nodes but gmsh read " + std::to_string(node_tags.size()) +
-                 " (a node number given twice?)");
-        // Two passes: the size of the mesh (its largest coordinate) is
-        // known only after every node has been seen, and the plane test is
-        // relative to it.
-        double largest = 0;
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
-          {
-            const double x = coordinates[3 * i], y = coordinates[3 * i + 1],
-                         z = coordinates[3 * i + 2];
-            // 1e100 is no coordinate of a body either: a few products of
-            // such numbers overflow.
-            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) ||
-                std::abs(x) > 1e100 || std::abs(y) > 1e100 ||
-                std::abs(z) > 1e100)
-              fail(filename,
-                   "node " + std::to_string(node_tags[i]) +
-                     " has a coordinate that is not a finite number");
-            if (!mesh.nodes.emplace(node_tags[i], Point<dim>(x, y)).second)
-              fail(filename,
-                   "node " + std::to_string(node_tags[i]) +
-                     " is defined twice");
-            largest = std::max({largest, std::abs(x), std::abs(y)});
-          }
-        // Relative to the largest coordinate: a mesh in millimetres and
-        // one in metres are judged alike.
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
-          if (std::abs(coordinates[3 * i + 2]) > 1e-10 * largest)
-            fail(filename,
-                 "node " + std::to_string(node_tags[i]) +
-                   " has z = " + std::to_string(coordinates[3 * i + 2]) +
-                   ": the mesh must lie in the plane z = 0");
-      }
-
-      // The elements of one gmsh entity, which all take its physical tag:
-      // quadrilaterals and lines only, each element number once, every node
-      // they name defined.
-      void
-      add_elements(const GmshModel::Entity &entity,
-                   const long               physical,
-                   const std::string       &filename,
-                   std::set<std::size_t>   &element_tags,
-                   GmshMesh                &mesh)
-      {
-        for (unsigned int t = 0; t < entity.types.size(); ++t)
-          {
-            const int          type    = entity.types[t];
-            const auto        &tags    = entity.element_tags[t];
-            const auto        &nodes   = entity.element_nodes[t];
-            const unsigned int n_nodes = nodes_of_type(type);
-            if (n_nodes == 0)
-              fail(filename,
-                   "element " + std::to_string(tags.empty() ? 0 : tags[0]) +
-                     " is a " + name_of_type(type) + " (gmsh type " +
-                     std::to_string(type) +
-                     "): the bodies must be meshed with quadrilaterals "
-                     "(gmsh types 3, 10 and 16; in a .geo, 'Recombine "
-                     "Surface' makes them) and lines (1 and 8)");
-            // gmsh lists the nodes of all elements of a type in one array:
-            // its length must fit, or the elements below would be read
-            // past its end.
-            if (nodes.size() != n_nodes * tags.size())
-              fail(filename, "the answer of gmsh's reader is inconsistent");
-            for (std::size_t i = 0; i < tags.size(); ++i)
-              {
-                // Element tags number the cells (gmsh_mesh.cc takes them in
-                // tag order): each must be unique over the whole file,
-                // points included.
-                if (!element_tags.insert(tags[i]).second)
-                  fail(filename,
-                       "element " + std::to_string(tags[i]) +
-                         " is defined twice");
-                if (type == 15)
-                  continue; // points: not part of the rings
-                GmshElement element;
-                element.type     = type;
-                element.physical = physical;
-                element.tag      = tags[i];
-                element.entity   = entity.tag;
-                element.nodes.assign(nodes.begin() + i * n_nodes,
-                                     nodes.begin() + (i + 1) * n_nodes);
-                // An element whose node the file does not define would
-                // have no vertex for it in the triangulation.
-                for (const std::size_t node : element.nodes)
-                  if (mesh.nodes.count(node) == 0)
-                    fail(filename,
-                         "element " + std::to_string(element.tag) +
-                           " refers to node " + std::to_string(node) +
-                           ", which the file does not define");
-                // Any second-order element marks the whole mesh quadratic;
-                // check_cells() then refuses a Q1 cell beside it.
-                if (type == 8 || type == 10 || type == 16)
-                  mesh.quadratic = true;
-                mesh.elements.push_back(std::move(element));
-              }
-          }
-      }
-
-      // What gmsh read, checked as the rings need it; the elements of
-      // each entity take the entity's physical tag. The physical tags
-      // become the material ids of the cells (the bodies) and the boundary
-      // ids of the lines (supports, loads, contact surfaces).
-      GmshMesh
-      checked_mesh(const GmshModel   &model,
-                   const std::string &filename,
-                   const Declared    &declared)
-      {
-        const bool geo = declared.format == Format::geo;
-        GmshMesh   mesh;
-        mesh.filename = filename;
-        read_nodes(model, declared, mesh);
-
-        // A mesh file declared its elements: gmsh must have read them all.
-        // A script keeps only the entities in physical groups (if it has
-        // any), as gmsh does when it saves a mesh: the curves between the
-        // patches of a ring and the points of its geometry are not part of
-        // the mesh.
-        // The count includes the points, as the file's count does.
-        std::size_t n_elements   = 0;
-        bool        any_physical = false;
-        for (const auto &entity : model.entities)
-          {
-            any_physical = any_physical || !entity.physicals.empty();
-            for (const auto &tags : entity.element_tags)
-              n_elements += tags.size();
-          }
-        if (!geo && n_elements != declared.elements)
-          fail(filename,
-               "the file declares " + std::to_string(declared.elements) +
-                 " elements but gmsh read " + std::to_string(n_elements));
-
-        std::set<std::size_t> element_tags;
-        for (const auto &entity : model.entities)
-          {
-            // gmsh files a format 1 or 2.2 element's physical tag under its
-            // elementary entity: two tags on one entity cannot be told
-            // apart. Refused as ambiguous rather than one silently chosen.
-            // (The other way round, an element with tag 0 on an entity
-            // whose other elements carry a tag gets theirs.) Points may
-            // belong to several groups: they are dropped anyway.
-            if (entity.physicals.size() > 1 && entity.dim > 0)
-              fail(filename,
-                   "the elements of gmsh entity " + std::to_string(entity.tag) +
-                     " (dimension " + std::to_string(entity.dim) +
-                     ") carry physical tags " +
-                     std::to_string(entity.physicals[0]) + " and " +
-                     std::to_string(entity.physicals[1]) +
-                     ": each entity needs one");
-            // What gmsh would write to a .msh file from this script: only
-            // the entities in physical groups, if there are any.
-            if (geo && any_physical && entity.physicals.empty())
-              continue;
-            const long physical =
-              entity.physicals.empty() ? 0 : entity.physicals[0];
-            // deal.II keeps the largest ids for itself (its invalid ids are
-            // the largest values of the id types), and negative tags have
-            // no meaning: a bound well inside both.
-            if (physical < 0 || physical > 1000000000)
-              fail(filename,
-                   "gmsh entity " + std::to_string(entity.tag) +
-                     " (dimension " + std::to_string(entity.dim) +
-                     ") has physical tag " + std::to_string(physical) +
-                     " (physical tags are between 0 and 1e9)");
-            add_elements(entity, physical, filename, element_tags, mesh);
-          }
-        // The order of the file (gmsh gives them by entity and type): the
-        // cells are numbered in it, so the same mesh in any format gives
-        // the same triangulation.
-        std::sort(mesh.elements.begin(),
-                  mesh.elements.end(),
-                  [](const GmshElement &a, const GmshElement &b) {
-                    return a.tag < b.tag;
-                  });
-        check_cells(mesh);
-        for (const auto &[tag, xyz] : model.curves)
-          {
-            std::vector<Point<dim>> points;
-            for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
-              points.emplace_back(xyz[i], xyz[i + 1]);
-            mesh.curves.emplace_back(tag, std::move(points));
-          }
-        return mesh;
-      }
     } // namespace
 
     // @sect4{Reading a gmsh file}
@@ -804,7 +460,8 @@ namespace RingContact
       return has_extension(filename, ".geo");
     }
 
-    GmshMesh
+    template <int dim>
+    GmshMesh<dim>
     read_gmsh_file(const std::string &filename,
                    const GeoNumbers  &geo_numbers,
                    const unsigned int element_order)
@@ -823,10 +480,16 @@ namespace RingContact
       // (gmsh_process.cc).
       const double time_limit =
         geo ? 0 : 60 + static_cast<double>(text.size()) / (1 << 20);
-      return checked_mesh(
+      return checked_mesh<dim>(
         run_gmsh(filename, geo, geo_numbers, element_order, time_limit),
         filename,
-        declared);
+        DeclaredCounts{geo, declared.nodes, declared.elements});
     }
+
+    // The two dimensions of the program (issue 48).
+    template GmshMesh<2>
+    read_gmsh_file<2>(const std::string &, const GeoNumbers &, unsigned int);
+    template GmshMesh<3>
+    read_gmsh_file<3>(const std::string &, const GeoNumbers &, unsigned int);
   } // namespace Geometry
 } // namespace RingContact

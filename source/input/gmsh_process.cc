@@ -429,10 +429,11 @@ namespace RingContact
             };
             stage("reading it");
             gmsh::open(filename);
-            // A script is meshed here, in two dimensions, at the order the
-            // caller asks: the rings 2 as soon as one of them is quadratic,
-            // so that the mid-side nodes are gmsh's, on its circles; a
-            // general problem 1, since its cells take the vertices only.
+            // A script is meshed here, in the model's dimension (3 for a
+            // model of volumes, 2 otherwise), at the order the caller asks:
+            // the rings 2 as soon as one of them is quadratic, so that the
+            // mid-side nodes are gmsh's, on its circles; a general problem
+            // 1, since its cells take the vertices only.
             if (geo)
               {
                 double algorithm = 0;
@@ -440,7 +441,8 @@ namespace RingContact
                 const int a = static_cast<int>(algorithm);
                 stage("meshing it with Mesh.Algorithm = " + std::to_string(a) +
                       " (" + algorithm_name(a) + ")");
-                gmsh::model::mesh::generate(2);
+                gmsh::model::mesh::generate(
+                  std::max(2, gmsh::model::getDimension()));
                 stage("making its elements of order " +
                       std::to_string(element_order));
                 gmsh::model::mesh::setOrder(static_cast<int>(element_order));

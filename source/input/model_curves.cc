@@ -236,7 +236,8 @@ namespace RingContact
     // (GmshMesh::node_of_vertex). Manifold ids from 1 up are the curves; the
     // cells stay flat (see the top of the file).
     std::vector<ModelCurve>
-    attach_model_curves(Triangulation<dim> &triangulation, const GmshMesh &mesh)
+    attach_model_curves(Triangulation<dim>  &triangulation,
+                        const GmshMesh<dim> &mesh)
     {
       std::vector<ModelCurve>           curves;
       std::map<int, types::manifold_id> id_of_entity;

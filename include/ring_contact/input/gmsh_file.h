@@ -17,8 +17,6 @@
 
 #include <deal.II/base/point.h>
 
-#include <ring_contact/base/dimension.h>
-
 #include <map>
 #include <string>
 #include <utility>
@@ -33,20 +31,55 @@ namespace RingContact
     /// One element of a gmsh mesh.
     struct GmshElement
     {
-      int                      type;       ///< gmsh type: 1, 3, 8, 10 or 16
+      int
+        type; ///< gmsh type: 1, 3, 8, 10 or 16 (2d); 3, 5, 10, 12, 16, 17 (3d)
       long                     physical;   ///< physical tag (0 if none)
       std::vector<std::size_t> nodes;      ///< node tags, gmsh order
       std::size_t              tag;        ///< gmsh element tag
       int                      entity = 0; ///< its gmsh (elementary) entity
     };
 
+    /// Whether a gmsh element type is a cell in dimension dim: a
+    /// quadrilateral of 4, 9 or 8 nodes (types 3, 10, 16) in 2d, a
+    /// hexahedron of 8, 27 or 20 nodes (5, 12, 17) in 3d.
+    template <int dim>
+    bool
+    is_cell_type(const int type)
+    {
+      return dim == 2 ? type == 3 || type == 10 || type == 16 :
+                        type == 5 || type == 12 || type == 17;
+    }
+
+    /// Whether a gmsh element type is a boundary face in dimension dim: a
+    /// line of 2 or 3 nodes (types 1, 8) in 2d, a quadrilateral (3, 10,
+    /// 16) in 3d.
+    template <int dim>
+    bool
+    is_face_type(const int type)
+    {
+      return dim == 2 ? type == 1 || type == 8 : is_cell_type<2>(type);
+    }
+
+    /// The corners of an element of a cell or face type (gmsh lists them
+    /// first at every order): 2, 4 or 8.
+    inline unsigned int
+    corners_of_type(const int type)
+    {
+      return type == 1 || type == 8                ? 2 :
+             type == 5 || type == 12 || type == 17 ? 8 :
+                                                     4;
+    }
+
+    /// A gmsh mesh in dimension dim, checked.
+    template <int dim>
     struct GmshMesh
     {
       std::string                       filename;
       std::map<std::size_t, Point<dim>> nodes; ///< by node tag
-      /// Lines and quadrilaterals, by increasing tag (points are dropped).
+      /// Cells and boundary faces, by increasing tag (points, and in 3d
+      /// the lines of no physical group, are dropped).
       std::vector<GmshElement> elements;
-      bool                     quadratic = false; ///< types 8, 10 or 16
+      bool quadratic = false; ///< types 8, 10, 16 (and 12, 17 in 3d)
       /// A script's curves by gmsh tag, sampled evenly in their parameter
       /// (GmshModel::curves; model_curves.h makes them the geometry).
       std::vector<std::pair<int, std::vector<Point<dim>>>> curves;
@@ -58,13 +91,14 @@ namespace RingContact
     /// Numbers handed to a .geo script, as gmsh's `-setnumber name value`.
     using GeoNumbers = std::vector<std::pair<std::string, double>>;
 
-    /// Read and check a gmsh mesh file, or run a gmsh script (a file whose
-    /// name ends in ".geo": gmsh meshes it in 2d with elements of order
-    /// `element_order`, and only the entities in physical groups are kept
-    /// and the model scaled by its Mesh.ScalingFactor, as gmsh does when it
-    /// saves a mesh). Throws a one-line
-    /// std::runtime_error.
-    GmshMesh
+    /// Read and check a gmsh mesh file of dimension dim, or run a gmsh
+    /// script (a file whose name ends in ".geo": gmsh meshes it in the
+    /// model's dimension with elements of order `element_order`, and only
+    /// the entities in physical groups are kept and the model scaled by its
+    /// Mesh.ScalingFactor, as gmsh does when it saves a mesh). Throws a
+    /// one-line std::runtime_error.
+    template <int dim>
+    GmshMesh<dim>
     read_gmsh_file(const std::string &filename,
                    const GeoNumbers  &geo_numbers   = {},
                    unsigned int       element_order = 1);

@@ -7,7 +7,6 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_file.h>
 
 #include <cstddef>
@@ -21,31 +20,36 @@ namespace RingContact
   {
     /// Read a gmsh mesh (.msh formats 1, 2.2, 4.1) or mesh a gmsh script
     /// (.geo, with `geo_numbers` and elements of `element_order`) through
-    /// gmsh's library, checked (see gmsh_file.h), with its physical tags as
-    /// material and boundary ids; returns what gmsh read, for the audit of
+    /// gmsh's library, checked (see gmsh_file.h and gmsh_checks.h), with its
+    /// physical tags as material and boundary ids (in 3d: hexahedra, their
+    /// boundary quadrilaterals); returns what gmsh read, for the audit of
     /// the boundary tags. `on_circles`: the boundary lines lie on circles
     /// about the origin (a quadratic line's mid-side node must be on its
     /// circle); otherwise the geometry is straight-sided and a mid-side
     /// node must be at the middle of its line.
-    GmshMesh
+    template <int dim>
+    GmshMesh<dim>
     read_gmsh(Triangulation<dim> &triangulation,
               const std::string  &filename,
               const GeoNumbers   &geo_numbers   = {},
               unsigned int        element_order = 1,
               bool                on_circles    = true);
 
-    /// The audit of the boundary tags: every boundary face is one line of
-    /// the file with one physical tag. Throws a one-line error that names
-    /// the file, the gmsh entity and the element.
+    /// The audit of the boundary tags: every boundary face is one boundary
+    /// element of the file (a line in 2d, a quadrilateral in 3d) with one
+    /// physical tag. Throws a one-line error that names the file, the gmsh
+    /// entity and the element.
+    template <int dim>
     void
     check_boundary_tags(const Triangulation<dim> &triangulation,
-                        const GmshMesh           &mesh);
+                        const GmshMesh<dim>      &mesh);
 
     /// Throw a one-line error, before anything large is allocated, if a mesh
     /// of `n_coarse_cells` cells of displacement degree up to `degree`,
     /// refined `global_refinements` times, would need more than 80 % of the
     /// machine's physical memory (an estimate from the number of unknowns,
     /// including the direct solver's factors).
+    template <int dim>
     void
     check_size(const std::size_t  n_coarse_cells,
                const unsigned int degree,

@@ -44,7 +44,8 @@ namespace RingContact
     };
 
     /// Open `filename` with gmsh's library in a child process; if
-    /// `mesh_script`, mesh it in 2d (gmsh::model::mesh::generate) with
+    /// `mesh_script`, mesh it in its dimension, 2 or 3
+    /// (gmsh::model::mesh::generate) with
     /// elements of order `element_order`, the `geo_numbers` given as
     /// gmsh's `-setnumber`, and scale the nodes and curves by the script's
     /// Mesh.ScalingFactor. The child is killed after `time_limit_seconds`

@@ -84,8 +84,8 @@ namespace RingContact
     /// and the cells keep the flat default. Returns the curves found, by
     /// kind.
     std::vector<ModelCurve>
-    attach_model_curves(Triangulation<dim> &triangulation,
-                        const GmshMesh     &mesh);
+    attach_model_curves(Triangulation<dim>  &triangulation,
+                        const GmshMesh<dim> &mesh);
   } // namespace Geometry
 } // namespace RingContact
 

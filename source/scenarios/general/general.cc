@@ -158,7 +158,7 @@ namespace RingContact
         void
         create_mesh(Triangulation<dim> &triangulation) const override
         {
-          const Geometry::GmshMesh mesh =
+          const Geometry::GmshMesh<dim> mesh =
             Geometry::read_gmsh(triangulation,
                                 parameters.mesh.mesh_file,
                                 parameters.mesh.geo_numbers,
@@ -171,9 +171,9 @@ namespace RingContact
           unsigned int degree = 1;
           for (const auto &body : problem.bodies)
             degree = std::max(degree, body.degree);
-          Geometry::check_size(triangulation.n_active_cells(),
-                               degree,
-                               parameters.mesh.global_refinements);
+          Geometry::check_size<dim>(triangulation.n_active_cells(),
+                                    degree,
+                                    parameters.mesh.global_refinements);
           // A script's curves are the geometry (model_curves.h): refined
           // vertices go onto them, and a Mapping degree >= 2 curves the
           // cells and the contact surfaces. A mesh file has straight sides.

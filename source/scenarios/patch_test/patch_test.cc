@@ -276,10 +276,10 @@ namespace RingContact
       {
         // The size is checked before the blocks exist: the elements along each
         // block go up to 100000 and each refinement multiplies the cells by 4.
-        Geometry::check_size(2 *
-                               (blocks.elements_lower + blocks.elements_upper),
-                             std::max(blocks.degree_lower, blocks.degree_upper),
-                             parameters.mesh.global_refinements);
+        Geometry::check_size<dim>(
+          2 * (blocks.elements_lower + blocks.elements_upper),
+          std::max(blocks.degree_lower, blocks.degree_upper),
+          parameters.mesh.global_refinements);
         make_blocks(triangulation, blocks);
         // Refined without a manifold: the blocks' edges stay straight. The size
         // check above assumed the higher degree for both blocks, erring on the

@@ -63,7 +63,7 @@ namespace RingContact
     // range and documentation (parameter_checks.h); the defaults are
     // SSNP152's seed mesh and materials. The ranges refuse only the absurd:
     // fewer than three elements around make no ring, and the memory
-    // estimate (Geometry::check_size()) stops a mesh too large long before
+    // estimate (Geometry::check_size<dim>()) stops a mesh too large long before
     // the upper bounds.
     void
     RingParameters::add_parameters(ParameterHandler &prm)
@@ -517,7 +517,7 @@ namespace RingContact
               const std::size_t columns = rings.sector_elements > 0 ?
                                             rings.sector_elements :
                                             rings.elements_around;
-              Geometry::check_size(
+              Geometry::check_size<dim>(
                 std::size_t(columns) *
                   (rings.radial_elements_outer + rings.radial_elements_inner),
                 std::max(rings.degree_outer, rings.degree_inner),
@@ -532,17 +532,17 @@ namespace RingContact
               // the vertices; quadratic nodes on the circles are checked).
               const unsigned order =
                 rings.degree_outer == 1 && rings.degree_inner == 1 ? 1 : 2;
-              const Geometry::GmshMesh mesh =
+              const Geometry::GmshMesh<dim> mesh =
                 Geometry::read_gmsh(triangulation,
                                     parameters.mesh.mesh_file,
                                     parameters.mesh.geo_numbers,
                                     order);
               check_rings(triangulation, parameters);
               Geometry::check_boundary_tags(triangulation, mesh);
-              Geometry::check_size(triangulation.n_active_cells(),
-                                   std::max(rings.degree_outer,
-                                            rings.degree_inner),
-                                   parameters.mesh.global_refinements);
+              Geometry::check_size<dim>(triangulation.n_active_cells(),
+                                        std::max(rings.degree_outer,
+                                                 rings.degree_inner),
+                                        parameters.mesh.global_refinements);
             }
           // Every cell and face, the radial sides of a sector included: on
           // a radial line the polar manifold is straight anyway.
