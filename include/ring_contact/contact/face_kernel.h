@@ -60,18 +60,27 @@ namespace RingContact
         return nodes.size();
       }
 
-      /// The values and gradients of every basis function at xi.
+      /// The values and gradients of every basis function at xi, and
+      /// their second derivatives if `hessians` is given.
       void
       evaluate(const Point<2>            &xi,
                std::vector<double>       &values,
-               std::vector<Tensor<1, 2>> &gradients) const
+               std::vector<Tensor<1, 2>> &gradients,
+               std::vector<Tensor<2, 2>> *hessians = nullptr) const
       {
         values.resize(size());
         gradients.resize(size());
         std::vector<Tensor<2, 2>> none2;
         std::vector<Tensor<3, 2>> none3;
         std::vector<Tensor<4, 2>> none4;
-        polynomials.evaluate(xi, values, gradients, none2, none3, none4);
+        if (hessians != nullptr)
+          hessians->resize(size());
+        polynomials.evaluate(xi,
+                             values,
+                             gradients,
+                             hessians != nullptr ? *hessians : none2,
+                             none3,
+                             none4);
       }
 
       /// The nodes' reference positions, in the basis' order.
