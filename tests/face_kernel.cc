@@ -392,7 +392,7 @@ main()
     const Vector2<AD> p_ad     = {{AD(n, 39, p[0]), AD(n, 40, p[1])}};
     const auto        plane_ad = FaceClipping::auxiliary_plane(slave_ad);
     const Vector2<AD> xi_ad =
-      linearised_xi(basis, curved_ad, plane_ad, p_ad, found.xi);
+      linearised_xi(basis, curved_ad, plane_ad, p_ad, found.xi).xi;
     double       worst = 0, largest = 0;
     const double h = 1e-6;
     for (unsigned int k = 0; k < n; ++k)

@@ -223,10 +223,19 @@ namespace RingContact
     }
 
     /// The xi of find_on_face() in the numbers of the nodes, the plane and
-    /// the point: xi0 - J^-1 r(xi0), whose value is xi0 and whose
-    /// derivatives are those of the exact preimage.
+    /// the point, xi0 - J^-1 r(xi0), whose value is xi0 and whose
+    /// derivatives are those of the exact preimage; and the shape values
+    /// there, N(xi0) + dN(xi0) (xi - xi0), exact to first order in xi - xi0,
+    /// which is all the derivatives need. One evaluation of the basis.
     template <typename Number>
-    Vector2<Number>
+    struct LinearisedPreimage
+    {
+      Vector2<Number>     xi;
+      std::vector<Number> N;
+    };
+
+    template <typename Number>
+    LinearisedPreimage<Number>
     linearised_xi(const FaceBasis                    &basis,
                   const std::vector<Vector3<Number>> &nodes,
                   const Plane<Number>                &plane,
@@ -239,26 +248,14 @@ namespace RingContact
       Tensor<2, 2>          J;
       const Vector2<Number> r =
         plane_residual(evaluate(nodes, N, dN), plane, p, &J);
-      const Tensor<2, 2> Jinv = invert(J);
-      return {{xi0[0] - (Jinv[0][0] * r[0] + Jinv[0][1] * r[1]),
-               xi0[1] - (Jinv[1][0] * r[0] + Jinv[1][1] * r[1])}};
-    }
-
-    /// The shape values at the xi of linearised_xi() (value xi0): to first
-    /// order in xi - xi0, which is all the derivatives need.
-    template <typename Number>
-    std::vector<Number>
-    shape_values(const FaceBasis &basis, const Vector2<Number> &xi)
-    {
-      const Point<2>            xi0(FaceClipping::value(xi[0]),
-                         FaceClipping::value(xi[1]));
-      std::vector<double>       N;
-      std::vector<Tensor<1, 2>> dN;
-      basis.evaluate(xi0, N, dN);
-      std::vector<Number> result(N.size());
+      const Tensor<2, 2>         Jinv = invert(J);
+      LinearisedPreimage<Number> result;
+      result.xi = {{xi0[0] - (Jinv[0][0] * r[0] + Jinv[0][1] * r[1]),
+                    xi0[1] - (Jinv[1][0] * r[0] + Jinv[1][1] * r[1])}};
+      result.N.resize(N.size());
       for (unsigned int k = 0; k < N.size(); ++k)
-        result[k] =
-          N[k] + dN[k][0] * (xi[0] - xi0[0]) + dN[k][1] * (xi[1] - xi0[1]);
+        result.N[k] = N[k] + dN[k][0] * (result.xi[0] - xi0[0]) +
+                      dN[k][1] * (result.xi[1] - xi0[1]);
       return result;
     }
   } // namespace FaceKernel

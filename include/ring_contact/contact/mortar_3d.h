@@ -54,7 +54,8 @@ namespace RingContact
                   const std::vector<Vector3<Number>> &master,
                   const unsigned int                  points = 3)
     {
-      const FaceBasis basis(1);
+      // One basis for every call (its polynomials are built once).
+      static const FaceBasis basis(1);
       if (slave.size() != basis.size() || master.size() != basis.size())
         throw std::invalid_argument("weighted_gaps() takes bilinear faces");
       std::vector<Number> gaps(4, Number(0));
@@ -79,13 +80,11 @@ namespace RingContact
             if (!on_s.converged || !on_m.converged)
               throw std::runtime_error(
                 "a clip point was not found on its faces");
-            const Vector2<Number> xi_s =
-              FaceKernel::linearised_xi(basis, slave, cell.plane, p, on_s.xi);
-            const Vector2<Number> xi_m =
-              FaceKernel::linearised_xi(basis, master, cell.plane, p, on_m.xi);
-            const std::vector<Number> N = FaceKernel::shape_values(basis, xi_s);
+            const std::vector<Number> N =
+              FaceKernel::linearised_xi(basis, slave, cell.plane, p, on_s.xi).N;
             const std::vector<Number> Phi =
-              FaceKernel::shape_values(basis, xi_m);
+              FaceKernel::linearised_xi(basis, master, cell.plane, p, on_m.xi)
+                .N;
             // The gap along the plane's normal.
             Number gap = 0;
             for (unsigned int d = 0; d < 3; ++d)
