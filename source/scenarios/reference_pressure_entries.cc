@@ -90,7 +90,7 @@ namespace RingContact
   std::pair<std::string, std::string>
   PressureRamp::program_choice()
   {
-    return {"ramp",
+    return {program_name,
             "the pressure p(t) = p0 10^(t - 1.1) at t = k dt (the rings' A, B, "
             "H, the patch test)"};
   }

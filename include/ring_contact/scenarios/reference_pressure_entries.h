@@ -57,6 +57,9 @@ namespace RingContact
     unsigned int steps;
     double       time_step; ///< dt
 
+    /// The program's value of Load program/Program.
+    static constexpr const char *program_name = "ramp";
+
     /// The program's name and its sentence of Load program/Program.
     static std::pair<std::string, std::string>
     program_choice();

@@ -182,7 +182,7 @@ namespace RingContact
   std::vector<std::pair<std::string, std::string>>
   ProblemParameters::load_programs() const
   {
-    return {{"steps",
+    return {{steps_program,
              "the pseudo-times of 'Time points', or t = k / n for k = 1..n "
              "with n = 'Number of steps' (a general problem, whose "
              "expressions take t)"}};
@@ -254,7 +254,7 @@ namespace RingContact
             "Mesh source",
             "must be 'gmsh file' for Problem/Scenario = general (its bodies "
             "and boundaries are the physical groups of the mesh)");
-    require(parameters.load.program == "steps",
+    require(parameters.load.program == steps_program,
             "Load program",
             "Program",
             "must be 'steps' for Problem/Scenario = general (the ramp and "

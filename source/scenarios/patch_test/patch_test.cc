@@ -146,7 +146,7 @@ namespace RingContact
         // The blocks are driven by the load state's pressure p: the steps
         // program carries none (p = 0 there), and the rotation's turn means
         // nothing to blocks.
-        require(parameters.load.program == "ramp",
+        require(parameters.load.program == PressureRamp::program_name,
                 "Load program",
                 "Program",
                 "must be 'ramp' for Problem/Scenario = patch test (its "

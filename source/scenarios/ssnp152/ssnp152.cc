@@ -178,7 +178,7 @@ namespace RingContact
     RingParameters::load_programs() const
     {
       return {PressureRamp::program_choice(),
-              {"rotation",
+              {rotation_program,
                "the pressure fixed, a boundary turned through s elements (the "
                "rings' C-G)"}};
     }
@@ -186,7 +186,7 @@ namespace RingContact
     bool
     RingParameters::rotating(const Parameters &parameters)
     {
-      return parameters.load.program == "rotation";
+      return parameters.load.program == rotation_program;
     }
 
     LoadProgram
@@ -281,7 +281,8 @@ namespace RingContact
       check_geometry(parameters);
       // The rings' load states carry a pressure and a rotation, which only
       // the ramp and the rotation program give.
-      require(parameters.load.program == "ramp" || rotating(parameters),
+      require(parameters.load.program == PressureRamp::program_name ||
+                rotating(parameters),
               "Load program",
               "Program",
               "= steps takes Problem/Scenario = general (SSNP152 is loaded by "

@@ -213,6 +213,9 @@ namespace RingContact
       const std::vector<std::pair<unsigned int, unsigned int>> &pairs) const;
 
   public:
+    /// The steps program's value of Load program/Program.
+    static constexpr const char *steps_program = "steps";
+
     /// The steps program: the pseudo-times its expressions take.
     std::vector<std::pair<std::string, std::string>>
     load_programs() const override;

@@ -88,6 +88,9 @@ namespace RingContact
       unsigned int rotation_steps;
       double       rotation_elements; ///< final s
 
+      /// The rotation program's value of Load program/Program.
+      static constexpr const char *rotation_program = "rotation";
+
       /// Whether the file chose the rotation program (else the ramp).
       static bool
       rotating(const Parameters &parameters);
