@@ -94,46 +94,46 @@ namespace RingContact
   void
   Parameters::add_parameters(ParameterHandler &prm)
   {
-    {
-      // The choices, default and documentation of Problem/Scenario come from
-      // the registry (scenario.cc): a new scenario adds no line here.
-      ParameterChecks::Subsection s(prm, "Problem");
-      std::string names, default_name, documentation = "The problem posed.";
-      for (const auto &registered : registered_scenarios())
-        {
-          names += (names.empty() ? "" : "|") + registered.name;
-          if (registered.is_default)
+    // One walk over the registered scenarios gives the choices, default and
+    // documentation of Problem/Scenario (a new scenario adds no line here),
+    // and what the common entries offer that the scenarios define: the
+    // load programs (the default scenario's first, its first the default)
+    // and the default contact surfaces, the default scenario's.
+    std::string names, default_name, documentation = "The problem posed.";
+    std::vector<std::pair<std::string, std::string>> programs, others;
+    std::pair<unsigned int, unsigned int>            surfaces;
+    for (const auto &registered : registered_scenarios())
+      {
+        names += (names.empty() ? "" : "|") + registered.name;
+        documentation +=
+          " " + registered.name + ": " + registered.documentation;
+        const ScenarioParameters &entries =
+          *scenario_parameters.at(registered.name);
+        const auto programs_of = entries.load_programs();
+        if (registered.is_default)
+          {
             default_name = registered.name;
-          documentation +=
-            " " + registered.name + ": " + registered.documentation;
-        }
+            surfaces     = entries.default_contact_surfaces();
+            programs.insert(programs.begin(),
+                            programs_of.begin(),
+                            programs_of.end());
+          }
+        else
+          others.insert(others.end(), programs_of.begin(), programs_of.end());
+      }
+    for (const auto &program : others)
+      if (std::none_of(programs.begin(), programs.end(), [&](const auto &p) {
+            return p.first == program.first;
+          }))
+        programs.push_back(program);
+    {
+      ParameterChecks::Subsection s(prm, "Problem");
       s.add("Scenario",
             scenario,
             default_name,
             documentation,
             Patterns::Selection(names));
     }
-    // What the common entries offer that the scenarios define: the load
-    // programs (the default scenario's first is the default) and the
-    // default contact surfaces, the default scenario's.
-    std::vector<std::pair<std::string, std::string>> programs;
-    std::pair<unsigned int, unsigned int>            surfaces;
-    const auto add_programs = [&](const ScenarioParameters &entries) {
-      for (const auto &program : entries.load_programs())
-        if (std::none_of(programs.begin(), programs.end(), [&](const auto &p) {
-              return p.first == program.first;
-            }))
-          programs.push_back(program);
-    };
-    for (const auto &registered : registered_scenarios())
-      if (registered.is_default)
-        {
-          surfaces =
-            scenario_parameters.at(registered.name)->default_contact_surfaces();
-          add_programs(*scenario_parameters.at(registered.name));
-        }
-    for (const auto &registered : registered_scenarios())
-      add_programs(*scenario_parameters.at(registered.name));
     mesh.add_parameters(prm);
     refinement.add_parameters(prm);
     materials.add_parameters(prm);
