@@ -13,7 +13,6 @@
 // meshes it is slower than the direct solvers at every size, and needs somewhat
 // less memory (doc/validation.md, "The iterative solver"): it is the option for
 // a mesh whose factorization does not fit.
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -89,12 +88,17 @@ namespace RingContact
       , augmentation(1.0)
   {}
 
+  template <int dim>
   void
   BlockSolver::set_kinds(const std::vector<Kind>       &new_kinds,
                          const std::vector<Point<dim>> &new_positions)
   {
-    kinds     = new_kinds;
-    positions = new_positions;
+    kinds           = new_kinds;
+    space_dimension = dim;
+    positions.assign(new_positions.size(), Point<3>());
+    for (std::size_t i = 0; i < new_positions.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        positions[i][d] = new_positions[i][d];
     // A new numbering of the unknowns: the layout must be made again even
     // if the pattern's version number happens to be the one analysed.
     analysed = false;
@@ -488,24 +492,34 @@ namespace RingContact
     list.set("prec type", "MGV");
     list.set("ML output", 0);
     // The modes of the owned rows, one vector after the other (ML's
-    // layout): a translation is 1 on its component's unknowns, the rotation
-    // is (-y, x) at each unknown's node, in the reference configuration:
-    // the rotation about the deformed nodes differs from it by the
-    // displacement, and a near-null space need only be near.
-    const unsigned int     n_local = owned_in_A.n_elements();
-    constexpr unsigned int n_modes = 3;
+    // layout): a translation is 1 on its component's unknowns, a rotation
+    // about the axis e_a is e_a x X at each unknown's node X, in the
+    // reference configuration: the rotation about the deformed nodes
+    // differs from it by the displacement, and a near-null space need only
+    // be near. In 2d the rotation about z, (-y, x); in 3d the rotations
+    // about z, x and y.
+    const unsigned int n_local     = owned_in_A.n_elements();
+    const unsigned int n_rotations = space_dimension == 2 ? 1 : 3;
+    const unsigned int n_modes     = space_dimension + n_rotations;
     rigid_body_modes.assign(n_modes * n_local, 0.0);
     unsigned int local = 0;
     for (const auto i : rows)
       if (kinds[i] != multiplier)
         {
           rigid_body_modes[kinds[i] * n_local + local] = 1;
-          rigid_body_modes[2 * n_local + local] =
-            kinds[i] == displacement_x ? -positions[i][1] : positions[i][0];
+          for (unsigned int r = 0; r < n_rotations; ++r)
+            {
+              // The axis: z, then x, then y.
+              Tensor<1, 3> axis;
+              axis[(r + 2) % 3]         = 1;
+              const Tensor<1, 3> motion = cross_product_3d(axis, positions[i]);
+              rigid_body_modes[(space_dimension + r) * n_local + local] =
+                motion[kinds[i]];
+            }
           ++local;
         }
-    // Two unknowns per node, x and y, aggregated together.
-    list.set("PDE equations", 2);
+    // The dim unknowns of a node aggregated together.
+    list.set("PDE equations", static_cast<int>(space_dimension));
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", rigid_body_modes.data());
@@ -625,4 +639,11 @@ namespace RingContact
         dealii::ArrayView<double>(x.begin(), x.size()));
     return control.last_step();
   }
+  // The two dimensions of the program (issue 48).
+  template void
+  BlockSolver::set_kinds<2>(const std::vector<Kind> &,
+                            const std::vector<Point<2>> &);
+  template void
+  BlockSolver::set_kinds<3>(const std::vector<Kind> &,
+                            const std::vector<Point<3>> &);
 } // namespace RingContact

@@ -15,7 +15,6 @@
 // The assembly's hot path is add_cell(): a cell that needs neither the
 // constraints nor another process goes straight to the places of its
 // entries in the matrix's storage, found once per sparsity pattern.
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/linear_algebra/memory_estimate.h>
@@ -116,6 +115,7 @@ namespace RingContact
     block_solver.reset();
   }
 
+  template <int dim>
   void
   LinearSystem::set_kinds(const std::vector<BlockSolver::Kind> &kinds,
                           const std::vector<Point<dim>>        &positions)
@@ -561,4 +561,11 @@ namespace RingContact
                                 dealii::ArrayView<double>(squares, 2));
     return std::sqrt(squares[0]) / std::max(std::sqrt(squares[1]), 1e-300);
   }
+  // The two dimensions of the program (issue 48).
+  template void
+  LinearSystem::set_kinds<2>(const std::vector<BlockSolver::Kind> &,
+                             const std::vector<Point<2>> &);
+  template void
+  LinearSystem::set_kinds<3>(const std::vector<BlockSolver::Kind> &,
+                             const std::vector<Point<3>> &);
 } // namespace RingContact

@@ -31,8 +31,9 @@
 // the Schur complement that is sparse (a multiplier couples to its
 // neighbours only) and factorized directly (it has a few thousand unknowns
 // at most), and A_g^-1 approximated by one V-cycle of algebraic multigrid
-// (Trilinos ML, smoothed aggregation, the rigid-body modes of plane
-// elasticity as its near-null space: the translations and the rotation).
+// (Trilinos ML, smoothed aggregation, the rigid-body modes of elasticity as
+// its near-null space: in 2d the two translations and the rotation, in 3d
+// the three translations and the three rotations).
 // (B Gamma D, zero but for the friction's regularisation on sticking rows,
 // is left out of the preconditioner.) With exact inverses GMRES would
 // converge in two iterations. Measured (bench/scale, tests/iterative_solver;
@@ -69,8 +70,6 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/base/dimension.h>
-
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
@@ -96,7 +95,8 @@ namespace RingContact
     {
       displacement_x = 0,
       displacement_y = 1,
-      multiplier     = 2
+      displacement_z = 2,
+      multiplier     = 3
     };
 
     /// `tolerance`: GMRES stops when |K x - b| <= tolerance |b|.
@@ -104,7 +104,9 @@ namespace RingContact
 
     /// The kind of every unknown (whole, the same on every process), and
     /// the position of every displacement unknown's node (the multigrid's
-    /// rigid-body modes; the entries of the multipliers are not used).
+    /// rigid-body modes; the entries of the multipliers are not used), in
+    /// dimension 2 or 3.
+    template <int dim>
     void
     set_kinds(const std::vector<Kind>       &kinds,
               const std::vector<Point<dim>> &positions);
@@ -170,10 +172,13 @@ namespace RingContact
     /// gamma of the augmentation.
     const double augmentation;
     /// Gamma_k, whole.
-    Vector<double>          gamma_k;
-    std::vector<Kind>       kinds;
-    std::vector<Point<dim>> positions;
-    /// The rigid-body modes of the owned rows of A (translations, rotation),
+    Vector<double>    gamma_k;
+    std::vector<Kind> kinds;
+    /// The positions, in three coordinates whatever the dimension (z = 0
+    /// in 2d), and the dimension.
+    std::vector<Point<3>> positions;
+    unsigned int          space_dimension = 2;
+    /// The rigid-body modes of the owned rows of A (translations, rotations),
     /// one after the other: ML reads them while it builds the hierarchy.
     std::vector<double> rigid_body_modes;
     /// Each unknown's index within its block (displacement or multiplier).

@@ -29,7 +29,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/parameters.h>
 #include <ring_contact/linear_algebra/block_solver.h>
 #include <ring_contact/linear_algebra/direct_solver.h>
@@ -172,6 +171,7 @@ namespace RingContact
 
     /// The iterative solver's blocks: the kind of every unknown (whole).
     /// Ignored by the direct solvers.
+    template <int dim>
     void
     set_kinds(const std::vector<BlockSolver::Kind> &kinds,
               const std::vector<Point<dim>>        &positions);
