@@ -162,7 +162,7 @@ main()
             Vector3<double> p;
             for (unsigned int i = 0; i < 3; ++i)
               p[i] = O[i] + a * u[i] + b * v[i] + h * normal[i];
-            const Projection q = closest_point(basis, nodes, p);
+            const ClosestPoint q = closest_point(basis, nodes, p);
             // The normal equations in closed form.
             const double uu = FaceClipping::dot(u, u),
                          uv = FaceClipping::dot(u, v),
@@ -208,8 +208,9 @@ main()
             Vector3<double> p;
             for (unsigned int i = 0; i < 3; ++i)
               p[i] = foot[i] + g * nrm[i];
-            p                  = placed(p);
-            const Projection q = closest_point(quadratic, paraboloid_nodes, p);
+            p = placed(p);
+            const ClosestPoint q =
+              closest_point(quadratic, paraboloid_nodes, p);
             check(q.converged && q.inside, "the paraboloid's projection");
             worst_xi = std::max({worst_xi,
                                  std::abs(q.xi[0] - (x + 0.5)),
@@ -341,8 +342,8 @@ main()
         unsigned int within = 0;
         for (unsigned int f = 0; f < faces.size(); ++f)
           {
-            const Projection q     = closest_point(bilinear, faces[f].nodes, p);
-            bool             close = q.inside && q.distance < 0.1;
+            const ClosestPoint q = closest_point(bilinear, faces[f].nodes, p);
+            bool               close = q.inside && q.distance < 0.1;
             for (const Vector3<double> &x : faces[f].nodes)
               close = close || difference(x, p) < 0.1 / std::sqrt(3.);
             if (close)

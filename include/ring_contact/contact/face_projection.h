@@ -65,7 +65,7 @@ namespace RingContact
     /// The closest point of a face to p: its parameters, whether Newton's
     /// method converged, whether xi lies on the face ([0, 1]^2 to 1e-12),
     /// and the distance |x(xi) - p|.
-    struct Projection
+    struct ClosestPoint
     {
       Point<2> xi;
       bool     converged = false;
@@ -107,13 +107,13 @@ namespace RingContact
 
     /// The closest point of a face (nodes in double) to p, to `tolerance`
     /// in xi.
-    inline Projection
+    inline ClosestPoint
     closest_point(const FaceBasis                    &basis,
                   const std::vector<Vector3<double>> &nodes,
                   const Vector3<double>              &p,
                   const double                        tolerance = 1e-14)
     {
-      Projection result;
+      ClosestPoint result;
       result.xi = Point<2>(0.5, 0.5);
       for (unsigned int step = 0; step < 30 && !result.converged; ++step)
         {
