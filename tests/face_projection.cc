@@ -2,7 +2,8 @@
 // the face search (contact/face_projection.h), against closed forms:
 // - a parallelogram face: the closest point is the orthogonal projection,
 //   xi from the 2 x 2 normal equations, for points above, below and beside
-//   the face (xi outside [0, 1]^2 flagged);
+//   the face (xi outside [0, 1]^2 flagged), and one 1.5 faces beyond it
+//   left unconverged at the search's bound;
 // - a curved biquadratic face, the paraboloid z = (x^2 + y^2) / 2 which it
 //   holds exactly, turned and moved into space: a point at a distance g
 //   along the normal at a known foot x0 (g from -0.3 to 0.3, within the
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -189,6 +191,27 @@ main()
         << (worst < 1e-14 ? "< 1e-14" : "FAILS") << std::endl;
     std::cout << "parallelogram " << worst << std::endl;
     check(worst < 1e-14, "the parallelogram's closest points");
+    // Beyond half a face the search stops at its bound, unconverged (the
+    // point is a neighbour's); a face whose nodes do not fit the basis is
+    // refused.
+    Vector3<double> beyond;
+    for (unsigned int i = 0; i < 3; ++i)
+      beyond[i] = O[i] + 2.5 * u[i] + 0.5 * v[i] + 0.1 * normal[i];
+    const ClosestPoint far     = closest_point(basis, nodes, beyond);
+    bool               refused = false;
+    try
+      {
+        closest_point(FaceBasis(2), nodes, beyond);
+      }
+    catch (const std::invalid_argument &)
+      {
+        refused = true;
+      }
+    out << "a point 1.5 faces beyond the face: not converged "
+        << (!far.converged ? "yes" : "NO")
+        << "; nodes that do not fit the basis refused "
+        << (refused ? "yes" : "NO") << std::endl;
+    check(!far.converged && refused, "the projection's bounds");
   }
 
   // The paraboloid, biquadratic and exact, turned and moved.

@@ -8,9 +8,10 @@
 //   positive measure, the boundary faces of each physical surface counted;
 // - the same box meshed at order 2 and written by gmsh to .msh files of
 //   formats 2.2 and 4.1 (at order 1 and 2): the same cells;
-// - two boxes stacked with non-matching faces (the upper moved by 0.3 in
-//   x): two material ids, the faces of the contact surfaces on both sides,
-//   the touching nodes not merged;
+// - two boxes stacked with non-matching faces (the upper moved by 0.5 in
+//   x, meshed 3 x 2 on the lower's 4 x 2): two material ids, the faces of
+//   the contact surfaces on both sides, and the three nodes where the
+//   two meshes meet at the same position kept as two vertices each;
 // - gmsh's all-hexahedral subdivision of a tetrahedral mesh (the remedy the
 //   refusal names): hexahedra, the volume kept;
 // - refused, each with one line that names the file: tetrahedra and prisms
@@ -29,6 +30,7 @@
 
 #include <gmsh.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -56,10 +58,10 @@ namespace
   {
     const std::string  o = std::to_string(offset);
     std::ostringstream s;
-    // The upper of two boxes (offset > 0) is moved by 0.3 in x: gmsh's
-    // built-in kernel merges points that coincide, and two bodies must
-    // not share any.
-    const double x0 = offset > 0 ? 0.3 : 0;
+    // The upper of two boxes (offset > 0) is moved by 0.5 in x: gmsh's
+    // built-in kernel merges geometry points that coincide, and two bodies
+    // must not share any (their mesh nodes at x = 0.5 coincide).
+    const double x0 = offset > 0 ? 0.5 : 0;
     s << "Point(" << o << "+1) = {" << x0 << ", 0, " << z0 << "};\n"
       << "Point(" << o << "+2) = {" << x0 + 2 << ", 0, " << z0 << "};\n"
       << "Point(" << o << "+3) = {" << x0 + 2 << ", 1, " << z0 << "};\n"
@@ -238,9 +240,21 @@ main()
         << triangulation.n_vertices() << " vertices; the lower top "
         << faces.at(11) << " faces, the upper bottom " << faces.at(20)
         << ", volume " << GridTools::volume(triangulation) << std::endl;
+    // Positions held by two vertices: the lower top's nodes at x = 0.5
+    // and the upper bottom's at y = 0, 0.5, 1.
+    std::map<std::array<long, 3>, unsigned int> at;
+    for (const Point<3> &x : triangulation.get_vertices())
+      ++at[{{std::lround(x[0] * 1e9),
+             std::lround(x[1] * 1e9),
+             std::lround(x[2] * 1e9)}}];
+    unsigned int shared = 0;
+    for (const auto &[position, count] : at)
+      shared += count == 2 ? 1 : 0;
+    out << "stacked.geo: " << shared
+        << " positions held by a vertex of each body" << std::endl;
     check(cells.size() == 2 && cells[1] == 16 && cells[2] == 12 &&
-            triangulation.n_vertices() == 45 + 36,
-          "two bodies, their touching nodes not merged");
+            triangulation.n_vertices() == 45 + 36 && shared == 3,
+          "two bodies, their coinciding nodes not merged");
     check(faces.at(11) == 8 && faces.at(20) == 6,
           "the faces of both contact surfaces");
   }

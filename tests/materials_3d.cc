@@ -8,8 +8,8 @@
 //   that needs none;
 // - Hencky at any F = Q diag(s) R^T against the closed form P = Q diag(T_a
 //   / s_a) R^T, T_a = lambda ln(s1 s2 s3) + 2 mu ln s_a: stretches up to 2.5
-//   and down to 0.4 (two or three of them equal in some), turned by two
-//   rotations;
+//   and down to 0.4 (48 states: two of them equal, as (1, 1, s) and (1.2,
+//   1.2, s), or all three, (1.2, 1.2, 1.2)), turned by two rotations;
 // - the tangent of each law against central differences of P, at general
 //   states and, for Hencky, where eigenvalues of C coincide (a pure
 //   dilatation, a uniaxial stretch: two equal) or nearly so (1e-9 apart),
@@ -17,8 +17,8 @@
 // - the major symmetry of A (the assembly computes the upper triangle),
 //   objectivity P(Q F) = Q P(F), a symmetric Cauchy stress;
 // - at strains of 1e-9 every finite-strain law is linear elasticity to 10
-//   |H| relative to the stress (the round-off of a law that loses the digits
-//   of small strains is orders above).
+//   |H| relative to the stress (a law that loses the digits of small
+//   strains, F^T F - I formed in F, exceeds it).
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <ring_contact/materials/material.h>
@@ -298,8 +298,8 @@ main()
   const Tensor<2, 3> R     = rotation(unit(2, -1, 3), 1.3);
   double             worst = 0;
   unsigned int       n     = 0;
-  for (const double s1 : {0.4, 1.0, 1.7, 2.5})
-    for (const double s2 : {0.6, 1.0, 2.0})
+  for (const double s1 : {0.4, 1.0, 1.2, 2.5})
+    for (const double s2 : {0.6, 1.0, 1.2, 2.0})
       for (const double s3 : {0.8, 1.2, 1.5})
         {
           const Tensor<1, 3> s     = vector3(s1, s2, s3);

@@ -82,6 +82,20 @@ namespace RingContact
                      "the middle of its edge; " +
                      straight);
             }
+        // The centre node of a 9-node quadrilateral: at the mean of its
+        // corners (a bulged face would be flattened too).
+        if (dim == 3 && element.type == 10)
+          {
+            Point<dim> centre;
+            for (unsigned int c = 0; c < 4; ++c)
+              centre += 0.25 * mesh.nodes.at(n[c]);
+            const double size =
+              mesh.nodes.at(n[0]).distance(mesh.nodes.at(n[2]));
+            if (mesh.nodes.at(n[8]).distance(centre) > 1e-8 * size)
+              fail("the centre node of a boundary quadrilateral is not at the "
+                   "mean of its corners; " +
+                   straight);
+          }
       }
 
       // @sect4{The triangulation of a gmsh mesh}
@@ -158,11 +172,12 @@ namespace RingContact
         // by cell: invert_all_negative_measure_cells() would throw on a model
         // whose surfaces run in both senses, which is a valid model. Then the
         // edges are oriented alike from both of their cells, which deal.II
-        // requires and gmsh's numbering does not ensure.
-        GridTools::invert_cells_with_negative_measure(vertices, cells);
-        GridTools::consistently_order_cells(cells);
+        // requires and gmsh's numbering does not ensure (in 3d a mesh whose
+        // faces cannot be oriented alike is refused there).
         try
           {
+            GridTools::invert_cells_with_negative_measure(vertices, cells);
+            GridTools::consistently_order_cells(cells);
             triangulation.create_triangulation(vertices, cells, sides);
           }
         // deal.II's exception text spans several lines with its own source

@@ -468,15 +468,17 @@ namespace RingContact
 
 
   // Smoothed aggregation for an elliptic operator, as deal.II's
-  // PreconditionAMG sets it up, with the rigid-body modes of plane
-  // elasticity as near-null space: the two translations and the rotation
-  // (-y, x). Without the rotation the iterations grew with the mesh (thin
-  // rings bend). Built once per sparsity pattern; reinit() updates its
-  // operators for new values. deal.II's PreconditionAMG::AdditionalData
-  // takes only the constant modes (the translations, as flags per
-  // component), so the list is written for ML directly, with deal.II's
-  // settings for an elliptic operator (Chebyshev smoother, two sweeps, KLU
-  // on a coarse level of at most 2000 unknowns) and the rotation added.
+  // PreconditionAMG sets it up, with the rigid-body modes of elasticity
+  // as near-null space: in 2d the two translations and the rotation (-y,
+  // x), in 3d the three translations and the three rotations. Without the
+  // rotations the iterations grew with the mesh (thin rings bend; a 3d
+  // block, tests/block_solver_3d). Built once per sparsity pattern; reinit()
+  // updates its operators for new values. deal.II's
+  // PreconditionAMG::AdditionalData takes only the constant modes (the
+  // translations, as flags per component), so the list is written for ML
+  // directly, with deal.II's settings for an elliptic operator (Chebyshev
+  // smoother, two sweeps, KLU on a coarse level of at most 2000 unknowns) and
+  // the rotations added.
   void
   BlockSolver::build_multigrid(const IndexSet &rows)
   {

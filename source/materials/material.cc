@@ -170,13 +170,16 @@ namespace RingContact
     if (!(scale > 0))
       return scale; // zero, or not a number
     const double s11 = s[0][0] / scale, s22 = s[1][1] / scale,
-                 s12 = s[0][1] / scale, z = s33 / scale,
-                 shear = s12 * s12 + (s13 / scale) * (s13 / scale) +
-                         (s23 / scale) * (s23 / scale);
+                 s12 = s[0][1] / scale, z = s33 / scale;
+    // 3 s12^2 as it was written in 2d (its digits), the 3d shears added.
+    double shear = 3 * s12 * s12;
+    if constexpr (dim == 3)
+      shear +=
+        3 * ((s13 / scale) * (s13 / scale) + (s23 / scale) * (s23 / scale));
     return scale *
            std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - z) * (s22 - z) +
                             (z - s11) * (z - s11)) +
-                     3 * shear);
+                     shear);
   }
 
   // The two dimensions of the program (issue 48).

@@ -64,6 +64,9 @@ namespace RingContact
       double
       out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
+        // A 3d body: the zz component of its Cauchy stress.
+        if constexpr (dim == 3)
+          return this->cauchy_stress(H)[2][2];
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
         return c.lambda_3d * log_J2(H) /

@@ -90,6 +90,9 @@ namespace RingContact
       double
       out_of_plane_stress(const Tensor<2, dim> &H) const override
       {
+        // A 3d body: the zz component of its Cauchy stress.
+        if constexpr (dim == 3)
+          return this->cauchy_stress(H)[2][2];
         if (c.plane == PlaneAssumption::plane_stress)
           return 0;
         const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;

@@ -13,7 +13,8 @@
 // centre on any face whose curvature radius exceeds the distance (the
 // Hessian is then positive definite); where it is not, the step is Gauss-
 // Newton's, with a_a . a_b alone, which descends. xi is kept within half a
-// face of the face (a projection further out belongs to a neighbour).
+// face of the face (a projection further out belongs to a neighbour), and a
+// step held at that bound is not convergence.
 //
 // In AD numbers xi is one more Newton step with the exact Hessian taken in
 // the numbers of the nodes and the point, xi0 - H^-1 r(xi0): its value is
@@ -42,6 +43,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -113,6 +115,9 @@ namespace RingContact
                   const Vector3<double>              &p,
                   const double                        tolerance = 1e-14)
     {
+      if (nodes.size() != basis.size())
+        throw std::invalid_argument(
+          "closest_point(): a face's nodes do not match its basis");
       ClosestPoint result;
       result.xi = Point<2>(0.5, 0.5);
       for (unsigned int step = 0; step < 30 && !result.converged; ++step)
@@ -135,9 +140,18 @@ namespace RingContact
           Point<2>           delta(Hinv[0][0] * r[0] + Hinv[0][1] * r[1],
                          Hinv[1][0] * r[0] + Hinv[1][1] * r[1]);
           const Point<2>     previous = result.xi;
+          bool               clamped  = false;
           for (unsigned int a = 0; a < 2; ++a)
-            result.xi[a] = std::clamp(result.xi[a] - delta[a], -0.5, 1.5);
-          result.converged = result.xi.distance(previous) <= tolerance;
+            {
+              result.xi[a] = std::clamp(result.xi[a] - delta[a], -0.5, 1.5);
+              clamped      = clamped || result.xi[a] != previous[a] - delta[a];
+            }
+          // A step held at the bound of the search is no convergence: the
+          // closest point lies beyond half a face (a neighbour's).
+          result.converged =
+            !clamped && result.xi.distance(previous) <= tolerance;
+          if (clamped && result.xi.distance(previous) == 0)
+            break;
         }
       result.inside = result.xi[0] >= -1e-12 && result.xi[0] <= 1 + 1e-12 &&
                       result.xi[1] >= -1e-12 && result.xi[1] <= 1 + 1e-12;
@@ -186,6 +200,13 @@ namespace RingContact
       std::map<unsigned int, Tensor<1, 3>> normals;
       std::vector<double>                  N;
       std::vector<Tensor<1, 2>>            dN;
+      for (const SurfaceFace &face : faces)
+        {
+          if (face.nodes.size() != basis.size() ||
+              face.node_ids.size() != basis.size())
+            throw std::invalid_argument(
+              "averaged_normals(): a face's nodes do not match the basis");
+        }
       for (const SurfaceFace &face : faces)
         for (unsigned int k = 0; k < basis.size(); ++k)
           {
