@@ -44,24 +44,59 @@ namespace RingContact
       return {nodes[0], nodes[1], nodes[3], nodes[2]};
     }
 
-    /// The weighted gaps g_i of the slave face's four nodes against one
-    /// master face, with deal.II's Gauss rule for triangles of `points`
-    /// points per direction (QGaussSimplex; 3 integrates the bilinear
-    /// products of two planar faces exactly).
+    /// What a slave face and a master face contribute to the contact rows:
+    /// the weighted gaps g_i of the slave face's four nodes, and the nodal
+    /// forces of the contact pressure lambda = sum_k N_k lambda_k on the
+    /// two faces' nodes, as residual terms (three components per node):
+    ///   slave node a:   + int lambda N_a n dA,
+    ///   master node b:  - int lambda Phi_b n dA,
+    /// the derivatives of -sum_k lambda_k g_k with the normal and the
+    /// weights held (the mortar form of Popp et al.; the pressure pushes
+    /// the slave back along -n and the master along n, and the two forces
+    /// balance: sum_a N_a = sum_b Phi_b = 1).
     template <typename Number>
-    std::vector<Number>
-    weighted_gaps(const std::vector<Vector3<Number>> &slave,
-                  const std::vector<Vector3<Number>> &master,
-                  const unsigned int                  points = 3)
+    struct PairTerms
+    {
+      std::vector<Number> gaps;
+      std::vector<Number> slave_force, master_force;
+      /// The area of the clip polygon (zero where the faces do not
+      /// overlap).
+      double overlap = 0;
+    };
+
+    /// The terms of PairTerms for faces whose clip, points and normal are
+    /// those of `slave_geometry` and `master_geometry` and whose gaps are
+    /// those of the positions `slave` and `master`: the same nodes in
+    /// finite strain (the current configuration), the reference nodes and
+    /// the displaced ones in small strain (gaps linear in the
+    /// displacement). `lambda`: the slave nodes' pressures (may be empty
+    /// for the gaps alone). `rule` is the quadrature on each clip triangle
+    /// (on the reference triangle): where both faces are parallelograms,
+    /// the integrands are polynomials of the plane's coordinates, and
+    /// QGaussSimplex<2>(3) integrates the products of two bilinear
+    /// functions exactly; on other faces the preimages, and so the
+    /// integrands, are not polynomials and a rule of a higher degree
+    /// leaves a smaller error.
+    template <typename Number>
+    PairTerms<Number>
+    pair_terms(const std::vector<Vector3<Number>> &slave_geometry,
+               const std::vector<Vector3<Number>> &master_geometry,
+               const std::vector<Vector3<Number>> &slave,
+               const std::vector<Vector3<Number>> &master,
+               const std::vector<Number>          &lambda,
+               const Quadrature<2>                &rule)
     {
       // One basis for every call (its polynomials are built once).
       static const FaceBasis basis(1);
-      if (slave.size() != basis.size() || master.size() != basis.size())
-        throw std::invalid_argument("weighted_gaps() takes bilinear faces");
-      std::vector<Number> gaps(4, Number(0));
-      const auto          cell =
-        FaceClipping::clip_faces(corners(slave), corners(master));
-      const QGaussSimplex<2> rule(points);
+      for (const auto *face : {&slave_geometry, &master_geometry, &slave, &master})
+        if (face->size() != basis.size())
+          throw std::invalid_argument("pair_terms() takes bilinear faces");
+      PairTerms<Number> terms;
+      terms.gaps.assign(4, Number(0));
+      terms.slave_force.assign(lambda.empty() ? 0 : 12, Number(0));
+      terms.master_force.assign(lambda.empty() ? 0 : 12, Number(0));
+      const auto cell = FaceClipping::clip_faces(corners(slave_geometry),
+                                                 corners(master_geometry));
       for (const auto &t : cell.triangles)
         for (unsigned int q = 0; q < rule.size(); ++q)
           {
@@ -74,16 +109,19 @@ namespace RingContact
                      l[1] * (v[2][d] - v[0][d]);
             // Its preimages on both faces, with their derivatives.
             const FaceKernel::Preimage on_s =
-              FaceKernel::find_on_face(basis, slave, cell.plane, p);
+              FaceKernel::find_on_face(basis, slave_geometry, cell.plane, p);
             const FaceKernel::Preimage on_m =
-              FaceKernel::find_on_face(basis, master, cell.plane, p);
+              FaceKernel::find_on_face(basis, master_geometry, cell.plane, p);
             if (!on_s.converged || !on_m.converged)
               throw std::runtime_error(
                 "a clip point was not found on its faces");
             const std::vector<Number> N =
-              FaceKernel::linearised_xi(basis, slave, cell.plane, p, on_s.xi).N;
+              FaceKernel::linearised_xi(
+                basis, slave_geometry, cell.plane, p, on_s.xi)
+                .N;
             const std::vector<Number> Phi =
-              FaceKernel::linearised_xi(basis, master, cell.plane, p, on_m.xi)
+              FaceKernel::linearised_xi(
+                basis, master_geometry, cell.plane, p, on_m.xi)
                 .N;
             // The gap along the plane's normal.
             Number gap = 0;
@@ -101,10 +139,37 @@ namespace RingContact
             // plane: the slave face's own where the face is planar (a
             // warped face's differs to second order in its warp).
             const Number w = rule.weight(q) * 2. * t.area;
+            terms.overlap += FaceClipping::value(w);
             for (unsigned int i = 0; i < 4; ++i)
-              gaps[i] += w * N[i] * gap;
+              terms.gaps[i] += w * N[i] * gap;
+            if (lambda.empty())
+              continue;
+            Number pressure = 0;
+            for (unsigned int k = 0; k < 4; ++k)
+              pressure += N[k] * lambda[k];
+            for (unsigned int k = 0; k < 4; ++k)
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const Number f = w * pressure * cell.plane.normal[d];
+                  terms.slave_force[3 * k + d] += f * N[k];
+                  terms.master_force[3 * k + d] -= f * Phi[k];
+                }
           }
-      return gaps;
+      return terms;
+    }
+
+    /// The weighted gaps g_i of the slave face's four nodes against one
+    /// master face, in the current configuration (pair_terms()), with
+    /// QGaussSimplex<2>(points).
+    template <typename Number>
+    std::vector<Number>
+    weighted_gaps(const std::vector<Vector3<Number>> &slave,
+                  const std::vector<Vector3<Number>> &master,
+                  const unsigned int                  points = 3)
+    {
+      return pair_terms(
+               slave, master, slave, master, {}, QGaussSimplex<2>(points))
+        .gaps;
     }
   } // namespace Mortar3D
 } // namespace RingContact

@@ -1,0 +1,169 @@
+// @sect3{The contact of two surfaces in three dimensions (segment-based)}
+//
+// The 3D counterpart of ContactInterface for the segment-based scheme: a
+// slave surface of bilinear faces that carries the contact pressure (the
+// Lagrange multiplier at its vertices, in the same finite-element system
+// as the displacement), a master surface of bilinear faces, and the rows
+// of the Newton system they make. Weak form, as in 2D (contact_interface.h)
+// with the faces' clip cells in place of the segments' cuts
+// (mortar_3d.h):
+//   displacement rows:  the forces of PairTerms, + int lambda N_a n dA on
+//                       the slave, - int lambda Phi_b n dA on the master;
+//   multiplier row k:   the weighted gap g~_k = sum over the pairs of g_k;
+// and per multiplier node k the complementarity function
+//   C_k = w_k lambda_k - max(0, w_k lambda_k - c g~_k) = 0,
+// w_k = int N_k dA over the reference slave surface: C_k = c g~_k on the
+// active set, w_k lambda_k off it (the primal-dual active-set method, a
+// semi-smooth Newton method). n is the slave face's normal, towards the
+// master; lambda > 0 is a compression.
+//
+// In finite strain the clip, the points and the normal follow the current
+// configuration and every row is differentiated in AD numbers through
+// them (the exact tangent); in small strain they are the reference
+// configuration's and the gaps are linear in the displacement.
+//
+// The pairs are the slave and master faces whose boxes meet (FaceSearch)
+// and whose projections on the slave face's plane overlap. The faces are
+// bilinear (Q1 hexahedra): quadratic faces, split into four bilinear
+// sub-faces, are the next step, and a Q2 surface is refused here. This is
+// the contact of one pair of surfaces; ContactProblem<3> is to hold one per
+// pair, as the 2D program holds its ContactInterface.
+#ifndef ring_contact_contact_face_contact_h
+#define ring_contact_contact_face_contact_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ring_contact/contact/face_clipping.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace RingContact
+{
+  using namespace dealii;
+
+  class FaceContact
+  {
+  public:
+    /// A face of a contact surface: its four vertices in the lexicographic
+    /// order of the face basis, oriented so that a1 x a2 points out of its
+    /// body; their displacement unknowns (x, y, z) and reference
+    /// positions, and on the slave surface the index of each vertex among
+    /// the multiplier nodes.
+    struct Face
+    {
+      std::array<std::array<types::global_dof_index, 3>, 4> u_dofs;
+      std::vector<FaceClipping::Vector3<double>>            reference;
+      std::array<unsigned int, 4>                           node;
+    };
+
+    /// The surfaces are the faces of `slave` and `master` boundary tags
+    /// (the unknowns' first three components are the displacement, the
+    /// fourth the multiplier on the slave body's cells). `c` is the
+    /// complementarity constant (a stiffness per length, E / h).
+    FaceContact(const DoFHandler<3>     &dof_handler,
+                const types::boundary_id slave,
+                const types::boundary_id master,
+                const double             c,
+                const bool               geometrically_linear);
+
+    /// Pair the faces at `solution` (the reference configuration's in
+    /// small strain), evaluate the weighted gaps and choose the active
+    /// set from them and the multipliers. Returns the number of nodes
+    /// whose state changed.
+    unsigned int
+    update(const Vector<double> &solution);
+
+    /// The couplings of every candidate pair of the last update() (each
+    /// pair's 28 unknowns with each other).
+    void
+    add_couplings(DynamicSparsityPattern &pattern) const;
+
+    /// Add the contact rows at `solution` to `matrix` (their derivatives)
+    /// and to `rhs` (minus their values), through `constraints`.
+    void
+    assemble(const Vector<double>            &solution,
+             const AffineConstraints<double> &constraints,
+             SparseMatrix<double>            &matrix,
+             Vector<double>                  &rhs) const;
+
+    /// @name The multiplier nodes (the slave surface's vertices)
+    /// @{
+    unsigned int
+    n_nodes() const
+    {
+      return multiplier_dofs.size();
+    }
+    types::global_dof_index
+    multiplier_dof(const unsigned int k) const
+    {
+      return multiplier_dofs[k];
+    }
+    /// w_k = int N_k dA over the reference slave surface.
+    double
+    weight(const unsigned int k) const
+    {
+      return weights[k];
+    }
+    /// g~_k at the last update().
+    double
+    weighted_gap(const unsigned int k) const
+    {
+      return gaps[k];
+    }
+    bool
+    active(const unsigned int k) const
+    {
+      return is_active[k];
+    }
+    /// @}
+
+    /// The faces of the surfaces, and the overlapping pairs of the last
+    /// update() (slave face, master face).
+    const std::vector<Face> &
+    slave_faces() const
+    {
+      return slave;
+    }
+    const std::vector<Face> &
+    master_faces() const
+    {
+      return master;
+    }
+    const std::vector<std::pair<unsigned int, unsigned int>> &
+    pairs() const
+    {
+      return overlapping;
+    }
+
+  private:
+    /// A face's node positions at `solution` (the reference + u).
+    std::vector<FaceClipping::Vector3<double>>
+    current(const Face &face, const Vector<double> &solution) const;
+
+    /// The pair's rows (residual and derivatives) at `solution`.
+    void
+    assemble_pair(const Face                      &s,
+                  const Face                      &m,
+                  const Vector<double>            &solution,
+                  const AffineConstraints<double> &constraints,
+                  SparseMatrix<double>            &matrix,
+                  Vector<double>                  &rhs) const;
+
+    std::vector<Face>                                  slave, master;
+    std::vector<types::global_dof_index>               multiplier_dofs;
+    std::vector<double>                                weights, gaps;
+    std::vector<bool>                                  is_active;
+    const double                                       c;
+    const bool                                         geometrically_linear;
+    std::vector<std::pair<unsigned int, unsigned int>> candidates;
+    std::vector<std::pair<unsigned int, unsigned int>> overlapping;
+  };
+} // namespace RingContact
+
+#endif

@@ -1,0 +1,376 @@
+// The contact of two surfaces in 3D (face_contact.h): the surfaces from
+// the mesh, the pairs and the active set, and the rows of the Newton
+// system in AD numbers.
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <ring_contact/contact/face_contact.h>
+#include <ring_contact/contact/face_projection.h>
+#include <ring_contact/contact/mortar_3d.h>
+
+#include <Sacado.hpp>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace RingContact
+{
+  namespace
+  {
+    using FaceClipping::Vector3;
+    using AD = Sacado::Fad::DFad<double>;
+
+    /// The bilinear basis of every face (its polynomials built once).
+    const FaceKernel::FaceBasis &
+    bilinear()
+    {
+      static const FaceKernel::FaceBasis basis(1);
+      return basis;
+    }
+
+    /// The faces of boundary tag `tag`, oriented out of their cells. On
+    /// the slave surface (`multipliers` given) each vertex's multiplier
+    /// unknown is numbered as a node, in the order first met.
+    std::vector<FaceContact::Face>
+    surface_faces(const DoFHandler<3>                  &dof_handler,
+                  const types::boundary_id              tag,
+                  std::vector<types::global_dof_index> *multipliers)
+    {
+      const std::string surface = multipliers ? "slave" : "master";
+      std::vector<FaceContact::Face>                    faces;
+      std::map<types::global_dof_index, unsigned int>   node_of;
+      std::vector<types::global_dof_index>              local;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary() ||
+                cell->face(f)->boundary_id() != tag)
+              continue;
+            const FiniteElement<3> &fe = cell->get_fe();
+            if (fe.n_components() < 3 || fe.degree != 1)
+              throw std::runtime_error(
+                "the 3D " + surface + " surface (boundary tag " +
+                std::to_string(tag) +
+                ") lies on cells that are not first-order (Q1) hexahedra: "
+                "the 3D segment-based contact takes bilinear faces");
+            if (multipliers != nullptr &&
+                (fe.n_components() != 4 ||
+                 fe.base_element(fe.component_to_base_index(3).first)
+                     .n_dofs_per_vertex() != 1))
+              throw std::runtime_error(
+                "the cells of the 3D slave surface (boundary tag " +
+                std::to_string(tag) + ") carry no contact pressure");
+            local.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(local);
+            FaceContact::Face face;
+            for (unsigned int v = 0; v < 4; ++v)
+              {
+                const unsigned int cv =
+                  GeometryInfo<3>::face_to_cell_vertices(f, v);
+                for (unsigned int d = 0; d < 3; ++d)
+                  face.u_dofs[v][d] = local[fe.component_to_system_index(d, cv)];
+                const Point<3> &x = cell->vertex(cv);
+                face.reference.push_back({{x[0], x[1], x[2]}});
+                face.node[v] = numbers::invalid_unsigned_int;
+                if (multipliers == nullptr)
+                  continue;
+                const auto dof = local[fe.component_to_system_index(3, cv)];
+                const auto [at, added] =
+                  node_of.emplace(dof, multipliers->size());
+                if (added)
+                  multipliers->push_back(dof);
+                face.node[v] = at->second;
+              }
+            // a1 x a2 at the centre, against the direction out of the cell:
+            // a face seen from inside is turned over by exchanging its
+            // nodes 1 and 2 (the basis' xi_1 and xi_2).
+            const auto  &x = face.reference;
+            Tensor<1, 3> a1, a2, out;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                a1[d]  = x[1][d] - x[0][d] + x[3][d] - x[2][d];
+                a2[d]  = x[2][d] - x[0][d] + x[3][d] - x[1][d];
+                out[d] = (x[0][d] + x[1][d] + x[2][d] + x[3][d]) / 4 -
+                         cell->center()[d];
+              }
+            if (cross_product_3d(a1, a2) * out < 0)
+              {
+                std::swap(face.u_dofs[1], face.u_dofs[2]);
+                std::swap(face.reference[1], face.reference[2]);
+                std::swap(face.node[1], face.node[2]);
+              }
+            faces.push_back(face);
+          }
+      if (faces.empty())
+        throw std::runtime_error("the 3D " + surface +
+                                 " surface (boundary tag " +
+                                 std::to_string(tag) + ") has no faces");
+      return faces;
+    }
+
+    /// Whether a face is a parallelogram (x0 - x1 - x2 + x3 = 0 relative to
+    /// its size): its map from the plane is then affine.
+    bool
+    parallelogram(const std::vector<Vector3<double>> &x)
+    {
+      double warp = 0, size = 0;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          warp += std::pow(x[0][d] - x[1][d] - x[2][d] + x[3][d], 2);
+          size += std::pow(x[3][d] - x[0][d], 2);
+        }
+      return warp <= 1e-24 * size;
+    }
+
+    /// The rule on the clip triangles of a pair of faces (pair_terms()):
+    /// between parallelograms the integrands are polynomials and the
+    /// 7-point rule (degree 5) integrates them exactly; on other faces they
+    /// are rational functions of the plane's coordinates, and the 28-point
+    /// rule (degree 11) leaves an error at round-off on moderately
+    /// distorted faces (doc/validation.md).
+    const Quadrature<2> &
+    clip_rule(const std::vector<Vector3<double>> &slave,
+              const std::vector<Vector3<double>> &master)
+    {
+      static const QGaussSimplex<2>            exact(3);
+      static const QWitherdenVincentSimplex<2> high(6);
+      if (parallelogram(slave) && parallelogram(master))
+        return exact;
+      return high;
+    }
+
+    /// The nodes of a face in AD numbers of value x and derivative 1 in
+    /// unknown `first` + 3 k + d (or none, `first` invalid).
+    std::vector<Vector3<AD>>
+    ad_nodes(const std::vector<Vector3<double>> &x,
+             const unsigned int                  n_unknowns,
+             const unsigned int                  first)
+    {
+      std::vector<Vector3<AD>> nodes(x.size());
+      for (unsigned int k = 0; k < x.size(); ++k)
+        for (unsigned int d = 0; d < 3; ++d)
+          nodes[k][d] = first == numbers::invalid_unsigned_int ?
+                          AD(x[k][d]) :
+                          AD(n_unknowns, first + 3 * k + d, x[k][d]);
+      return nodes;
+    }
+  } // namespace
+
+
+  FaceContact::FaceContact(const DoFHandler<3>     &dof_handler,
+                           const types::boundary_id slave_tag,
+                           const types::boundary_id master_tag,
+                           const double             c,
+                           const bool               geometrically_linear)
+      : c(c)
+      , geometrically_linear(geometrically_linear)
+  {
+    if (!(c > 0))
+      throw std::invalid_argument("the complementarity constant must be > 0");
+    slave  = surface_faces(dof_handler, slave_tag, &multiplier_dofs);
+    master = surface_faces(dof_handler, master_tag, nullptr);
+    // w_k by the 2 x 2 Gauss rule on each reference slave face (exact for
+    // a parallelogram's bilinear N_k |a1 x a2|).
+    weights.assign(n_nodes(), 0.);
+    const QGauss<2>           rule(2);
+    std::vector<double>       N;
+    std::vector<Tensor<1, 2>> dN;
+    for (const Face &face : slave)
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          bilinear().evaluate(rule.point(q), N, dN);
+          const auto p = FaceKernel::evaluate(face.reference, N, dN);
+          const auto n = FaceClipping::cross(p.a1, p.a2);
+          const double dA =
+            std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
+          for (unsigned int k = 0; k < 4; ++k)
+            weights[face.node[k]] += N[k] * dA;
+        }
+    gaps.assign(n_nodes(), 0.);
+    is_active.assign(n_nodes(), false);
+  }
+
+
+  std::vector<Vector3<double>>
+  FaceContact::current(const Face &face, const Vector<double> &solution) const
+  {
+    std::vector<Vector3<double>> x = face.reference;
+    for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int d = 0; d < 3; ++d)
+        x[k][d] += solution(face.u_dofs[k][d]);
+    return x;
+  }
+
+
+  // @sect4{The pairs and the active set}
+  //
+  // The candidates of a slave face are the master faces whose boxes meet
+  // the cube about its centre of half-width its diameter: the surfaces are
+  // paired up to a face's size apart. A candidate whose projection on the
+  // slave face's plane does not overlap it adds nothing.
+  unsigned int
+  FaceContact::update(const Vector<double> &solution)
+  {
+    const auto geometry = [&](const Face &face) {
+      return geometrically_linear ? face.reference : current(face, solution);
+    };
+    std::vector<FaceKernel::SurfaceFace> placed;
+    for (const Face &face : master)
+      placed.push_back({{}, geometry(face)});
+    const FaceKernel::FaceSearch search(placed, 0.);
+
+    candidates.clear();
+    overlapping.clear();
+    std::fill(gaps.begin(), gaps.end(), 0.);
+    std::vector<bool> covered(n_nodes(), false);
+    for (unsigned int s = 0; s < slave.size(); ++s)
+      {
+        const auto xs = geometry(slave[s]);
+        Point<3>   centre;
+        for (const auto &x : xs)
+          centre += Point<3>(x[0], x[1], x[2]) / 4.;
+        double radius = 0;
+        for (const auto &x : xs)
+          radius = std::max(radius,
+                            2 * centre.distance(Point<3>(x[0], x[1], x[2])));
+        for (const unsigned int m : search.near(centre, radius))
+          {
+            candidates.emplace_back(s, m);
+            const auto terms =
+              Mortar3D::pair_terms<double>(xs,
+                                           placed[m].nodes,
+                                           current(slave[s], solution),
+                                           current(master[m], solution),
+                                           {},
+                                           clip_rule(xs, placed[m].nodes));
+            if (!(terms.overlap > 0))
+              continue;
+            overlapping.emplace_back(s, m);
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                gaps[slave[s].node[k]] += terms.gaps[k];
+                covered[slave[s].node[k]] = true;
+              }
+          }
+      }
+    // A node that no master face covers stays open: its gap row would be
+    // empty.
+    unsigned int changes = 0;
+    for (unsigned int k = 0; k < n_nodes(); ++k)
+      {
+        const bool now = covered[k] &&
+                         weights[k] * solution(multiplier_dofs[k]) -
+                             c * gaps[k] >
+                           0;
+        changes += (now != is_active[k]);
+        is_active[k] = now;
+      }
+    return changes;
+  }
+
+
+  void
+  FaceContact::add_couplings(DynamicSparsityPattern &pattern) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &[s, m] : candidates)
+      {
+        dofs.clear();
+        for (const Face *face : {&slave[s], &master[m]})
+          for (const auto &node : face->u_dofs)
+            dofs.insert(dofs.end(), node.begin(), node.end());
+        for (const unsigned int k : slave[s].node)
+          dofs.push_back(multiplier_dofs[k]);
+        for (const auto i : dofs)
+          pattern.add_entries(i, dofs.begin(), dofs.end());
+      }
+    for (const auto dof : multiplier_dofs)
+      pattern.add(dof, dof);
+  }
+
+
+  // @sect4{The rows of the Newton system}
+  void
+  FaceContact::assemble(const Vector<double>            &solution,
+                        const AffineConstraints<double> &constraints,
+                        SparseMatrix<double>            &matrix,
+                        Vector<double>                  &rhs) const
+  {
+    for (const auto &[s, m] : overlapping)
+      assemble_pair(slave[s], master[m], solution, constraints, matrix, rhs);
+    // The open nodes' rows w_k lambda_k.
+    FullMatrix<double> w(1, 1);
+    Vector<double>     r(1);
+    for (unsigned int k = 0; k < n_nodes(); ++k)
+      if (!is_active[k])
+        {
+          w(0, 0) = weights[k];
+          r(0)    = -weights[k] * solution(multiplier_dofs[k]);
+          constraints.distribute_local_to_global(
+            w, r, {multiplier_dofs[k]}, matrix, rhs);
+        }
+  }
+
+
+  // One pair's rows in AD numbers of its 28 unknowns: the slave face's 12
+  // displacements, the master face's 12 and the slave face's 4 pressures.
+  void
+  FaceContact::assemble_pair(const Face                      &s,
+                             const Face                      &m,
+                             const Vector<double>            &solution,
+                             const AffineConstraints<double> &constraints,
+                             SparseMatrix<double>            &matrix,
+                             Vector<double>                  &rhs) const
+  {
+    constexpr unsigned int               n = 28;
+    std::vector<types::global_dof_index> dofs;
+    for (const Face *face : {&s, &m})
+      for (const auto &node : face->u_dofs)
+        dofs.insert(dofs.end(), node.begin(), node.end());
+    std::vector<AD> lambda;
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        dofs.push_back(multiplier_dofs[s.node[k]]);
+        lambda.emplace_back(n, 24 + k, solution(dofs.back()));
+      }
+    const auto xs = ad_nodes(current(s, solution), n, 0);
+    const auto xm = ad_nodes(current(m, solution), n, 12);
+    const auto none = numbers::invalid_unsigned_int;
+    const auto terms =
+      geometrically_linear ?
+        Mortar3D::pair_terms(ad_nodes(s.reference, n, none),
+                             ad_nodes(m.reference, n, none),
+                             xs,
+                             xm,
+                             lambda,
+                             clip_rule(s.reference, m.reference)) :
+        Mortar3D::pair_terms(xs,
+                             xm,
+                             xs,
+                             xm,
+                             lambda,
+                             clip_rule(current(s, solution),
+                                       current(m, solution)));
+
+    std::vector<AD> residual(terms.slave_force);
+    residual.insert(residual.end(),
+                    terms.master_force.begin(),
+                    terms.master_force.end());
+    for (unsigned int k = 0; k < 4; ++k)
+      residual.push_back(is_active[s.node[k]] ? c * terms.gaps[k] : AD(0.));
+    FullMatrix<double> local_matrix(n, n);
+    Vector<double>     local_rhs(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        local_rhs(i) = -residual[i].val();
+        if (residual[i].size() > 0)
+          for (unsigned int j = 0; j < n; ++j)
+            local_matrix(i, j) = residual[i].dx(j);
+      }
+    constraints.distribute_local_to_global(
+      local_matrix, local_rhs, dofs, matrix, rhs);
+  }
+} // namespace RingContact

@@ -1,0 +1,419 @@
+// The contact patch test in 3D on non-matching hexahedra, segment-based
+// (contact/face_contact.h), and the exactness of its tangent:
+// - two blocks of different materials, [0,1]^2 x [-1,0] (E1, nu1, 3 x 3 x 2
+//   hexahedra, the master) under [0,1]^2 x [g0, 1 + g0] (E2, nu2, 5 x 4 x 2,
+//   the slave), each mesh's inner columns moved in the plane by a
+//   different smooth field so that no slave face matches a master face;
+//   the bottom held in z, the symmetry planes x = 0 and y = 0, the top
+//   moved down by d. The gap g0 closes and the blocks are in uniaxial
+//   stress with the pressure p = (d - g0) / (h1 / E1 + h2 / E2), the
+//   displacement linear in each block. Q1 represents it exactly, and the
+//   clipped integration transfers the uniform pressure whole between
+//   non-matching faces (exactly between parallelograms, to its rule's
+//   round-off on these distorted faces), so every multiplier is p and
+//   every displacement the closed form's, to 1e-8;
+// - in finite strain (clip, points and normal of the current
+//   configuration), the assembled contact rows' derivatives at a generic
+//   state (displaced, with open and closed nodes) equal central
+//   differences of the assembled residual;
+// - a second-order surface, and a slave body without the pressure field,
+//   are refused with their messages.
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ring_contact/contact/face_contact.h>
+
+#include "tests.h"
+
+#include <cmath>
+#include <iomanip>
+#include <map>
+
+using namespace dealii;
+using RingContact::FaceContact;
+using RingContactTests::check;
+
+namespace
+{
+  constexpr double g0 = 1e-3, d = 0.01;
+  // The bodies by material id: 0 the master (lower), 1 the slave.
+  constexpr double E[2] = {200., 70.}, nu[2] = {0.3, 0.2};
+  const double     p    = (d - g0) / (1. / E[0] + 1. / E[1]);
+
+  // The two blocks, their inner columns moved in the plane, and their
+  // boundary tags: 1 bottom, 2 master, 3 slave, 4 top, 5 x = 0, 6 y = 0.
+  void
+  make_blocks(Triangulation<3> &blocks)
+  {
+    Triangulation<3> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(
+      lower, {3, 3, 2}, Point<3>(0, 0, -1), Point<3>(1, 1, 0));
+    GridGenerator::subdivided_hyper_rectangle(
+      upper, {5, 4, 2}, Point<3>(0, 0, g0), Point<3>(1, 1, 1 + g0));
+    const auto inner = [](const Point<3> &x) {
+      return x[0] > 1e-12 && x[0] < 1 - 1e-12 && x[1] > 1e-12 &&
+             x[1] < 1 - 1e-12;
+    };
+    GridTools::transform(
+      [&](const Point<3> &x) {
+        return inner(x) ? Point<3>(x[0] + 0.08 * std::sin(7 * x[1] + 1),
+                                   x[1] + 0.07 * std::cos(5 * x[0]),
+                                   x[2]) :
+                          x;
+      },
+      lower);
+    GridTools::transform(
+      [&](const Point<3> &x) {
+        return inner(x) ? Point<3>(x[0] + 0.05 * std::cos(6 * x[1]),
+                                   x[1] + 0.06 * std::sin(4 * x[0] + 2),
+                                   x[2]) :
+                          x;
+      },
+      upper);
+    for (const auto &cell : upper.active_cell_iterators())
+      cell->set_material_id(1);
+    GridGenerator::merge_triangulations(lower, upper, blocks);
+    for (const auto &cell : blocks.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<3> c = face->center();
+            if (std::abs(c[2] + 1) < 1e-12)
+              face->set_boundary_id(1);
+            else if (std::abs(c[2]) < 1e-12)
+              face->set_boundary_id(2);
+            else if (std::abs(c[2] - g0) < 1e-12)
+              face->set_boundary_id(3);
+            else if (std::abs(c[2] - 1 - g0) < 1e-12)
+              face->set_boundary_id(4);
+            else if (std::abs(c[0]) < 1e-12)
+              face->set_boundary_id(5);
+            else if (std::abs(c[1]) < 1e-12)
+              face->set_boundary_id(6);
+            else
+              face->set_boundary_id(0);
+          }
+  }
+
+  // Displacement (Q1, three components) on both blocks, the pressure on
+  // the slave block (FE_Nothing on the master).
+  hp::FECollection<3>
+  elements(const unsigned int degree)
+  {
+    hp::FECollection<3> fe;
+    fe.push_back(FESystem<3>(FE_Q<3>(degree), 3, FE_Nothing<3>(), 1));
+    fe.push_back(FESystem<3>(FE_Q<3>(degree), 3, FE_Q<3>(1), 1));
+    return fe;
+  }
+
+  void
+  distribute(DoFHandler<3> &dofs, const hp::FECollection<3> &fe)
+  {
+    for (const auto &cell : dofs.active_cell_iterators())
+      cell->set_active_fe_index(cell->material_id());
+    dofs.distribute_dofs(fe);
+  }
+
+  // The homogeneous constraints of a Newton update: the held components,
+  // and the pressure zero off the slave surface.
+  void
+  make_constraints(const DoFHandler<3>       &dofs,
+                   const FaceContact         &contact,
+                   AffineConstraints<double> &constraints)
+  {
+    constraints.clear();
+    const Functions::ZeroFunction<3>               zero(4);
+    const std::map<types::boundary_id, unsigned> held = {{1, 2},
+                                                         {4, 2},
+                                                         {5, 0},
+                                                         {6, 1}};
+    for (const auto &[tag, component] : held)
+      {
+        ComponentMask mask(4, false);
+        mask.set(component, true);
+        VectorTools::interpolate_boundary_values(
+          dofs, tag, zero, constraints, mask);
+      }
+    std::set<types::global_dof_index> on_slave;
+    for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+      on_slave.insert(contact.multiplier_dof(k));
+    ComponentMask pressure(4, false);
+    pressure.set(3, true);
+    for (const auto dof : DoFTools::extract_dofs(dofs, pressure))
+      if (on_slave.count(dof) == 0)
+        constraints.add_line(dof);
+    constraints.close();
+  }
+
+  // The linear elastic bulk: K u into the matrix, -K u into the rhs.
+  void
+  assemble_bulk(const DoFHandler<3>             &dofs,
+                const AffineConstraints<double> &constraints,
+                const Vector<double>            &u,
+                SparseMatrix<double>            &matrix,
+                Vector<double>                  &rhs)
+  {
+    const hp::QCollection<3> q(QGauss<3>(2), QGauss<3>(2));
+    hp::FEValues<3>          hp_values(dofs.get_fe_collection(),
+                              q,
+                              update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<types::global_dof_index> local;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        hp_values.reinit(cell);
+        const FEValues<3> &v  = hp_values.get_present_fe_values();
+        const unsigned int n  = cell->get_fe().n_dofs_per_cell();
+        const unsigned int b  = cell->material_id();
+        const double       mu = E[b] / (2 * (1 + nu[b]));
+        const double lambda = E[b] * nu[b] / ((1 + nu[b]) * (1 - 2 * nu[b]));
+        FullMatrix<double> k(n, n);
+        for (unsigned int q = 0; q < v.n_quadrature_points; ++q)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              k(i, j) += (lambda * v[displacement].divergence(i, q) *
+                            v[displacement].divergence(j, q) +
+                          2 * mu *
+                            scalar_product(
+                              v[displacement].symmetric_gradient(i, q),
+                              v[displacement].symmetric_gradient(j, q))) *
+                         v.JxW(q);
+        local.resize(n);
+        cell->get_dof_indices(local);
+        Vector<double> ue(n), r(n);
+        for (unsigned int i = 0; i < n; ++i)
+          ue(i) = u(local[i]);
+        k.vmult(r, ue);
+        r *= -1.;
+        constraints.distribute_local_to_global(k, r, local, matrix, rhs);
+      }
+  }
+} // namespace
+
+
+// The patch test: the semi-smooth Newton iteration from the top's motion,
+// then the multipliers and the displacements against the closed form.
+void
+patch_test(std::ostream &out)
+{
+  Triangulation<3> blocks;
+  make_blocks(blocks);
+  const hp::FECollection<3> fe = elements(1);
+  DoFHandler<3>             dofs(blocks);
+  distribute(dofs, fe);
+  // c = E / h with the slave faces' size.
+  FaceContact               contact(dofs, 3, 2, E[1] / 0.2, true);
+  AffineConstraints<double> constraints;
+  make_constraints(dofs, contact, constraints);
+
+  Vector<double>                            u(dofs.n_dofs());
+  std::map<types::global_dof_index, double> top;
+  ComponentMask                             z(4, false);
+  z.set(2, true);
+  VectorTools::interpolate_boundary_values(
+    dofs, 4, Functions::ConstantFunction<3>(-d, 4), top, z);
+  for (const auto &[dof, value] : top)
+    u(dof) = value;
+
+  contact.update(u);
+  DynamicSparsityPattern pattern(dofs.n_dofs());
+  DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+  contact.add_couplings(pattern);
+  SparsityPattern sparsity;
+  sparsity.copy_from(pattern);
+  SparseMatrix<double> matrix(sparsity);
+  unsigned int         iterations = 0, changes = 1;
+  while (changes > 0 && iterations < 20)
+    {
+      matrix = 0;
+      Vector<double> rhs(dofs.n_dofs());
+      assemble_bulk(dofs, constraints, u, matrix, rhs);
+      contact.assemble(u, constraints, matrix, rhs);
+      SparseDirectUMFPACK solver;
+      solver.initialize(matrix);
+      solver.solve(rhs);
+      constraints.distribute(rhs);
+      u += rhs;
+      ++iterations;
+      changes = contact.update(u);
+    }
+  check(changes == 0, "the active set settles");
+
+  double       worst_pressure = 0, force = 0;
+  unsigned int n_active       = 0;
+  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+    {
+      const double lambda = u(contact.multiplier_dof(k));
+      worst_pressure      = std::max(worst_pressure, std::abs(lambda - p));
+      force += contact.weight(k) * lambda;
+      n_active += contact.active(k);
+    }
+  check(n_active == contact.n_nodes(), "every slave node is closed");
+  check(worst_pressure < 1e-8 * p, "every multiplier is p");
+  check(std::abs(force - p) < 1e-8 * p, "the contact force is p A");
+
+  // Every vertex's displacement against the closed form.
+  double worst_u = 0;
+  for (const auto &cell : dofs.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        const Point<3>    &x = cell->vertex(v);
+        const unsigned int b = cell->material_id();
+        const double       lateral = nu[b] * p / E[b];
+        const double       exact[3] = {
+          lateral * x[0],
+          lateral * x[1],
+          b == 0 ? -p * (x[2] + 1) / E[0] : -d + p * (1 + g0 - x[2]) / E[1]};
+        for (unsigned int c = 0; c < 3; ++c)
+          worst_u = std::max(
+            worst_u,
+            std::abs(u(cell->vertex_dof_index(v, c, cell->active_fe_index())) -
+                     exact[c]));
+      }
+  check(worst_u < 1e-8 * d, "the displacement is the closed form's");
+  out << "patch test, " << contact.slave_faces().size()
+      << " slave faces against " << contact.master_faces().size()
+      << " master faces (non-matching), " << contact.pairs().size()
+      << " overlapping pairs, " << contact.n_nodes() << " contact nodes, "
+      << dofs.n_dofs() << " unknowns: the active set settled after "
+      << iterations << " solves" << std::endl
+      << "every multiplier is p = (d - g0) / (h1/E1 + h2/E2) = " << p
+      << " to 1e-8, the contact force p A to 1e-8, every displacement the "
+         "closed form's to 1e-8 d"
+      << std::endl;
+}
+
+
+// A smooth, deterministic scatter in [-1, 1].
+double
+scatter(const unsigned int i)
+{
+  return std::sin(12.9898 * i + 78.233 * std::sin(0.5 * i));
+}
+
+
+// Finite strain: the assembled rows' derivatives against central
+// differences of the assembled residual, the pairs and the active set
+// held (those of the state).
+void
+tangent_test(std::ostream &out)
+{
+  Triangulation<3> blocks;
+  make_blocks(blocks);
+  const hp::FECollection<3> fe = elements(1);
+  DoFHandler<3>             dofs(blocks);
+  distribute(dofs, fe);
+  FaceContact contact(dofs, 3, 2, E[1] / 0.2, false);
+
+  std::set<types::global_dof_index> unknowns;
+  for (const auto *faces : {&contact.slave_faces(), &contact.master_faces()})
+    for (const auto &face : *faces)
+      for (const auto &node : face.u_dofs)
+        unknowns.insert(node.begin(), node.end());
+  Vector<double> state(dofs.n_dofs());
+  for (const auto i : unknowns)
+    state(i) = 4e-3 * scatter(i);
+  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+    {
+      unknowns.insert(contact.multiplier_dof(k));
+      state(contact.multiplier_dof(k)) = p * (0.5 + scatter(1000 + k));
+    }
+  contact.update(state);
+  unsigned int n_active = 0;
+  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+    n_active += contact.active(k);
+  check(n_active > 0 && n_active < contact.n_nodes(),
+        "the state has open and closed nodes");
+
+  AffineConstraints<double> none;
+  none.close();
+  DynamicSparsityPattern pattern(dofs.n_dofs());
+  contact.add_couplings(pattern);
+  SparsityPattern sparsity;
+  sparsity.copy_from(pattern);
+  SparseMatrix<double> matrix(sparsity), scratch(sparsity);
+  Vector<double>       rhs(dofs.n_dofs());
+  contact.assemble(state, none, matrix, rhs);
+  const double scale = matrix.linfty_norm();
+
+  const double h     = 1e-6;
+  double       worst = 0;
+  for (const auto j : unknowns)
+    {
+      Vector<double> plus(dofs.n_dofs()), minus(dofs.n_dofs());
+      Vector<double> shifted(state);
+      shifted(j) += h;
+      contact.assemble(shifted, none, scratch, plus);
+      shifted(j) -= 2 * h;
+      contact.assemble(shifted, none, scratch, minus);
+      for (const auto i : unknowns)
+        worst =
+          std::max(worst,
+                   std::abs((minus(i) - plus(i)) / (2 * h) - matrix.el(i, j)));
+    }
+  check(worst < 1e-8 * scale, "the contact tangent is exact");
+  out << "finite strain, a displaced state with " << n_active << " of "
+      << contact.n_nodes()
+      << " nodes closed: the derivatives of the contact rows in "
+      << unknowns.size()
+      << " unknowns equal central differences to 1e-8 of the largest entry"
+      << std::endl;
+}
+
+
+// What the surfaces refuse.
+void
+refusals(std::ostream &out)
+{
+  Triangulation<3> blocks;
+  make_blocks(blocks);
+  const auto refused = [&](const hp::FECollection<3> &fe,
+                           const types::boundary_id   slave) {
+    DoFHandler<3> dofs(blocks);
+    distribute(dofs, fe);
+    try
+      {
+        FaceContact(dofs, slave, 2, 1., true);
+      }
+    catch (const std::exception &e)
+      {
+        out << "refused: " << e.what() << std::endl;
+        return;
+      }
+    check(false, "the surface is refused");
+  };
+  refused(elements(2), 3);
+  hp::FECollection<3> bare;
+  for (unsigned int b = 0; b < 2; ++b)
+    bare.push_back(FESystem<3>(FE_Q<3>(1), 3, FE_Nothing<3>(), 1));
+  refused(bare, 3);
+  refused(elements(1), 9);
+}
+
+
+int
+main()
+{
+  auto &out = RingContactTests::deallog_file;
+  out << std::setprecision(10);
+  patch_test(out);
+  tangent_test(out);
+  refusals(out);
+}
