@@ -40,10 +40,10 @@ namespace RingContact
   // add_forces() wants the whole sum on every process.
   template <typename Visitor>
   void
-  ContactInterface::visit_points(const Vector<double> &solution,
-                                 const bool            derivatives,
-                                 const unsigned int    process,
-                                 const Visitor        &visit) const
+  ContactInterface<dim>::visit_points(const Vector<double> &solution,
+                                      const bool            derivatives,
+                                      const unsigned int    process,
+                                      const Visitor        &visit) const
   {
     // The active set and the friction states are those of the last update(),
     // fixed while the element is assembled: in the semi-smooth Newton method
@@ -118,9 +118,9 @@ namespace RingContact
   // once, by the process that stores the row, whereas the points' contributions
   // from every process are summed.
   void
-  ContactInterface::assemble(const Vector<double>            &solution,
-                             const AffineConstraints<double> &constraints,
-                             LinearSystem                    &system) const
+  ContactInterface<dim>::assemble(const Vector<double>            &solution,
+                                  const AffineConstraints<double> &constraints,
+                                  LinearSystem                    &system) const
   {
     find_tangential_ties(solution, constraints, system.get_communicator());
     const bool friction = friction_coefficient > 0;
@@ -204,7 +204,7 @@ namespace RingContact
   // found). The largest over the processes, so that every process decides
   // alike whatever constraints it holds.
   void
-  ContactInterface::find_tangential_ties(
+  ContactInterface<dim>::find_tangential_ties(
     const Vector<double>            &solution,
     const AffineConstraints<double> &constraints,
     const MPI_Comm                   communicator) const
@@ -291,8 +291,8 @@ namespace RingContact
   // force, whatever process owns the slave point: the boundary resultants leave
   // it out of the reactions (postprocessing.cc).
   void
-  ContactInterface::add_forces(const Vector<double> &solution,
-                               Vector<double>       &forces) const
+  ContactInterface<dim>::add_forces(const Vector<double> &solution,
+                                    Vector<double>       &forces) const
   {
     visit_points(solution,
                  false,
@@ -310,7 +310,7 @@ namespace RingContact
   // The element needs the current partner and normal too: the slip is measured
   // along the current tangent.
   std::vector<double>
-  ContactInterface::weighted_slips(const Vector<double> &solution) const
+  ContactInterface<dim>::weighted_slips(const Vector<double> &solution) const
   {
     std::vector<double>  weighted_slip(multiplier_nodes.size(), 0.0);
     const ConvergedState converged{converged_solution,
@@ -353,7 +353,7 @@ namespace RingContact
   // to the next segment needs none. After each update() the Newton loop asks
   // whether the pattern still covers the pairs (problem/assembly.cc).
   bool
-  ContactInterface::sparsity_covers_pairing() const
+  ContactInterface<dim>::sparsity_covers_pairing() const
   {
     for (const auto &point : point_pairing.points())
       {
@@ -376,7 +376,7 @@ namespace RingContact
   }
 
   std::vector<std::vector<types::global_dof_index>>
-  ContactInterface::coupling_blocks()
+  ContactInterface<dim>::coupling_blocks()
   {
     // Per slave segment, the master segments its points are paired with and
     // their neighbours (which enter through vertex and smoothed normals, and

@@ -52,14 +52,15 @@ namespace RingContact
   // surfaces: the same rule integrates the slave's and the master's rows, and a
   // rule that saw only a linear slave's vertices would give a quadratic
   // master's mid-side nodes no contact force (doc/theory.md).
-  ContactInterface::ContactInterface(const DoFHandler<dim>   &dof_handler,
-                                     const ContactParameters &parameters,
-                                     const IntegrationScheme &scheme,
-                                     const unsigned int slave_mapping_degree,
-                                     const unsigned int master_mapping_degree,
-                                     const double       largest_youngs_modulus,
-                                     const bool         geometrically_linear,
-                                     const CyclicSymmetry::Sector &sector)
+  ContactInterface<dim>::ContactInterface(
+    const DoFHandler<dim>        &dof_handler,
+    const ContactParameters      &parameters,
+    const IntegrationScheme      &scheme,
+    const unsigned int            slave_mapping_degree,
+    const unsigned int            master_mapping_degree,
+    const double                  largest_youngs_modulus,
+    const bool                    geometrically_linear,
+    const CyclicSymmetry::Sector &sector)
       : slave(dof_handler, parameters.slave_boundary_id, slave_mapping_degree)
       , master(dof_handler,
                parameters.master_boundary_id,
@@ -114,8 +115,8 @@ namespace RingContact
   // of changes is what the Newton solver needs: an iterate is converged only if
   // no node changed its state.
   unsigned int
-  ContactInterface::update(const Vector<double> &solution,
-                           const Pairing         pairing)
+  ContactInterface<dim>::update(const Vector<double> &solution,
+                                const Pairing         pairing)
   {
     // Finite strain: pair and measure in the current configuration. Small
     // strain: pair in the reference configuration, and the gap is the
@@ -164,7 +165,7 @@ namespace RingContact
   // velocity, the slip is objective (a rigid motion of the pair slips nothing)
   // and the same with every integration scheme.
   void
-  ContactInterface::accept_state(const Vector<double> &solution)
+  ContactInterface<dim>::accept_state(const Vector<double> &solution)
   {
     if (friction_coefficient == 0)
       return;
@@ -184,7 +185,7 @@ namespace RingContact
   // so set up once gave 0 of 63 checks with no word of why. The mean gap is 0
   // where w_k is 0 (ActiveSet::mean_gaps()).
   std::pair<double, Point<dim>>
-  ContactInterface::deepest_interpenetration() const
+  ContactInterface<dim>::deepest_interpenetration() const
   {
     const std::vector<double> mean_gap = states.mean_gaps();
     double                    depth    = 0;
@@ -205,8 +206,8 @@ namespace RingContact
   // The node nearest to a reference point: the rings' node A is named by its
   // initial position (0.6, 0), a general problem's checks by theirs.
   types::global_dof_index
-  ContactInterface::multiplier_dof_nearest_to(const Point<dim> &point,
-                                              double           *distance) const
+  ContactInterface<dim>::multiplier_dof_nearest_to(const Point<dim> &point,
+                                                   double *distance) const
   {
     double                  best = std::numeric_limits<double>::max();
     types::global_dof_index dof  = numbers::invalid_dof_index;
@@ -232,7 +233,7 @@ namespace RingContact
   // of a sector's segment carries the original's unknowns, so its weights
   // land on them.
   std::map<types::global_dof_index, double>
-  ContactInterface::master_load_weights() const
+  ContactInterface<dim>::master_load_weights() const
   {
     std::map<types::global_dof_index, double> weights;
     std::vector<double> psi(master.displacement_basis().size());
@@ -253,7 +254,7 @@ namespace RingContact
   // pressure one per reference length, lambda ds / dS. At a vertex the
   // stretches of the two segments differ: the node gets their mean.
   double
-  ContactInterface::stretch_at(const types::global_dof_index dof) const
+  ContactInterface<dim>::stretch_at(const types::global_dof_index dof) const
   {
     double      sum   = 0;
     const auto &sites = multiplier_nodes.sites.at(dof);
@@ -266,8 +267,8 @@ namespace RingContact
   // The nodal gap of the VTU files: the node's slave point projected afresh,
   // with the gap computed as in the pairing.
   double
-  ContactInterface::gap_at(const types::global_dof_index dof,
-                           const Vector<double>         &solution) const
+  ContactInterface<dim>::gap_at(const types::global_dof_index dof,
+                                const Vector<double>         &solution) const
   {
     const auto [s, t] = multiplier_nodes.sites.at(dof).front();
     return point_pairing.gap_at(s, t, solution, geometrically_linear);
@@ -278,9 +279,9 @@ namespace RingContact
   // (the displacement degree + 3 Gauss points per slave segment) rather than
   // the contact scheme's, so that every scheme is measured alike.
   double
-  ContactInterface::l2_relative_error(const Vector<double> &solution,
-                                      const double          reference,
-                                      const PressureMeasure measure) const
+  ContactInterface<dim>::l2_relative_error(const Vector<double> &solution,
+                                           const double          reference,
+                                           const PressureMeasure measure) const
   {
     const QGauss<1>     rule(slave.displacement_basis().size() + 2);
     double              error = 0, norm = 0;

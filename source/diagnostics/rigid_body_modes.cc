@@ -89,9 +89,9 @@ namespace RingContact
       std::map<types::material_id, Frame>
       body_frames(const DoFHandler<dim>            &dof_handler,
                   const hp::MappingCollection<dim> &mapping_collection,
-                  const std::vector<Body>          &bodies,
+                  const std::vector<Body<dim>>     &bodies,
                   const std::vector<types::global_dof_index> &imposed_dofs,
-                  const std::vector<NormalDisplacement>      &normal_target,
+                  const std::vector<NormalDisplacement<dim>> &normal_target,
                   const std::vector<unsigned int>            &normal_component,
                   std::set<types::material_id>               &held_by_contact,
                   std::ostream                               &log)
@@ -118,7 +118,7 @@ namespace RingContact
             imposed.erase(normal_target[k].dofs[normal_component[k]]);
             normal_at[normal_target[k].dofs[0]] = normal_target[k].normal;
           }
-        for (const Body &body : bodies)
+        for (const Body<dim> &body : bodies)
           {
             // The body's extent and centre, to scale the rotation.
             Point<dim>                                         lower, upper;
@@ -211,10 +211,11 @@ namespace RingContact
       // the relative normal motion of the two bodies' rigid modes, which a
       // frictionless contact resists and nothing else.
       void
-      add_contact_rows(const std::map<types::material_id, Frame>   &frames,
-                       std::map<types::material_id, unsigned int>  &column,
-                       const std::vector<const ContactInterface *> &contacts,
-                       LAPACKFullMatrix<double>                    &H)
+      add_contact_rows(
+        const std::map<types::material_id, Frame>        &frames,
+        std::map<types::material_id, unsigned int>       &column,
+        const std::vector<const ContactInterface<dim> *> &contacts,
+        LAPACKFullMatrix<double>                         &H)
       {
         // n . u(x) of a body's rigid modes, as the row of a support above.
         const auto mode_row = [&](const types::material_id id,
@@ -287,9 +288,10 @@ namespace RingContact
       // bodies, the supports' constraints of each, and per slave point the
       // normal relative motion n . (r_slave - r_master): their null space.
       void
-      refuse_free_motions(const std::map<types::material_id, Frame>   &frames,
-                          const std::vector<Body>                     &bodies,
-                          const std::vector<const ContactInterface *> &contacts)
+      refuse_free_motions(
+        const std::map<types::material_id, Frame>        &frames,
+        const std::vector<Body<dim>>                     &bodies,
+        const std::vector<const ContactInterface<dim> *> &contacts)
       {
         // The bodies' three columns side by side; H = M^T M of the whole
         // matrix M, starting from each body's supports (G, block-diagonal).
@@ -329,7 +331,7 @@ namespace RingContact
                   const auto body =
                     std::find_if(bodies.begin(),
                                  bodies.end(),
-                                 [&](const Body &x) {
+                                 [&](const Body<dim> &x) {
                                    return x.material_id == ids[b];
                                  });
                   const std::string motion =
@@ -366,13 +368,13 @@ namespace RingContact
     std::set<types::material_id>
     rigid_body_modes(const DoFHandler<dim>                      &dof_handler,
                      const hp::MappingCollection<dim>           &mapping,
-                     const std::vector<Body>                    &bodies,
+                     const std::vector<Body<dim>>               &bodies,
                      const std::vector<types::global_dof_index> &imposed_dofs,
-                     const std::vector<NormalDisplacement>      &normal,
+                     const std::vector<NormalDisplacement<dim>> &normal,
                      const std::vector<unsigned int> &normal_component,
-                     const std::vector<const ContactInterface *> &contacts,
-                     const bool                                   friction,
-                     std::ostream                                &log)
+                     const std::vector<const ContactInterface<dim> *> &contacts,
+                     const bool                                        friction,
+                     std::ostream                                     &log)
     {
       std::set<types::material_id> held_by_contact;
       const auto                   frames = body_frames(dof_handler,

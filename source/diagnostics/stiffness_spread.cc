@@ -62,17 +62,19 @@ namespace RingContact
     // body (E smallest). A cell's thickness is its area over its longest
     // edge, so a square has a = 1 and a cell L long and h thick a = L / h.
     StiffnessSpread
-    stiffness_spread(const Triangulation<dim> &triangulation,
-                     const std::vector<Body>  &bodies)
+    stiffness_spread(const Triangulation<dim>     &triangulation,
+                     const std::vector<Body<dim>> &bodies)
     {
       const auto body_of = [&bodies](const types::material_id id) {
-        return std::find_if(bodies.begin(), bodies.end(), [id](const Body &b) {
-          return b.material_id == id;
-        });
+        return std::find_if(bodies.begin(),
+                            bodies.end(),
+                            [id](const Body<dim> &b) {
+                              return b.material_id == id;
+                            });
       };
-      double      stiffest = 0, softest = std::numeric_limits<double>::max();
-      double      aspect = 1, length = 0, thickness = 0;
-      const Body *stiff_body = nullptr, *soft_body = nullptr;
+      double stiffest = 0, softest = std::numeric_limits<double>::max();
+      double aspect = 1, length = 0, thickness = 0;
+      const Body<dim> *stiff_body = nullptr, *soft_body = nullptr;
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           const auto body = body_of(cell->material_id());

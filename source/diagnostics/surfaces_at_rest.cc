@@ -31,9 +31,9 @@ namespace RingContact
   namespace Diagnostics
   {
     bool
-    report_initial_interpenetration(ContactInterface     &contact,
-                                    const Vector<double> &solution,
-                                    std::ostream         &log)
+    report_initial_interpenetration(ContactInterface<dim> &contact,
+                                    const Vector<double>  &solution,
+                                    std::ostream          &log)
     {
       contact.update(solution);
       const auto [depth, where] = contact.deepest_interpenetration();
@@ -73,9 +73,9 @@ namespace RingContact
     // remove it. Curved (Mapping degree = 2), the departure is 1e-6 of it and
     // the swing a few percent.
     bool
-    report_coarse_geometry(ContactInterface     &contact,
-                           const Vector<double> &solution,
-                           std::ostream         &log)
+    report_coarse_geometry(ContactInterface<dim> &contact,
+                           const Vector<double>  &solution,
+                           std::ostream          &log)
     {
       contact.update(solution);
       std::vector<double> gaps;
@@ -179,9 +179,9 @@ namespace RingContact
     // are left out. On matching surfaces
     // the two weights agree to round-off, and nothing is said.
     LoadTransfer
-    measure_load_transfer(ContactInterface     &pointwise,
-                          ContactInterface     &mortar,
-                          const Vector<double> &solution)
+    measure_load_transfer(ContactInterface<dim> &pointwise,
+                          ContactInterface<dim> &mortar,
+                          const Vector<double>  &solution)
     {
       pointwise.update(solution);
       mortar.update(solution);
@@ -267,8 +267,8 @@ namespace RingContact
     // quadratic master of the same segments (modelisations E and F) is
     // sampled at the master's mid-side nodes by the nodal scheme.
     double
-    facing_length_ratio(ContactInterface     &contact,
-                        const Vector<double> &solution)
+    facing_length_ratio(ContactInterface<dim> &contact,
+                        const Vector<double>  &solution)
     {
       contact.update(solution);
       const ContactSurface &slave  = contact.slave_surface(),
@@ -323,7 +323,8 @@ namespace RingContact
     // doc/validation.md, "Right by default on surfaces that do not match"); on
     // surfaces that do not conform the departure stays.
     bool
-    vertices_conform(ContactInterface &contact, const Vector<double> &solution)
+    vertices_conform(ContactInterface<dim> &contact,
+                     const Vector<double>  &solution)
     {
       contact.update(solution);
       const auto lands_on_vertices = [](const ContactSurface &from,

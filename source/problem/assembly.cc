@@ -136,7 +136,7 @@ namespace RingContact
     // is made again before anything is added to it.
     if (!std::all_of(contacts.begin(),
                      contacts.end(),
-                     [](const std::unique_ptr<ContactInterface> &contact) {
+                     [](const std::unique_ptr<ContactInterface<dim>> &contact) {
                        return contact->sparsity_covers_pairing();
                      }))
       make_sparsity_pattern();
@@ -214,7 +214,7 @@ namespace RingContact
         outside_law_body =
           Utilities::MPI::min(static_cast<unsigned int>(outside_law_body),
                               communicator);
-        for (const BoundaryLoad &load : boundary_loads)
+        for (const BoundaryLoad<dim> &load : boundary_loads)
           for (unsigned int d = 0; d < dim; ++d)
             applied_resultant[load.boundary_id][d] =
               Utilities::MPI::sum(applied_resultant[load.boundary_id][d],
@@ -442,7 +442,7 @@ namespace RingContact
              << "gradient overflows in it: an iterate far beyond any "
              << "physical state)";
     if (n_outside_law > 0)
-      for (const Body &body : bodies)
+      for (const Body<dim> &body : bodies)
         if (body.material_id == outside_law_body)
           reason << separator() << "outside the material law at "
                  << n_outside_law << " quadrature points (" << body.name
@@ -535,7 +535,7 @@ namespace RingContact
     std::vector<Tensor<2, dim>>          grad_u;
     FullMatrix<double>                   face_matrix;
     Vector<double>                       face_rhs;
-    for (const BoundaryLoad &load : boundary_loads)
+    for (const BoundaryLoad<dim> &load : boundary_loads)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->subdomain_id() == this_process &&
@@ -547,7 +547,8 @@ namespace RingContact
                 hp_face_values.get_present_fe_values();
               const FiniteElement<dim> &fe = cell->get_fe();
               const unsigned int        n  = fe.n_dofs_per_cell();
-              const bool pressure = load.type == BoundaryLoad::Type::pressure;
+              const bool                pressure =
+                load.type == BoundaryLoad<dim>::Type::pressure;
               // Each body's kinematics: a body in finite (or logarithmic)
               // strain carries the pressure on its current surface.
               const bool follower =

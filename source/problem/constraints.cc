@@ -39,7 +39,7 @@ namespace RingContact
                                             hanging_node_constraints);
     hanging_node_constraints.close();
     imposed_dofs.clear();
-    const ImposedMotion motion =
+    const ImposedMotion<dim> motion =
       scenario->boundary_motion(dof_handler, mapping_collection, LoadState{});
     for (const auto &[dof, value] : motion.values)
       imposed_dofs.push_back(dof);
@@ -236,7 +236,7 @@ namespace RingContact
   void
   ContactProblem::apply_boundary_motion(const LoadState &load)
   {
-    ImposedMotion motion =
+    ImposedMotion<dim> motion =
       scenario->boundary_motion(dof_handler, mapping_collection, load);
     boundary_target = std::move(motion.values);
     normal_target   = std::move(motion.normal);

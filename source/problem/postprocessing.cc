@@ -143,10 +143,10 @@ namespace RingContact
   // one pair. The lists leave out the end side's twins of a cyclic sector
   // (one node, two unknowns tied by a constraint), so that counts and
   // extremes see each node once.
-  std::vector<const ContactInterface *>
+  std::vector<const ContactInterface<dim> *>
   ContactProblem::contact_interfaces() const
   {
-    std::vector<const ContactInterface *> interfaces;
+    std::vector<const ContactInterface<dim> *> interfaces;
     for (const auto &contact : contacts)
       interfaces.push_back(contact.get());
     return interfaces;
@@ -375,7 +375,7 @@ namespace RingContact
         contact->slave_surface().segments().front().cell->material_id(),
         contact->master_surface().segments().front().cell->material_id());
     std::vector<std::pair<types::material_id, std::string>> names;
-    for (const Body &body : bodies)
+    for (const Body<dim> &body : bodies)
       names.emplace_back(body.material_id, body.name);
     // A cyclic sector's master copies carry the master's forces turned:
     // their sum is not the slave's.
@@ -448,7 +448,8 @@ namespace RingContact
             std::max(parameters.finite_elements.mapping_degree,
                      std::max_element(bodies.begin(),
                                       bodies.end(),
-                                      [](const Body &a, const Body &b) {
+                                      [](const Body<dim> &a,
+                                         const Body<dim> &b) {
                                         return a.degree < b.degree;
                                       })
                        ->degree);

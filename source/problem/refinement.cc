@@ -88,8 +88,8 @@ namespace RingContact
     // factor 1.5 of each other (see the flags' comments below).
     void
     keep_facing_faces_matched(
-      const std::vector<std::unique_ptr<ContactInterface>> &contacts,
-      const unsigned int                                    maximum_level)
+      const std::vector<std::unique_ptr<ContactInterface<dim>>> &contacts,
+      const unsigned int                                         maximum_level)
     {
       // Where the surfaces face each other, their faces are kept within a
       // factor 1.5 of each other: the longer one is refined, and if it
@@ -287,7 +287,7 @@ namespace RingContact
     for (unsigned int k = 0; k < fe_collection.size(); ++k)
       face_quadrature.push_back(QGauss<1>(fe_collection[k].degree + 1));
     unsigned int mapping_degree = 1;
-    for (const Body &body : bodies)
+    for (const Body<dim> &body : bodies)
       mapping_degree = std::max(mapping_degree, body.mapping_degree);
     const EstimatorInput input{triangulation,
                                dof_handler,
@@ -330,7 +330,7 @@ namespace RingContact
     // The displacement on a DoFHandler of its own: one FE_Q(p)^2 per body,
     // each cell the element of its body.
     hp::FECollection<dim> displacement_fe;
-    for (const Body &body : bodies)
+    for (const Body<dim> &body : bodies)
       displacement_fe.push_back(FESystem<dim>(FE_Q<dim>(body.degree), 2));
     DoFHandler<dim> displacement_dofs(triangulation);
     const auto      set_bodies = [&]() {

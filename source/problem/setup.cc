@@ -94,7 +94,7 @@ namespace RingContact
           else if (id != cell->material_id())
             {
               const auto name = [&](const types::material_id m) {
-                for (const Body &body : bodies)
+                for (const Body<dim> &body : bodies)
                   if (body.material_id == m)
                     return body.name + " (material " + std::to_string(m) + ")";
                 return "material " + std::to_string(m);
@@ -206,7 +206,7 @@ namespace RingContact
   ContactProblem::make_finite_elements()
   {
     const auto &fe          = parameters.finite_elements;
-    const auto  add_element = [&](const Body &body, const bool layer) {
+    const auto  add_element = [&](const Body<dim> &body, const bool layer) {
       const unsigned int degree = body.degree;
       // The tangential traction: as the pressure with friction; without,
       // FE_Nothing, which adds no unknown. A frictionless run then has the
@@ -244,7 +244,7 @@ namespace RingContact
       mapping_collection.push_back(MappingQ<dim>(body.mapping_degree));
       body_of_fe_index.push_back(fe_index_of.at(body.material_id));
     };
-    for (const Body &body : bodies)
+    for (const Body<dim> &body : bodies)
       add_element(body, false);
     // A layer element for each slave body, not for each pair: a body that
     // is the slave of two pairs (the middle block of three) has one layer,
@@ -401,7 +401,7 @@ namespace RingContact
     // configuration of its own; one body in finite strain makes every
     // pair's contact follow the current configuration.
     const bool geometrically_linear =
-      std::all_of(bodies.begin(), bodies.end(), [](const Body &body) {
+      std::all_of(bodies.begin(), bodies.end(), [](const Body<dim> &body) {
         return body.material.geometrically_linear;
       });
     contacts.clear();
@@ -488,7 +488,7 @@ namespace RingContact
   // Also called for the diagnostics before the first step, which compare a
   // point-wise scheme's load transfer with the mortar one's on the same
   // surfaces (diagnostics/surfaces_at_rest.h).
-  std::unique_ptr<ContactInterface>
+  std::unique_ptr<ContactInterface<dim>>
   ContactProblem::make_contact_interface(const types::boundary_id slave,
                                          const types::boundary_id master,
                                          const IntegrationScheme &scheme,
@@ -497,10 +497,11 @@ namespace RingContact
     ContactParameters pair_parameters  = parameters.contact;
     pair_parameters.slave_boundary_id  = slave;
     pair_parameters.master_boundary_id = master;
-    const Body &slave_body = bodies[fe_index_of.at(body_of_boundary.at(slave))];
-    const Body &master_body =
+    const Body<dim> &slave_body =
+      bodies[fe_index_of.at(body_of_boundary.at(slave))];
+    const Body<dim> &master_body =
       bodies[fe_index_of.at(body_of_boundary.at(master))];
-    return std::make_unique<ContactInterface>(
+    return std::make_unique<ContactInterface<dim>>(
       dof_handler,
       pair_parameters,
       scheme,

@@ -44,7 +44,7 @@ namespace RingContact
     // node's zero pressure belongs in the spread, which it makes large under
     // a load that should close the whole surface.
     std::pair<double, double>
-    pressure_extremes(const SolutionState &state)
+    pressure_extremes(const SolutionState<dim> &state)
     {
       double lowest  = std::numeric_limits<double>::max();
       double highest = -std::numeric_limits<double>::max();
@@ -57,11 +57,11 @@ namespace RingContact
     }
 
     void
-    report(const SolutionState     &state,
-           const Point<dim>        &probe,
-           const double             reference,
-           const PressureMeasure    measure,
-           std::vector<NamedValue> &into)
+    report(const SolutionState<dim> &state,
+           const Point<dim>         &probe,
+           const double              reference,
+           const PressureMeasure     measure,
+           std::vector<NamedValue>  &into)
     {
       // The pressure is a nodal unknown, so node A is the contact node nearest
       // to the probe point, over every pair. Its pressure and the extremes are
@@ -212,18 +212,18 @@ namespace RingContact
     }
 
     unsigned int
-    n_slipping(const SolutionState &state)
+    n_slipping(const SolutionState<dim> &state)
     {
       unsigned int n = 0;
-      for (const ContactInterface *contact : state.contact_interfaces())
+      for (const ContactInterface<dim> *contact : state.contact_interfaces())
         n += contact->active_set().n_slipping();
       return n;
     }
 
     void
-    report(const SolutionState     &state,
-           const Point<dim>        &probe,
-           std::vector<NamedValue> &into)
+    report(const SolutionState<dim> &state,
+           const Point<dim>         &probe,
+           std::vector<NamedValue>  &into)
     {
       const auto node = state.contact_node_nearest_to(probe);
       into.insert(into.end(),
@@ -259,8 +259,8 @@ namespace RingContact
   }
 
   void
-  ReferencePressureScenario::report(const SolutionState &state,
-                                    HistoryRow          &row) const
+  ReferencePressureScenario::report(const SolutionState<dim> &state,
+                                    HistoryRow               &row) const
   {
     const Parameters &parameters = run_parameters();
     const Point<dim> &probe      = reference_entries().probe_point;

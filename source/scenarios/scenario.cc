@@ -38,7 +38,7 @@ namespace RingContact
     return registry();
   }
 
-  std::unique_ptr<Scenario>
+  std::unique_ptr<Scenario<dim>>
   make_scenario(const Parameters &parameters)
   {
     for (const auto &scenario : registered_scenarios())

@@ -62,7 +62,14 @@
 
 namespace RingContact
 {
-  class ContactInterface
+  /// The contact interface of a pair of surfaces in `dim` dimensions: the
+  /// class below for dim = 2; the 3D one is FaceContact
+  /// (face_contact.h) until the problem holds either (issue 48).
+  template <int dim>
+  class ContactInterface;
+
+  template <>
+  class ContactInterface<2>
   {
   public:
     /// `largest_youngs_modulus` sets the automatic complementarity constant

@@ -38,13 +38,13 @@ namespace RingContact
     std::set<types::material_id>
     rigid_body_modes(const DoFHandler<dim>                      &dof_handler,
                      const hp::MappingCollection<dim>           &mapping,
-                     const std::vector<Body>                    &bodies,
+                     const std::vector<Body<dim>>               &bodies,
                      const std::vector<types::global_dof_index> &imposed_dofs,
-                     const std::vector<NormalDisplacement>      &normal,
+                     const std::vector<NormalDisplacement<dim>> &normal,
                      const std::vector<unsigned int> &normal_component,
-                     const std::vector<const ContactInterface *> &contacts,
-                     const bool                                   friction,
-                     std::ostream                                &log);
+                     const std::vector<const ContactInterface<dim> *> &contacts,
+                     const bool                                        friction,
+                     std::ostream                                     &log);
   } // namespace Diagnostics
 } // namespace RingContact
 

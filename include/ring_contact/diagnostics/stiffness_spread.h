@@ -58,8 +58,8 @@ namespace RingContact
     /// material id. Throws a one-line error when it exceeds what double
     /// precision can solve (eps S > 1e-7).
     StiffnessSpread
-    stiffness_spread(const Triangulation<dim> &triangulation,
-                     const std::vector<Body>  &bodies);
+    stiffness_spread(const Triangulation<dim>     &triangulation,
+                     const std::vector<Body<dim>> &bodies);
   } // namespace Diagnostics
 } // namespace RingContact
 

@@ -38,9 +38,9 @@ namespace RingContact
     /// Warn in `log` when the surfaces of `contact` interpenetrate at
     /// `solution` (the reference state); true if it warned.
     bool
-    report_initial_interpenetration(ContactInterface     &contact,
-                                    const Vector<double> &solution,
-                                    std::ostream         &log);
+    report_initial_interpenetration(ContactInterface<dim> &contact,
+                                    const Vector<double>  &solution,
+                                    std::ostream          &log);
 
     /// Warn in `log` when the discrete contact surfaces are too coarse for
     /// the curves they follow (their manifolds): when the initial gap they
@@ -48,9 +48,9 @@ namespace RingContact
     /// median initial gap or interference. Silent unless most nodes start
     /// with gaps of one size (conforming surfaces). True if it warned.
     bool
-    report_coarse_geometry(ContactInterface     &contact,
-                           const Vector<double> &solution,
-                           std::ostream         &log);
+    report_coarse_geometry(ContactInterface<dim> &contact,
+                           const Vector<double>  &solution,
+                           std::ostream          &log);
 
     /// What a uniform pressure on the slave surface gives the master's
     /// nodes under a point-wise scheme, as a ratio to what the mortar
@@ -70,9 +70,9 @@ namespace RingContact
     /// state), with a unit pressure on every slave node. Both are paired
     /// anew in that state.
     LoadTransfer
-    measure_load_transfer(ContactInterface     &pointwise,
-                          ContactInterface     &mortar,
-                          const Vector<double> &solution);
+    measure_load_transfer(ContactInterface<dim> &pointwise,
+                          ContactInterface<dim> &mortar,
+                          const Vector<double>  &solution);
 
     /// The median ratio of a slave segment's length to that of the master
     /// segment facing it, over the slave segments that face the master
@@ -80,14 +80,15 @@ namespace RingContact
     /// of the smallest gap); 0 if none faces it. Above 1: the slave is the
     /// coarser surface.
     double
-    facing_length_ratio(ContactInterface     &contact,
-                        const Vector<double> &solution);
+    facing_length_ratio(ContactInterface<dim> &contact,
+                        const Vector<double>  &solution);
 
     /// True if the vertices of each surface of `contact` that face the
     /// other surface land on its vertices in the state `solution` (the
     /// meshes conform along the contact, whatever their degrees).
     bool
-    vertices_conform(ContactInterface &contact, const Vector<double> &solution);
+    vertices_conform(ContactInterface<dim> &contact,
+                     const Vector<double>  &solution);
 
     /// Warn in `log` when the point-wise `scheme` fails the contact patch
     /// test on the surfaces of a pair (`transfer` departs from 1 by more

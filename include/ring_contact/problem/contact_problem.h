@@ -75,7 +75,7 @@ namespace RingContact
   using namespace dealii;
 
   class ContactProblem
-      : public SolutionState
+      : public SolutionState<dim>
       , public NonlinearProblem
   {
   public:
@@ -170,11 +170,11 @@ namespace RingContact
     {
       return current_load;
     }
-    std::vector<const ContactInterface *>
+    std::vector<const ContactInterface<dim> *>
     contact_interfaces() const override;
     types::global_dof_index
     contact_node_nearest_to(const Point<dim> &point) const override;
-    const ContactInterface &
+    const ContactInterface<dim> &
     contact_of(const types::global_dof_index node) const override
     {
       return *contacts[pair_of_node.at(node)];
@@ -224,7 +224,7 @@ namespace RingContact
     refuse_slave_corners(const ContactSurface    &slave,
                          const types::boundary_id slave_id) const;
     /// One pair's interface (slave and master boundary tags) under `scheme`.
-    std::unique_ptr<ContactInterface>
+    std::unique_ptr<ContactInterface<dim>>
     make_contact_interface(const types::boundary_id slave,
                            const types::boundary_id master,
                            const IntegrationScheme &scheme,
@@ -435,11 +435,11 @@ namespace RingContact
     const unsigned int n_processes, this_process;
 
     /// The problem posed: bodies, boundary data, what to report.
-    const std::unique_ptr<const Scenario> scenario;
-    const std::vector<Body>               bodies;
-    const std::vector<BoundaryLoad>       boundary_loads;
-    const LoadProgram                    &load_program;
-    std::map<unsigned int, Material<dim>> materials; ///< by material id
+    const std::unique_ptr<const Scenario<dim>> scenario;
+    const std::vector<Body<dim>>               bodies;
+    const std::vector<BoundaryLoad<dim>>       boundary_loads;
+    const LoadProgram                         &load_program;
+    std::map<unsigned int, Material<dim>>      materials; ///< by material id
 
     Triangulation<dim>               triangulation;
     DoFHandler<dim>                  dof_handler;
@@ -455,7 +455,7 @@ namespace RingContact
     std::map<types::material_id, unsigned int> layer_of;
 
     /// One interface per contact pair (subsection Contact first).
-    std::vector<std::unique_ptr<ContactInterface>> contacts;
+    std::vector<std::unique_ptr<ContactInterface<dim>>> contacts;
     /// The bodies that some rigid motion leaves held by the contact only.
     std::set<types::material_id> held_by_contact;
     /// How far apart the cells' stiffnesses are (diagnose_start()): a
@@ -509,8 +509,8 @@ namespace RingContact
     /// The normal displacements N . u = g of the scenario, each as the
     /// constraint u_a = g / N_a - (N_b / N_a) u_b on the component a with
     /// the larger |N_a| (its values g at the current load state).
-    std::vector<NormalDisplacement> normal_target;
-    std::vector<unsigned int>       normal_component;
+    std::vector<NormalDisplacement<dim>> normal_target;
+    std::vector<unsigned int>            normal_component;
 
     /// Per row, the sum of the magnitudes of the terms that make up the
     /// residual, sum_j |K_ij| |z_j| + |R_i| with z the displacement (bulk)

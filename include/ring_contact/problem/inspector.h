@@ -87,7 +87,7 @@ namespace RingContact
     }
 
     /// The first contact pair's interface.
-    const ContactInterface &
+    const ContactInterface<dim> &
     contact_interface() const
     {
       return *problem.contacts.front();

@@ -24,6 +24,7 @@ namespace RingContact
 {
   using namespace dealii;
 
+  template <int dim>
   class SolutionState
   {
   public:
@@ -42,14 +43,14 @@ namespace RingContact
     load_state() const = 0;
 
     /// The contact interfaces, one per pair, in the order of the pairs.
-    virtual std::vector<const ContactInterface *>
+    virtual std::vector<const ContactInterface<dim> *>
     contact_interfaces() const = 0;
 
     /// The contact node (multiplier unknown) nearest to a reference point
     /// over every pair, and the interface it belongs to.
     virtual types::global_dof_index
     contact_node_nearest_to(const Point<dim> &point) const = 0;
-    virtual const ContactInterface &
+    virtual const ContactInterface<dim> &
     contact_of(const types::global_dof_index node) const = 0;
 
     /// Every contact node of every pair.

@@ -41,17 +41,17 @@ namespace RingContact
     /// The lowest and the highest contact pressure over every contact node
     /// of every pair, open nodes included, in the reported measure.
     std::pair<double, double>
-    pressure_extremes(const SolutionState &state);
+    pressure_extremes(const SolutionState<dim> &state);
 
     /// Their values at a state: the pressure at the contact node nearest to
     /// `probe` against `reference` (NaN: none known), reported as
     /// `measure` says.
     void
-    report(const SolutionState     &state,
-           const Point<dim>        &probe,
-           const double             reference,
-           const PressureMeasure    measure,
-           std::vector<NamedValue> &into);
+    report(const SolutionState<dim> &state,
+           const Point<dim>         &probe,
+           const double              reference,
+           const PressureMeasure     measure,
+           std::vector<NamedValue>  &into);
 
     /// The rings' columns of the step's line: the load, the rotation, the
     /// pressure at A against the analytic one, the errors.
@@ -84,14 +84,14 @@ namespace RingContact
 
     /// The number of sliding nodes over every pair.
     unsigned int
-    n_slipping(const SolutionState &state);
+    n_slipping(const SolutionState<dim> &state);
 
     /// The tangential traction (Cauchy, the multiplier itself) at the
     /// contact node nearest to `probe`, and the number of sliding nodes.
     void
-    report(const SolutionState     &state,
-           const Point<dim>        &probe,
-           std::vector<NamedValue> &into);
+    report(const SolutionState<dim> &state,
+           const Point<dim>         &probe,
+           std::vector<NamedValue>  &into);
 
     /// q_A and the number of sliding nodes, left out before the pressure
     /// when the line is too wide.
@@ -104,7 +104,7 @@ namespace RingContact
   /// test's uniform p). What it reports, prints, warns about and checks is
   /// the same for all of them, around the reference each gives: the
   /// functions of ReferencePressure and, with friction, of Friction.
-  class ReferencePressureScenario : public Scenario
+  class ReferencePressureScenario : public Scenario<dim>
   {
   public:
     /// The pressure columns; the friction ones only with friction (a
@@ -115,7 +115,7 @@ namespace RingContact
     trailing_columns() const override;
 
     void
-    report(const SolutionState &state, HistoryRow &row) const override;
+    report(const SolutionState<dim> &state, HistoryRow &row) const override;
 
     std::vector<StepField>
     step_fields(const HistoryRow &row) const override;

@@ -52,6 +52,7 @@ namespace RingContact
   using namespace dealii;
 
   /// One elastic body: the cells of one material id.
+  template <int dim>
   struct Body
   {
     types::material_id material_id;
@@ -62,6 +63,7 @@ namespace RingContact
   };
 
   /// A load on a boundary, at a reference point and a load state.
+  template <int dim>
   struct BoundaryLoad
   {
     enum class Type
@@ -92,18 +94,20 @@ namespace RingContact
   /// N the outward unit normal of the reference boundary there: one linear
   /// condition on the node's two displacement unknowns, the tangential
   /// motion free.
+  template <int dim>
   struct NormalDisplacement
   {
-    std::array<types::global_dof_index, 2> dofs; ///< u_x, u_y of the node
-    Tensor<1, dim>                         normal;
-    double                                 value;
+    std::array<types::global_dof_index, dim> dofs; ///< u_x, u_y (, u_z)
+    Tensor<1, dim>                           normal;
+    double                                   value;
   };
 
   /// What a scenario imposes on the boundary at a load state.
+  template <int dim>
   struct ImposedMotion
   {
     std::map<types::global_dof_index, double> values;
-    std::vector<NormalDisplacement>           normal;
+    std::vector<NormalDisplacement<dim>>      normal;
   };
 
   /// Cyclic symmetry (cyclic_symmetry.h): the mesh is a sector of a
@@ -118,6 +122,7 @@ namespace RingContact
     double             slave_rotation;  ///< the slave's turn (elements)
   };
 
+  template <int dim>
   class Scenario
   {
   public:
@@ -132,7 +137,7 @@ namespace RingContact
     create_mesh(Triangulation<dim> &triangulation) const = 0;
 
     /// The bodies, in the order of their finite elements.
-    virtual std::vector<Body>
+    virtual std::vector<Body<dim>>
     bodies() const = 0;
 
     /// The steps and the load state at any pseudo-time.
@@ -143,13 +148,13 @@ namespace RingContact
     /// unknown they fix, and the normal displacements N . u = g of the
     /// nodes they do not fix whole. The unknowns and normals are the same
     /// at every state (they define the constraints), only the values change.
-    virtual ImposedMotion
+    virtual ImposedMotion<dim>
     boundary_motion(const DoFHandler<dim>            &dof_handler,
                     const hp::MappingCollection<dim> &mapping,
                     const LoadState                  &load) const = 0;
 
     /// The loads on boundaries (none by default).
-    virtual std::vector<BoundaryLoad>
+    virtual std::vector<BoundaryLoad<dim>>
     boundary_loads() const
     {
       return {};
@@ -190,7 +195,7 @@ namespace RingContact
     /// quantity that cannot be evaluated (a point outside the mesh) is an
     /// error before any step is solved.
     virtual void
-    report(const SolutionState &state, HistoryRow &row) const = 0;
+    report(const SolutionState<dim> &state, HistoryRow &row) const = 0;
 
     /// Its columns of the step's line (output/progress.h), between the
     /// solver's (step, pseudo-time, Newton iterations, cuts) and the
@@ -232,7 +237,7 @@ namespace RingContact
     /// (where its own entries are, say).
     std::string                                          foreign_entry_hint;
     std::function<std::shared_ptr<ScenarioParameters>()> make_parameters;
-    std::function<std::unique_ptr<Scenario>(const Parameters &)> make;
+    std::function<std::unique_ptr<Scenario<dim>>(const Parameters &)> make;
 
     /// Register a scenario: in its .cc file,
     ///   const ScenarioRegistration::Add registration{...};
@@ -247,7 +252,7 @@ namespace RingContact
   registered_scenarios();
 
   /// The scenario of the parameters.
-  std::unique_ptr<Scenario>
+  std::unique_ptr<Scenario<dim>>
   make_scenario(const Parameters &parameters);
 } // namespace RingContact
 

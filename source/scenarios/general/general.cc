@@ -138,7 +138,7 @@ namespace RingContact
       };
 
       // A problem written in the parameter file.
-      class GeneralProblem : public Scenario
+      class GeneralProblem : public Scenario<dim>
       {
       public:
         // `problem` refers to the scenario's entries, which the copy of the
@@ -190,33 +190,33 @@ namespace RingContact
         // The bodies in the order of the file; each named "Body k" in the
         // messages, with its own material law or the common one. Mapping
         // degree = 0 gives each body its displacement degree.
-        std::vector<Body>
+        std::vector<Body<dim>>
         bodies() const override
         {
-          const auto       &m = parameters.materials;
-          std::vector<Body> bodies;
+          const auto            &m = parameters.materials;
+          std::vector<Body<dim>> bodies;
           for (unsigned int b = 0; b < problem.bodies.size(); ++b)
             {
               const auto &body = problem.bodies[b];
               bodies.push_back(
-                Body{static_cast<types::material_id>(body.material_id),
-                     "Body " + std::to_string(b + 1),
-                     body.degree,
-                     parameters.finite_elements.mapping_degree > 0 ?
-                       parameters.finite_elements.mapping_degree :
-                       body.degree,
-                     Material<dim>(body.youngs_modulus,
-                                   body.poissons_ratio,
-                                   m.plane,
-                                   body.law.empty() ? m.law : body.law)});
+                Body<dim>{static_cast<types::material_id>(body.material_id),
+                          "Body " + std::to_string(b + 1),
+                          body.degree,
+                          parameters.finite_elements.mapping_degree > 0 ?
+                            parameters.finite_elements.mapping_degree :
+                            body.degree,
+                          Material<dim>(body.youngs_modulus,
+                                        body.poissons_ratio,
+                                        m.plane,
+                                        body.law.empty() ? m.law : body.law)});
             }
           return bodies;
         }
 
-        std::vector<BoundaryLoad>
+        std::vector<BoundaryLoad<dim>>
         boundary_loads() const override
         {
-          std::vector<BoundaryLoad> loads;
+          std::vector<BoundaryLoad<dim>> loads;
           for (const auto &condition : problem.boundary_conditions)
             if (condition.type == BoundaryConditionType::traction ||
                 condition.type == BoundaryConditionType::pressure)
@@ -232,11 +232,11 @@ namespace RingContact
                 // Two components for a traction, one for a pressure: the
                 // pressure is the load's first component (BoundaryLoad).
                 const unsigned int n = condition.expressions.size();
-                loads.push_back(BoundaryLoad{
+                loads.push_back(BoundaryLoad<dim>{
                   static_cast<types::boundary_id>(condition.boundary_id),
                   condition.type == BoundaryConditionType::pressure ?
-                    BoundaryLoad::Type::pressure :
-                    BoundaryLoad::Type::traction,
+                    BoundaryLoad<dim>::Type::pressure :
+                    BoundaryLoad<dim>::Type::traction,
                   [expression, n, condition](const Point<dim> &X,
                                              const LoadState  &load) {
                     expression->set_time(load.time);
@@ -309,7 +309,7 @@ namespace RingContact
                           // A pressure pushes along the inward normal, -p N,
                           // taken on the reference boundary.
                           const Tensor<1, dim> force =
-                            load.type == BoundaryLoad::Type::pressure ?
+                            load.type == BoundaryLoad<dim>::Type::pressure ?
                               Tensor<1, dim>(-value[0] * node.N) :
                               value;
                           // Relative to the force: a component that is zero
@@ -373,7 +373,7 @@ namespace RingContact
         // the history holds its whole curve, and the verdicts pick the rows
         // of the checked steps.
         void
-        report(const SolutionState &state, HistoryRow &row) const override
+        report(const SolutionState<dim> &state, HistoryRow &row) const override
         {
           const auto [lowest, highest] =
             ReferencePressure::pressure_extremes(state);
@@ -486,7 +486,7 @@ namespace RingContact
         // and N2 . u = g2 fix the node. A node with one component imposed
         // already gets the other from its normal condition; only a node with
         // nothing else imposed keeps the single linear condition N . u = g.
-        ImposedMotion
+        ImposedMotion<dim>
         boundary_motion(const DoFHandler<dim>            &dof_handler,
                         const hp::MappingCollection<dim> &mapping,
                         const LoadState                  &load) const override
@@ -499,8 +499,8 @@ namespace RingContact
           // corner of a rectangle (90 degrees) both are imposed, while the
           // facets of a curve meshed with a few dozen segments around are
           // averaged.
-          std::vector<NormalDisplacement> normal;
-          const double                    corner = 0.5; // cos 60 degrees
+          std::vector<NormalDisplacement<dim>> normal;
+          const double                         corner = 0.5; // cos 60 degrees
           for (const auto &[node, list] : faces)
             {
               // Two groups: the normals near the first one, and the others.
@@ -545,7 +545,8 @@ namespace RingContact
               // larger |N_a|.
               if (N[1].norm() == 0)
                 {
-                  normal.push_back(NormalDisplacement{node, N[0], value[0]});
+                  normal.push_back(
+                    NormalDisplacement<dim>{node, N[0], value[0]});
                   continue;
                 }
               // A corner: N1 . u = g1, N2 . u = g2, solved for u by Cramer's

@@ -33,10 +33,10 @@ namespace RingContact
       // length element times the weight.
       template <typename Visitor>
       void
-      along_slave_surface(const ContactSurface &slave,
-                          const SolutionState  &state,
-                          const Quadrature<1>  &rule,
-                          const Visitor        &visit)
+      along_slave_surface(const ContactSurface     &slave,
+                          const SolutionState<dim> &state,
+                          const Quadrature<1>      &rule,
+                          const Visitor            &visit)
       {
         std::vector<double> Phi;
         for (unsigned int s = 0; s < slave.segments().size(); ++s)
@@ -72,7 +72,7 @@ namespace RingContact
     // need more than a line have a function of their own below.
     double
     CheckedQuantities::value(const ProblemCheckParameters &check,
-                             const SolutionState          &state) const
+                             const SolutionState<dim>     &state) const
     {
       // The pair whose slave surface is nearest to the point: with several
       // pairs, a check's point names its pair by where it lies. The slave
@@ -143,7 +143,7 @@ namespace RingContact
     void
     CheckedQuantities::require_on_slave_surface(
       const ProblemCheckParameters &check,
-      const SolutionState          &state,
+      const SolutionState<dim>     &state,
       const types::global_dof_index nearest,
       const ContactSurface         &slave) const
     {
@@ -174,7 +174,7 @@ namespace RingContact
     // solver's accuracy, of either sign.)
     double
     CheckedQuantities::contact_half_width(const ProblemCheckParameters &check,
-                                          const SolutionState          &state,
+                                          const SolutionState<dim>     &state,
                                           const ContactSurface &slave) const
     {
       // The nodes of a segment in the order of its unknowns (vertices
@@ -235,7 +235,7 @@ namespace RingContact
     // basis and the geometry's stretch.
     double
     CheckedQuantities::surface_pressure(const ProblemCheckParameters &check,
-                                        const SolutionState          &state,
+                                        const SolutionState<dim>     &state,
                                         const ContactSurface &slave) const
     {
       double minimum           = std::numeric_limits<double>::max(),
@@ -283,7 +283,7 @@ namespace RingContact
     // doc/validation.md, "Figures that were in the code's comments").
     double
     CheckedQuantities::pressure_l2_error(const ProblemCheckParameters &check,
-                                         const SolutionState          &state,
+                                         const SolutionState<dim>     &state,
                                          const ContactSurface &slave) const
     {
       const auto reference = make_expression({check.reference},
@@ -313,7 +313,7 @@ namespace RingContact
     // the boundaries that hold it).
     Tensor<1, dim>
     CheckedQuantities::resultant_force(const ProblemCheckParameters &check,
-                                       const SolutionState &state) const
+                                       const SolutionState<dim> &state) const
     {
       // Summing the nodal forces over a boundary's nodes gave wrong resultants
       // for blocks loaded by (0.1 p, -p) with one x-support, on the support and
@@ -349,7 +349,7 @@ namespace RingContact
     // configuration), found in whichever cell holds it.
     double
     CheckedQuantities::displacement(const ProblemCheckParameters &check,
-                                    const SolutionState          &state) const
+                                    const SolutionState<dim>     &state) const
     {
       // The triangulation is the reference configuration: point_value()
       // finds the cell that holds the point there, so the value is that of

@@ -287,7 +287,7 @@ namespace RingContact
         triangulation.refine_global(parameters.mesh.global_refinements);
       }
 
-      std::vector<Body>
+      std::vector<Body<dim>>
       bodies() const override
       {
         // The lower block is the master body, the upper the slave, as
@@ -300,22 +300,22 @@ namespace RingContact
                     parameters.finite_elements.mapping_degree :
                     degree;
         };
-        return {Body{Ids::lower_block,
-                     "lower block",
-                     blocks.degree_lower,
-                     mapping(blocks.degree_lower),
-                     Material<dim>(blocks.youngs_modulus_lower,
-                                   blocks.poissons_ratio_lower,
-                                   m.plane,
-                                   m.law)},
-                Body{Ids::upper_block,
-                     "upper block",
-                     blocks.degree_upper,
-                     mapping(blocks.degree_upper),
-                     Material<dim>(blocks.youngs_modulus_upper,
-                                   blocks.poissons_ratio_upper,
-                                   m.plane,
-                                   m.law)}};
+        return {Body<dim>{Ids::lower_block,
+                          "lower block",
+                          blocks.degree_lower,
+                          mapping(blocks.degree_lower),
+                          Material<dim>(blocks.youngs_modulus_lower,
+                                        blocks.poissons_ratio_lower,
+                                        m.plane,
+                                        m.law)},
+                Body<dim>{Ids::upper_block,
+                          "upper block",
+                          blocks.degree_upper,
+                          mapping(blocks.degree_upper),
+                          Material<dim>(blocks.youngs_modulus_upper,
+                                        blocks.poissons_ratio_upper,
+                                        m.plane,
+                                        m.law)}};
       }
 
       const LoadProgram &
@@ -324,7 +324,7 @@ namespace RingContact
         return program;
       }
 
-      ImposedMotion
+      ImposedMotion<dim>
       boundary_motion(const DoFHandler<dim>            &dof_handler,
                       const hp::MappingCollection<dim> &mapping,
                       const LoadState                  &load) const override

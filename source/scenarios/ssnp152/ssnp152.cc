@@ -555,27 +555,27 @@ namespace RingContact
         // The two rings, outer (100) and inner (101). Both have the common
         // plane assumption and material law (subsection Materials): SSNP152's
         // rings differ only in their constants and degrees.
-        std::vector<Body>
+        std::vector<Body<dim>>
         bodies() const override
         {
           const auto &m  = parameters.materials;
           const auto &fe = parameters.finite_elements;
-          return {Body{Ids::outer_ring,
-                       "outer ring",
-                       rings.degree_outer,
-                       rings.mapping_degree_of(Ids::outer_ring, fe),
-                       Material<dim>(rings.youngs_modulus_outer,
-                                     rings.poissons_ratio_outer,
-                                     m.plane,
-                                     m.law)},
-                  Body{Ids::inner_ring,
-                       "inner ring",
-                       rings.degree_inner,
-                       rings.mapping_degree_of(Ids::inner_ring, fe),
-                       Material<dim>(rings.youngs_modulus_inner,
-                                     rings.poissons_ratio_inner,
-                                     m.plane,
-                                     m.law)}};
+          return {Body<dim>{Ids::outer_ring,
+                            "outer ring",
+                            rings.degree_outer,
+                            rings.mapping_degree_of(Ids::outer_ring, fe),
+                            Material<dim>(rings.youngs_modulus_outer,
+                                          rings.poissons_ratio_outer,
+                                          m.plane,
+                                          m.law)},
+                  Body<dim>{Ids::inner_ring,
+                            "inner ring",
+                            rings.degree_inner,
+                            rings.mapping_degree_of(Ids::inner_ring, fe),
+                            Material<dim>(rings.youngs_modulus_inner,
+                                          rings.poissons_ratio_inner,
+                                          m.plane,
+                                          m.law)}};
         }
 
         // The ramp (the pressure raised step by step) or the rotation (the
@@ -595,7 +595,7 @@ namespace RingContact
         // constraining the solution sought, which is radial: u_y = 0 at
         // (r, 0) and (-r, 0), u_x = 0 at (0, r), on r = R1 for the outer ring
         // and r = R3 for the inner one.
-        ImposedMotion
+        ImposedMotion<dim>
         boundary_motion(const DoFHandler<dim>            &dof_handler,
                         const hp::MappingCollection<dim> &mapping,
                         const LoadState                  &load) const override
@@ -638,16 +638,17 @@ namespace RingContact
 
         // Pressure loading: p on r = R1, the ramp's pressure, uniform; the
         // value of a pressure load is its first component.
-        std::vector<BoundaryLoad>
+        std::vector<BoundaryLoad<dim>>
         boundary_loads() const override
         {
           if (!pressure_loading)
             return {};
-          return {BoundaryLoad{Ids::outer_boundary,
-                               BoundaryLoad::Type::pressure,
-                               [](const Point<dim> &, const LoadState &load) {
-                                 return Tensor<1, dim>({load("pressure"), 0.0});
-                               }}};
+          return {
+            BoundaryLoad<dim>{Ids::outer_boundary,
+                              BoundaryLoad<dim>::Type::pressure,
+                              [](const Point<dim> &, const LoadState &load) {
+                                return Tensor<1, dim>({load("pressure"), 0.0});
+                              }}};
         }
 
         // A sector of the rings (Mesh/Sector elements): the slave's turn

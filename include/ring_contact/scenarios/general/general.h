@@ -42,33 +42,33 @@ namespace RingContact
       /// off every slave surface).
       double
       value(const ProblemCheckParameters &check,
-            const SolutionState          &state) const;
+            const SolutionState<dim>     &state) const;
 
     private:
       /// A traction's point on a slave surface, else a one-line error.
       void
       require_on_slave_surface(const ProblemCheckParameters &check,
-                               const SolutionState          &state,
+                               const SolutionState<dim>     &state,
                                const types::global_dof_index nearest,
                                const ContactSurface         &slave) const;
       double
       contact_half_width(const ProblemCheckParameters &check,
-                         const SolutionState          &state,
+                         const SolutionState<dim>     &state,
                          const ContactSurface         &slave) const;
       double
       pressure_l2_error(const ProblemCheckParameters &check,
-                        const SolutionState          &state,
+                        const SolutionState<dim>     &state,
                         const ContactSurface         &slave) const;
       double
       surface_pressure(const ProblemCheckParameters &check,
-                       const SolutionState          &state,
+                       const SolutionState<dim>     &state,
                        const ContactSurface         &slave) const;
       Tensor<1, dim>
       resultant_force(const ProblemCheckParameters &check,
-                      const SolutionState          &state) const;
+                      const SolutionState<dim>     &state) const;
       double
       displacement(const ProblemCheckParameters &check,
-                   const SolutionState          &state) const;
+                   const SolutionState<dim>     &state) const;
 
       const ProblemParameters &problem;
       /// Built at the first resultant asked for, again when the mesh changes.
