@@ -47,8 +47,10 @@ namespace
     }
     Parameters parameters;
     parameters.read("case.prm");
-    std::ostringstream log;
-    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    std::ostringstream  log;
+    ContactProblem<dim> problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     check(problem.run(), "the step is solved");
     const auto &row = problem.history().back();
     return {log.str(),

@@ -130,9 +130,11 @@ main()
   // What the run finds: a converged first step whose pressure is not
   // uniform, and a warning before the first step.
   {
-    Parameters         parameters = read(mu);
-    std::ostringstream log;
-    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    Parameters          parameters = read(mu);
+    std::ostringstream  log;
+    ContactProblem<dim> problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     check(problem.run(), "the run converges");
     const auto  &row  = problem.history().front();
     const double low  = row.value("pressure_min") / (p * t),
@@ -149,9 +151,11 @@ main()
 
   // The uniform state at the same load: its residual is round-off.
   {
-    Parameters         parameters = read(mu);
-    std::ostringstream log;
-    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    Parameters              parameters = read(mu);
+    std::ostringstream      log;
+    ContactProblem<dim>     problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     ContactProblemInspector inspector(problem);
     inspector.setup();
     inspector.set_load_state(LoadProgram::steps(parameters.load).state(t));
@@ -167,9 +171,11 @@ main()
 
   // Below the bound: the run finds the uniform state, and says nothing.
   {
-    Parameters         parameters = read(1.0);
-    std::ostringstream log;
-    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    Parameters          parameters = read(1.0);
+    std::ostringstream  log;
+    ContactProblem<dim> problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     check(problem.run(), "the run converges at mu = 1");
     const auto &row = problem.history().front();
     check(std::abs(row.value("pressure_min") / (p * t) - 1) < 1e-9 &&

@@ -97,7 +97,7 @@ namespace
 
   // prm/hertz.prm at h = 0.005 with `entries` added, solved in `steps`
   // steps: the history of the run and its checks.
-  std::unique_ptr<ContactProblem>
+  std::unique_ptr<ContactProblem<dim>>
   solve(const std::string  &what,
         const std::string  &entries,
         const unsigned int  steps,
@@ -119,9 +119,9 @@ namespace
     Parameters parameters;
     parameters.read("one_step.prm");
     auto problem =
-      std::make_unique<ContactProblem>(parameters,
-                                       parameters.contact.schemes.front(),
-                                       log);
+      std::make_unique<ContactProblem<dim>>(parameters,
+                                            parameters.contact.schemes.front(),
+                                            log);
     check(problem->run(), what + ": the step is solved");
     return problem;
   }

@@ -40,10 +40,10 @@ namespace
     }
     Parameters parameters;
     parameters.read("case.prm");
-    std::ostringstream log;
-    ContactProblem problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
+    std::ostringstream  log;
+    ContactProblem<dim> problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     problem.run();
     return log.str();
   }
@@ -62,8 +62,7 @@ main()
                    " set Mapping degree = 0\nend\n");
   const auto at = mixed.find(warning);
   check(at != std::string::npos,
-        "a curved slave against a faceted master is named; the log:\n" +
-          mixed);
+        "a curved slave against a faceted master is named; the log:\n" + mixed);
   const double depth    = std::stod(mixed.substr(at + warning.size()));
   const double sagitta  = 0.6 * (1 - std::cos(M_PI / 40));
   const double expected = 2.0 / 3.0 * sagitta;

@@ -33,8 +33,10 @@ main()
   }
   Parameters parameters;
   parameters.read("inverted.prm");
-  std::ostringstream log;
-  ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+  std::ostringstream  log;
+  ContactProblem<dim> problem(parameters,
+                              parameters.contact.schemes.front(),
+                              log);
   check(!problem.run(), "the run stops");
   check(problem.history().empty(), "no step is accepted");
   check(log.str().find("Newton did not converge after 2 step cuts "
@@ -49,9 +51,9 @@ main()
   // boundary (and so from the contact surfaces) set to 1e300: the four
   // cells around it have no det F at their quadrature points.
   {
-    ContactProblem          nan_problem(parameters,
-                               parameters.contact.schemes.front(),
-                               log);
+    ContactProblem<dim>     nan_problem(parameters,
+                                    parameters.contact.schemes.front(),
+                                    log);
     ContactProblemInspector inspector(nan_problem);
     inspector.setup();
     inspector.set_load_state({0, {{"pressure", 1e5}, {"rotation", 0}}});

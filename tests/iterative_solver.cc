@@ -48,8 +48,8 @@ namespace
     Run run;
     for (const auto &scheme : parameters.contact.schemes)
       {
-        std::ostringstream log;
-        ContactProblem problem(parameters, scheme, log, MPI_COMM_WORLD);
+        std::ostringstream  log;
+        ContactProblem<dim> problem(parameters, scheme, log, MPI_COMM_WORLD);
         check(problem.run(), name + ", " + scheme.name() + ": solved");
         run.histories.push_back(problem.history());
         std::smatch       match;

@@ -44,8 +44,8 @@ namespace
     std::vector<std::vector<HistoryRow>> histories;
     for (const auto &scheme : parameters.contact.schemes)
       {
-        std::ostringstream log;
-        ContactProblem problem(parameters, scheme, log, communicator);
+        std::ostringstream  log;
+        ContactProblem<dim> problem(parameters, scheme, log, communicator);
         check(problem.run(), scheme.name() + ": every step is solved");
         histories.push_back(problem.history());
       }

@@ -74,8 +74,10 @@ namespace
     }
     Parameters parameters;
     parameters.read("case.prm");
-    std::ostringstream log;
-    ContactProblem problem(parameters, parameters.contact.schemes.front(), log);
+    std::ostringstream  log;
+    ContactProblem<dim> problem(parameters,
+                                parameters.contact.schemes.front(),
+                                log);
     check(problem.run(), "the patch test is solved");
     const auto &row = problem.history().back();
     return {log.str().find("does not pass the contact patch test") !=

@@ -128,8 +128,8 @@ namespace
     text << std::setprecision(6) << "subsection Contact\n set Integration "
          << "schemes = " << scheme << "\n set Friction coefficient = " << mu
          << "\nend\n"
-         << "subsection Load program\n set Number of steps = "
-         << integer(2, 4) << "\n set Time points =\nend\n";
+         << "subsection Load program\n set Number of steps = " << integer(2, 4)
+         << "\n set Time points =\nend\n";
     (void)rotated;
     return text.str();
   }
@@ -139,10 +139,11 @@ namespace
   {
     Case c;
     c.n_bodies = 2;
-    double      softest;
-    std::string summary;
-    const auto  bodies = random_bodies(2, softest, summary);
-    const unsigned int nl = integer(2, 8), nu = integer(2, 9), nh = integer(1, 4);
+    double             softest;
+    std::string        summary;
+    const auto         bodies = random_bodies(2, softest, summary);
+    const unsigned int nl = integer(2, 8), nu = integer(2, 9),
+                       nh    = integer(1, 4);
     const double       angle = turned ? uniform(5, 60) : 0.0;
     const double       p     = softest * log_uniform(1e-5, 3e-4);
     const double       shear = turned ? 0.0 : uniform(-0.3, 0.3);
@@ -154,8 +155,7 @@ namespace
          << nl << ", nu = " << nu << ", nh = " << nh;
     if (turned)
       text << ", angle = " << angle;
-    text << "\nend\n"
-         << bodies << common_choices(summary, turned);
+    text << "\nend\n" << bodies << common_choices(summary, turned);
     if (!turned)
       text << "subsection Boundary condition 1\n set Value = " << shear * p
            << " * t; " << -p << " * t\nend\n";
@@ -176,20 +176,19 @@ namespace
   {
     Case c;
     c.n_bodies = 3;
-    double      softest;
-    std::string summary;
-    const auto  bodies = random_bodies(3, softest, summary);
+    double             softest;
+    std::string        summary;
+    const auto         bodies = random_bodies(3, softest, summary);
     const unsigned int nl = integer(2, 6), nm = integer(2, 7),
                        nu = integer(2, 6), nh = integer(1, 3);
-    const double       p  = softest * log_uniform(1e-5, 3e-4);
+    const double       p = softest * log_uniform(1e-5, 3e-4);
     std::ostringstream text;
     text << std::setprecision(6)
          << "include " RING_CONTACT_SOURCE_DIR "/prm/three_blocks.prm"
          << "\nsubsection Mesh\n set Mesh file = " RING_CONTACT_SOURCE_DIR
             "/meshes/three_blocks.geo\n set Geo parameters = nl = "
          << nl << ", nm = " << nm << ", nu = " << nu << ", nh = " << nh
-         << "\nend\nsubsection Problem\n set Constants = p = " << p
-         << "\nend\n"
+         << "\nend\nsubsection Problem\n set Constants = p = " << p << "\nend\n"
          << bodies << common_choices(summary, false);
     c.free_boundaries = {21, 22, 23, 12, 13, 31, 32, 33};
     text << resultant_checks(c.free_boundaries);
@@ -206,10 +205,10 @@ namespace
   {
     Case c;
     c.n_bodies = 2;
-    double      softest;
-    std::string summary;
-    const auto  bodies = random_bodies(2, softest, summary);
-    const double h     = one_of<double>({0.05, 0.04, 0.03});
+    double             softest;
+    std::string        summary;
+    const auto         bodies = random_bodies(2, softest, summary);
+    const double       h      = one_of<double>({0.05, 0.04, 0.03});
     std::ostringstream text;
     text << std::setprecision(6)
          << "include " RING_CONTACT_SOURCE_DIR "/prm/hertz.prm"
@@ -242,7 +241,7 @@ main()
                                   family == 1 ? two_blocks(true) :
                                   family == 2 ? three_blocks() :
                                                 cylinder_on_block();
-      const std::string name = "case " + std::to_string(k) + ": ";
+      const std::string  name   = "case " + std::to_string(k) + ": ";
       {
         std::ofstream prm("probe.prm");
         prm << c.prm
@@ -259,8 +258,8 @@ main()
         {
           check(false, name + c.description + ": refused: " + e.what());
         }
-      std::ostringstream              log;
-      RingContact::ContactProblem problem(
+      std::ostringstream               log;
+      RingContact::ContactProblem<dim> problem(
         parameters, parameters.contact.schemes.front(), log);
       bool solved = false;
       try
@@ -276,8 +275,8 @@ main()
               log.str());
       for (const auto &row : problem.history())
         {
-          const std::string at = name + c.description + ", step " +
-                                 std::to_string(row.step) + ": ";
+          const std::string at =
+            name + c.description + ", step " + std::to_string(row.step) + ": ";
           check(row.equilibrium_error <= 1e-6,
                 at + "equilibrium " + std::to_string(row.equilibrium_error));
           check(std::isnan(row.action_reaction_error) ||
@@ -287,7 +286,7 @@ main()
           // The quantities: the y resultants of the free boundaries, then
           // the x ones (as many as fit in 12 checks).
           double       sum[2] = {0, 0}, magnitude[2] = {0, 0};
-          unsigned int q      = 0;
+          unsigned int q = 0;
           for (unsigned int component : {1u, 0u})
             for (unsigned int b = 0;
                  b < c.free_boundaries.size() && q < row.trailing.size();
@@ -299,7 +298,8 @@ main()
                 magnitude[component] += std::abs(value);
               }
           // x is summed only when every boundary's x resultant is there.
-          const bool all_x = row.trailing.size() >= 2 * c.free_boundaries.size();
+          const bool all_x =
+            row.trailing.size() >= 2 * c.free_boundaries.size();
           for (unsigned int component = 0; component < 2; ++component)
             if (component == 1 || all_x)
               check(std::abs(sum[component]) <=

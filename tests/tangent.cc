@@ -148,9 +148,9 @@ namespace
     }
     parameters.read("tangent.prm");
     std::ostringstream      log;
-    ContactProblem          contact_problem(parameters,
-                                   parameters.contact.schemes.front(),
-                                   log);
+    ContactProblem<dim>     contact_problem(parameters,
+                                        parameters.contact.schemes.front(),
+                                        log);
     ContactProblemInspector problem(contact_problem);
     problem.setup();
     problem.set_load_state({0, {{"pressure", 1e7}, {"rotation", 0}}});
@@ -209,7 +209,7 @@ namespace
     // measures but the force floor, which needs the tangent.
     {
       problem.assemble_newton_system(Pairing::search,
-                                     ContactProblem::Assembly::residual);
+                                     ContactProblem<dim>::Assembly::residual);
       const ResidualMeasure measure = problem.residual_measure();
       double                largest = 0, difference = 0;
       for (types::global_dof_index i = 0; i < u.size(); ++i)

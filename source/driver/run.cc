@@ -298,8 +298,8 @@ namespace RingContact
             const auto &scheme = parameters.contact.schemes[s];
             if (stop)
               break;
-            ContactProblem problem(parameters, scheme, out, world);
-            const auto     columns = problem.history_columns();
+            ContactProblem<dim> problem(parameters, scheme, out, world);
+            const auto          columns = problem.history_columns();
             problem.set_progress(progress);
             progress.start_scheme(s);
             // Until the problem starts, an error is a refusal of its input

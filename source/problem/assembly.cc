@@ -43,8 +43,9 @@ namespace RingContact
   // share one scalar shape function, so the gradients are stored per
   // scalar function (n_bases per point), not per unknown, which halves
   // them.
+  template <int dim>
   void
-  ContactProblem::store_reference_geometry()
+  ContactProblem<dim>::store_reference_geometry()
   {
     auto &geometry = reference_geometry;
     geometry.layout.resize(fe_collection.size());
@@ -113,9 +114,10 @@ namespace RingContact
   // holds it because it cycles (`pairing`). The count of nodes whose
   // status changed goes back to the Newton solver, which accepts no iterate
   // whose active set is still changing.
+  template <int dim>
   unsigned int
-  ContactProblem::assemble_newton_system(const Pairing  pairing,
-                                         const Assembly what)
+  ContactProblem<dim>::assemble_newton_system(const Pairing  pairing,
+                                              const Assembly what)
   {
     // Only finite numbers in the state: an update that overflowed (a body
     // as soft as E = 1e-200, a diverging iterate) fails the iteration here,
@@ -157,8 +159,9 @@ namespace RingContact
   // The order is that of the magnitudes: the contact terms first, alone in
   // the system, so that their rows' magnitudes can be read off it; then the
   // bulk and the loads, which add theirs cell by cell.
+  template <int dim>
   void
-  ContactProblem::assemble_system(Assembly what)
+  ContactProblem<dim>::assemble_system(Assembly what)
   {
     if (update_constraints().has_inhomogeneities())
       what = Assembly::residual_and_tangent;
@@ -243,8 +246,9 @@ namespace RingContact
   // contact row is computed from positions X + u (the gap, the normal), so
   // its round-off is eps |K_ij| (|X| + |u_j|), not eps |K_ij| |u_j|. At
   // p = 1e4 on steel this is a thousand times the bulk's.
+  template <int dim>
   void
-  ContactProblem::assemble_contact_terms()
+  ContactProblem<dim>::assemble_contact_terms()
   {
     for (const auto &contact : contacts)
       contact->assemble(solution, update_constraints(), *system);
@@ -280,8 +284,9 @@ namespace RingContact
   // phi = e_c (x) grad(phi_c), so that Grad u = sum_i u_i e_c (x)
   // grad(phi_i), P : Grad(phi_i) = P_cJ d_J phi_i and the tangent is d_J
   // phi_i A_cJdL d_L phi_j.
+  template <int dim>
   void
-  ContactProblem::assemble_bulk(const bool tangent)
+  ContactProblem<dim>::assemble_bulk(const bool tangent)
   {
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
@@ -404,10 +409,11 @@ namespace RingContact
   // plane stress past its thickness stretch's zero, whose stress would be
   // that of an imaginary thickness), counted with the inverted points; the
   // body of the smallest material id is named.
+  template <int dim>
   bool
-  ContactProblem::outside_law(const Material<dim>     &material,
-                              const Tensor<2, dim>    &grad_u,
-                              const types::material_id body)
+  ContactProblem<dim>::outside_law(const Material<dim>     &material,
+                                   const Tensor<2, dim>    &grad_u,
+                                   const types::material_id body)
   {
     if (material.in_range(grad_u))
       return false;
@@ -424,8 +430,9 @@ namespace RingContact
   // assembly checked first, but its gradient's products overflow: inf -
   // inf), and those outside the material law's range with the law's
   // condition.
+  template <int dim>
   std::string
-  ContactProblem::inverted_state_reason() const
+  ContactProblem<dim>::inverted_state_reason() const
   {
     std::ostringstream reason;
     const unsigned int n_negative =
@@ -455,8 +462,9 @@ namespace RingContact
   // magnitude of its terms: computed from the displacement alone, their
   // round-off is eps sum_j |K_ij| |u_j| (see residual_measure()). Without
   // the tangent, the right-hand side and the force alone.
+  template <int dim>
   void
-  ContactProblem::add_local_system(
+  ContactProblem<dim>::add_local_system(
     const FullMatrix<double>                   &matrix,
     const Vector<double>                       &rhs,
     const std::vector<types::global_dof_index> &dofs,
@@ -499,8 +507,9 @@ namespace RingContact
   // evaluated at the reference position of the quadrature point.
   // A traction t per reference length: the dead load, - int phi_i . t dA
   // in the residual, no tangent.
+  template <int dim>
   void
-  ContactProblem::assemble_boundary_loads()
+  ContactProblem<dim>::assemble_boundary_loads()
   {
     // The resultants of this assembly's state only (a follower pressure's
     // changes with the surface).
@@ -611,4 +620,34 @@ namespace RingContact
               add_local_system(face_matrix, face_rhs, dofs, external_force);
             }
   }
+
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template void
+  ContactProblem<2>::store_reference_geometry();
+  template unsigned int
+  ContactProblem<2>::assemble_newton_system(const Pairing  pairing,
+                                            const Assembly what);
+  template void
+  ContactProblem<2>::assemble_system(Assembly what);
+  template void
+  ContactProblem<2>::assemble_contact_terms();
+  template void
+  ContactProblem<2>::assemble_bulk(const bool tangent);
+  template bool
+  ContactProblem<2>::outside_law(const Material<dim>     &material,
+                                 const Tensor<2, dim>    &grad_u,
+                                 const types::material_id body);
+  template std::string
+  ContactProblem<2>::inverted_state_reason() const;
+  template void
+  ContactProblem<2>::add_local_system(
+    const FullMatrix<double>                   &matrix,
+    const Vector<double>                       &rhs,
+    const std::vector<types::global_dof_index> &dofs,
+    Vector<double>                             &force,
+    const unsigned int                          cell);
+  template void
+  ContactProblem<2>::assemble_boundary_loads();
 } // namespace RingContact

@@ -31,8 +31,9 @@ namespace RingContact
   // same at every load state (the scenario promises it), so that the
   // constraints, the sparsity pattern and the direct solver's analysis
   // outlive the load steps; each step changes the values alone.
+  template <int dim>
   void
-  ContactProblem::make_constraints()
+  ContactProblem<dim>::make_constraints()
   {
     hanging_node_constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler,
@@ -89,8 +90,9 @@ namespace RingContact
   // moves the boundary to a new load state.
   // A normal displacement N . u = g constrains the component a with the
   // larger |N_a|: du_a = -(N_b / N_a) du_b + (its increment).
+  template <int dim>
   void
-  ContactProblem::add_constraints(
+  ContactProblem<dim>::add_constraints(
     AffineConstraints<double>                       &target,
     const std::map<types::global_dof_index, double> &boundary_increment,
     const std::vector<double>                       &normal_increment,
@@ -157,8 +159,9 @@ namespace RingContact
   // Newton then converges to another solution, the rings apart. Imposed on
   // the linearised problem, the increment spreads over the rings (step-44).
   // Returns whether there is an increment to impose.
+  template <int dim>
   bool
-  ContactProblem::impose_boundary_increment()
+  ContactProblem<dim>::impose_boundary_increment()
   {
     // The increments, and the sizes that decide whether there is one at
     // all: the largest increment against the largest imposed value.
@@ -205,9 +208,10 @@ namespace RingContact
   // The value of the constrained component u_a that satisfies the k-th
   // normal condition N . u = g with the other component of `u`:
   // u_a = (g - N_b u_b) / N_a.
+  template <int dim>
   double
-  ContactProblem::normal_constrained_value(const unsigned int    k,
-                                           const Vector<double> &u) const
+  ContactProblem<dim>::normal_constrained_value(const unsigned int    k,
+                                                const Vector<double> &u) const
   {
     const auto        &line = normal_target[k];
     const unsigned int a = normal_component[k], b = 1 - a;
@@ -218,8 +222,9 @@ namespace RingContact
   // values, then the normal conditions (a normal condition's other unknown
   // may be an imposed one). The updates from here keep it: their
   // constraints are the homogeneous ones (update_constraints()).
+  template <int dim>
   void
-  ContactProblem::set_boundary_at_target()
+  ContactProblem<dim>::set_boundary_at_target()
   {
     for (const auto &[dof, value] : boundary_target)
       solution(dof) = value;
@@ -233,8 +238,9 @@ namespace RingContact
   // Nothing is moved here: the first update of the step imposes the target
   // (impose_boundary_increment()), and a step that is cut asks again for
   // the state at its shorter increment.
+  template <int dim>
   void
-  ContactProblem::apply_boundary_motion(const LoadState &load)
+  ContactProblem<dim>::apply_boundary_motion(const LoadState &load)
   {
     ImposedMotion<dim> motion =
       scenario->boundary_motion(dof_handler, mapping_collection, load);
@@ -248,8 +254,10 @@ namespace RingContact
   // tenth of their increment from the converged state. On a path linear in the
   // extrapolated parameter they agree to round-off (or to second order, turning
   // a boundary in small steps).
+  template <int dim>
   bool
-  ContactProblem::boundary_near_target(const Vector<double> &converged) const
+  ContactProblem<dim>::boundary_near_target(
+    const Vector<double> &converged) const
   {
     double miss = 0, increment = 0, largest = 0;
     for (const auto &[dof, value] : boundary_target)
@@ -283,9 +291,27 @@ namespace RingContact
                      1e3 * std::numeric_limits<double>::epsilon() * largest;
   }
 
-  // One step of the load program, cut in halves while Newton fails. The
-  // step is reached through sub-increments: each one that converges
-  // becomes the new start, and a halved increment is kept for the rest of
-  // the step (it is not doubled again). A run ends only when a step still
-  // fails after Newton/Maximum step cuts halvings; the steps before it are
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template void
+  ContactProblem<2>::make_constraints();
+  template void
+  ContactProblem<2>::add_constraints(
+    AffineConstraints<double>                       &target,
+    const std::map<types::global_dof_index, double> &boundary_increment,
+    const std::vector<double>                       &normal_increment,
+    std::vector<bool>                               *fixed_dofs);
+  template bool
+  ContactProblem<2>::impose_boundary_increment();
+  template double
+  ContactProblem<2>::normal_constrained_value(const unsigned int    k,
+                                              const Vector<double> &u) const;
+  template void
+  ContactProblem<2>::set_boundary_at_target();
+  template void
+  ContactProblem<2>::apply_boundary_motion(const LoadState &load);
+  template bool
+  ContactProblem<2>::boundary_near_target(
+    const Vector<double> &converged) const;
 } // namespace RingContact

@@ -26,10 +26,11 @@ namespace RingContact
   // general problem written in the file): the bodies with their materials,
   // the boundary loads and the load program. The constructor only stores them;
   // the mesh and the unknowns are made by run() (setup.cc).
-  ContactProblem::ContactProblem(const Parameters        &parameters,
-                                 const IntegrationScheme &scheme,
-                                 std::ostream            &log,
-                                 const MPI_Comm           communicator)
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(const Parameters        &parameters,
+                                      const IntegrationScheme &scheme,
+                                      std::ostream            &log,
+                                      const MPI_Comm           communicator)
       : parameters(parameters)
       , scheme(scheme)
       , log(log)
@@ -70,8 +71,9 @@ namespace RingContact
   // the start observer is called: the driver clears an earlier run's
   // results only then, so that a run that fails on its input does not wipe
   // them.
+  template <int dim>
   bool
-  ContactProblem::run()
+  ContactProblem<dim>::run()
   {
     setup();
     diagnose_start();
@@ -137,22 +139,33 @@ namespace RingContact
   // The columns and the verdicts are the scenario's: the problem class
   // knows the solver's own columns (steps, iterations, cuts, invariants)
   // and leaves the quantities and their references to the problem posed.
+  template <int dim>
   std::vector<std::string>
-  ContactProblem::history_columns() const
+  ContactProblem<dim>::history_columns() const
   {
     return RingContact::history_columns(scenario->leading_columns(),
                                         scenario->trailing_columns());
   }
 
+  template <int dim>
   std::vector<Verdict>
-  ContactProblem::verdicts() const
+  ContactProblem<dim>::verdicts() const
   {
     return scenario->evaluate_checks(scheme.name(), history_rows);
   }
 
+  template <int dim>
   unsigned int
-  ContactProblem::n_steps() const
+  ContactProblem<dim>::n_steps() const
   {
     return load_program.n_steps();
   }
+
+
+  // The class for the dimensions the program runs in: this file's
+  // members, those defined in the header and the virtual table; the
+  // other chapters instantiate their own members (as ASPECT's Simulator
+  // does), since an explicit instantiation of the class only takes
+  // the members defined where it stands.
+  template class ContactProblem<2>;
 } // namespace RingContact

@@ -64,8 +64,9 @@ namespace RingContact
   // A fixed tolerance cannot do this: the contact rows are evaluated from
   // positions of size R, so their noise does not scale with the load, and
   // at p = 1e4 on steel it is 1e-9 of the reactions.
+  template <int dim>
   ResidualMeasure
-  ContactProblem::residual_measure() const
+  ContactProblem<dim>::residual_measure() const
   {
     // Several roundings per term, the linear solver's backward error, and
     // the row sums of the noise: a factor of ten over eps |K| |z|, above the
@@ -192,9 +193,10 @@ namespace RingContact
   // was so, UMFPACK's code ended the run, or a block pushed sideways with no
   // support "converged", slid away, with a fraction of its contact pressure
   // (doc/validation.md, "Figures that were in the code's comments").
+  template <int dim>
   bool
-  ContactProblem::solve_linear_system(Vector<double> &newton_update,
-                                      std::string    &failure_reason)
+  ContactProblem<dim>::solve_linear_system(Vector<double> &newton_update,
+                                           std::string    &failure_reason)
   {
     Assert(tangent_assembled, ExcMessage("The system has no tangent."));
     TimerOutput::Scope t(timer, "linear solver");
@@ -268,9 +270,10 @@ namespace RingContact
   // A failed try goes back to a converged state: the load state with it, and
   // the contact interfaces paired again there, so that what they say (to the
   // next try, and to the output if the run stops here) is that state's.
+  template <int dim>
   void
-  ContactProblem::restore_state(const Vector<double> &state,
-                                const LoadState      &load)
+  ContactProblem<dim>::restore_state(const Vector<double> &state,
+                                     const LoadState      &load)
   {
     solution     = state;
     current_load = load;
@@ -278,15 +281,17 @@ namespace RingContact
       contact->update(solution);
   }
 
+  template <int dim>
   void
-  ContactProblem::accept_contact_state(const Vector<double> &state)
+  ContactProblem<dim>::accept_contact_state(const Vector<double> &state)
   {
     for (const auto &contact : contacts)
       contact->accept_state(state);
   }
 
+  template <int dim>
   std::vector<ContactPairState>
-  ContactProblem::contact_pair_states() const
+  ContactProblem<dim>::contact_pair_states() const
   {
     std::vector<ContactPairState> pairs;
     for (const auto &contact : contacts)
@@ -304,8 +309,9 @@ namespace RingContact
     return pairs;
   }
 
+  template <int dim>
   std::vector<NodeStates>
-  ContactProblem::contact_node_states() const
+  ContactProblem<dim>::contact_node_states() const
   {
     std::vector<NodeStates> states;
     for (const auto &contact : contacts)
@@ -313,22 +319,25 @@ namespace RingContact
     return states;
   }
 
+  template <int dim>
   void
-  ContactProblem::start_contact_step()
+  ContactProblem<dim>::start_contact_step()
   {
     for (const auto &contact : contacts)
       contact->active_set().start_step(solution);
   }
 
+  template <int dim>
   void
-  ContactProblem::hold_stick(const bool hold)
+  ContactProblem<dim>::hold_stick(const bool hold)
   {
     for (const auto &contact : contacts)
       contact->active_set().hold_stick(hold);
   }
 
+  template <int dim>
   void
-  ContactProblem::allow_edge_extrapolation(const std::vector<bool> &allow)
+  ContactProblem<dim>::allow_edge_extrapolation(const std::vector<bool> &allow)
   {
     AssertDimension(allow.size(), contacts.size());
     for (unsigned int i = 0; i < contacts.size(); ++i)
@@ -342,16 +351,18 @@ namespace RingContact
   // cyclic sector: small strain there solved a sector of 11 of 12 elements
   // (C, Gauss 2) with an inexact tangent, linearly converging, a defect of
   // its own, left open.
+  template <int dim>
   bool
-  ContactProblem::may_linearise() const
+  ContactProblem<dim>::may_linearise() const
   {
     return sector.angle == 0;
   }
 
   // The model's laws are kept aside while the problem is linearised
   // (model_materials is then not empty), and come back after.
+  template <int dim>
   void
-  ContactProblem::linearise(const bool on)
+  ContactProblem<dim>::linearise(const bool on)
   {
     if (on == !model_materials.empty())
       return;
@@ -378,14 +389,16 @@ namespace RingContact
   // A state with inverted points (det F <= 0), or points outside their
   // material law, is never accepted: the assembly counts them
   // (assembly.cc), and the Newton solver stops there with the reason.
+  template <int dim>
   bool
-  ContactProblem::state_rejected() const
+  ContactProblem<dim>::state_rejected() const
   {
     return n_inverted > 0;
   }
 
+  template <int dim>
   std::string
-  ContactProblem::rejection_reason() const
+  ContactProblem<dim>::rejection_reason() const
   {
     return inverted_state_reason();
   }
@@ -396,11 +409,46 @@ namespace RingContact
   // Asked at every iteration and between step cuts: a SIGTERM used to wait
   // for all the cuts of a step (with Maximum step cuts = 30, over a
   // minute).
+  template <int dim>
   bool
-  ContactProblem::stop_requested() const
+  ContactProblem<dim>::stop_requested() const
   {
     const bool here = stop_signal != 0;
     return n_processes > 1 ? Utilities::MPI::logical_or(here, communicator) :
                              here;
   }
+
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template ResidualMeasure
+  ContactProblem<2>::residual_measure() const;
+  template bool
+  ContactProblem<2>::solve_linear_system(Vector<double> &newton_update,
+                                         std::string    &failure_reason);
+  template void
+  ContactProblem<2>::restore_state(const Vector<double> &state,
+                                   const LoadState      &load);
+  template void
+  ContactProblem<2>::accept_contact_state(const Vector<double> &state);
+  template std::vector<ContactPairState>
+  ContactProblem<2>::contact_pair_states() const;
+  template std::vector<NodeStates>
+  ContactProblem<2>::contact_node_states() const;
+  template void
+  ContactProblem<2>::start_contact_step();
+  template void
+  ContactProblem<2>::hold_stick(const bool hold);
+  template void
+  ContactProblem<2>::allow_edge_extrapolation(const std::vector<bool> &allow);
+  template bool
+  ContactProblem<2>::may_linearise() const;
+  template void
+  ContactProblem<2>::linearise(const bool on);
+  template bool
+  ContactProblem<2>::state_rejected() const;
+  template std::string
+  ContactProblem<2>::rejection_reason() const;
+  template bool
+  ContactProblem<2>::stop_requested() const;
 } // namespace RingContact

@@ -39,8 +39,9 @@ namespace RingContact
   // stiffnesses are too far apart for double precision (a body 1e-9 thick,
   // Young's moduli 1e9 apart), which failed as a body "free to move
   // rigidly".
+  template <int dim>
   void
-  ContactProblem::diagnose_start()
+  ContactProblem<dim>::diagnose_start()
   {
     // At the pseudo-times of every step, since a general problem's boundary
     // data are expressions of t.
@@ -113,8 +114,10 @@ namespace RingContact
   // transfer is measured against the mortar one on fresh interfaces of the
   // same pair (the problem's own are left as they are), and a departure is
   // said with its figures (diagnostics/surfaces_at_rest.h).
+  template <int dim>
   void
-  ContactProblem::report_non_matching_surfaces(const unsigned int pair) const
+  ContactProblem<dim>::report_non_matching_surfaces(
+    const unsigned int pair) const
   {
     if (scheme.cuts_at_master_kinks())
       return;
@@ -143,8 +146,9 @@ namespace RingContact
   // one pair. The lists leave out the end side's twins of a cyclic sector
   // (one node, two unknowns tied by a constraint), so that counts and
   // extremes see each node once.
+  template <int dim>
   std::vector<const ContactInterface<dim> *>
-  ContactProblem::contact_interfaces() const
+  ContactProblem<dim>::contact_interfaces() const
   {
     std::vector<const ContactInterface<dim> *> interfaces;
     for (const auto &contact : contacts)
@@ -152,8 +156,9 @@ namespace RingContact
     return interfaces;
   }
 
+  template <int dim>
   std::vector<types::global_dof_index>
-  ContactProblem::contact_nodes() const
+  ContactProblem<dim>::contact_nodes() const
   {
     std::vector<types::global_dof_index> nodes;
     for (const auto &contact : contacts)
@@ -163,8 +168,9 @@ namespace RingContact
     return nodes;
   }
 
+  template <int dim>
   unsigned int
-  ContactProblem::n_contact_nodes() const
+  ContactProblem<dim>::n_contact_nodes() const
   {
     unsigned int n = 0;
     for (const auto &contact : contacts)
@@ -172,8 +178,9 @@ namespace RingContact
     return n;
   }
 
+  template <int dim>
   unsigned int
-  ContactProblem::n_active_nodes() const
+  ContactProblem<dim>::n_active_nodes() const
   {
     unsigned int n = 0;
     for (const auto &contact : contacts)
@@ -185,8 +192,9 @@ namespace RingContact
   // the rings, (R2, 0) on the slave surface, or a general problem's checked
   // point is found. A point farther from every node than a slave segment
   // is refused by the scenario before the first step.
+  template <int dim>
   types::global_dof_index
-  ContactProblem::contact_node_nearest_to(const Point<dim> &point) const
+  ContactProblem<dim>::contact_node_nearest_to(const Point<dim> &point) const
   {
     double                  best = std::numeric_limits<double>::infinity();
     types::global_dof_index node = numbers::invalid_dof_index;
@@ -210,8 +218,10 @@ namespace RingContact
   // interface circle shrinks by about 1 %, and the two differ by as much,
   // as large as the effects being measured: the file says which one to
   // report (Contact/Reported pressure).
+  template <int dim>
   double
-  ContactProblem::reported_pressure(const types::global_dof_index dof) const
+  ContactProblem<dim>::reported_pressure(
+    const types::global_dof_index dof) const
   {
     const double lambda = solution(dof);
     return parameters.contact.reported_pressure == PressureMeasure::cauchy ?
@@ -225,11 +235,12 @@ namespace RingContact
   // The row of the step: the solver's columns, the scenario's quantities,
   // and the invariants; the step's line in the log; a state that fails an
   // invariant is reported, not recorded; then the VTU files.
+  template <int dim>
   void
-  ContactProblem::postprocess_step(const unsigned int step,
-                                   const unsigned int iterations,
-                                   const unsigned int cuts,
-                                   const double       wall_time)
+  ContactProblem<dim>::postprocess_step(const unsigned int step,
+                                        const unsigned int iterations,
+                                        const unsigned int cuts,
+                                        const double       wall_time)
   {
     TimerOutput::Scope t(timer, "postprocessing");
     // The solver's columns; the scenario adds its quantities (pressure at
@@ -279,8 +290,9 @@ namespace RingContact
   // equilibrium.h), the time since the run started and a forecast of the
   // time left. The first line of a scheme comes with the table's header,
   // and the scenario's legend of its columns where it has one.
+  template <int dim>
   void
-  ContactProblem::print_step_line(const HistoryRow &row)
+  ContactProblem<dim>::print_step_line(const HistoryRow &row)
   {
     const unsigned int n_steps = load_program.n_steps();
     if (!step_table.started())
@@ -310,8 +322,9 @@ namespace RingContact
   // The nodal forces of the state (equilibrium.h), from the last assembly.
   // That assembly is the converged iterate's own: the Newton loop stops at
   // the iterate it has just assembled.
+  template <int dim>
   NodalForces
-  ContactProblem::nodal_forces() const
+  ContactProblem<dim>::nodal_forces() const
   {
     NodalForces forces;
     forces.internal = internal_force;
@@ -363,8 +376,9 @@ namespace RingContact
   // relative to the forces involved. Recorded in the history; a warning
   // beyond what the Newton tolerance leaves, and false (the state cannot be
   // trusted: its reason in unbalanced_forces) beyond 1e-3.
+  template <int dim>
   bool
-  ContactProblem::measure_balance_of_forces(HistoryRow &row)
+  ContactProblem<dim>::measure_balance_of_forces(HistoryRow &row)
   {
     const NodalForces forces = nodal_forces();
     // Each pair's two bodies, by the material ids of the cells under its
@@ -431,8 +445,9 @@ namespace RingContact
   // The bodies (displacement, Cauchy stress tensor, von Mises stress) and
   // the slave surfaces (contact pressure and gap at their nodes), one file
   // per step and a .pvd record of them (VtuWriter).
+  template <int dim>
   void
-  ContactProblem::output_results(const unsigned int step)
+  ContactProblem<dim>::output_results(const unsigned int step)
   {
     TimerOutput::Scope t(timer, "output");
     // Made at the first output, with the scheme's tag in its file names,
@@ -485,8 +500,9 @@ namespace RingContact
   // the first output (the reference geometry does not change; refinement
   // empties it): at the nodes, and again with the start of each closed
   // chain at the chain's length, for the face that closes it.
+  template <int dim>
   std::vector<VtuWriter::SlaveFace>
-  ContactProblem::slave_faces_along_chains()
+  ContactProblem<dim>::slave_faces_along_chains()
   {
     const bool new_arc_length = arc_length.size() != dof_handler.n_dofs();
     if (new_arc_length)
@@ -535,4 +551,40 @@ namespace RingContact
       }
     return faces;
   }
+
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template void
+  ContactProblem<2>::diagnose_start();
+  template void
+  ContactProblem<2>::report_non_matching_surfaces(
+    const unsigned int pair) const;
+  template std::vector<const ContactInterface<dim> *>
+  ContactProblem<2>::contact_interfaces() const;
+  template std::vector<types::global_dof_index>
+  ContactProblem<2>::contact_nodes() const;
+  template unsigned int
+  ContactProblem<2>::n_contact_nodes() const;
+  template unsigned int
+  ContactProblem<2>::n_active_nodes() const;
+  template types::global_dof_index
+  ContactProblem<2>::contact_node_nearest_to(const Point<dim> &point) const;
+  template double
+  ContactProblem<2>::reported_pressure(const types::global_dof_index dof) const;
+  template void
+  ContactProblem<2>::postprocess_step(const unsigned int step,
+                                      const unsigned int iterations,
+                                      const unsigned int cuts,
+                                      const double       wall_time);
+  template void
+  ContactProblem<2>::print_step_line(const HistoryRow &row);
+  template NodalForces
+  ContactProblem<2>::nodal_forces() const;
+  template bool
+  ContactProblem<2>::measure_balance_of_forces(HistoryRow &row);
+  template void
+  ContactProblem<2>::output_results(const unsigned int step);
+  template std::vector<VtuWriter::SlaveFace>
+  ContactProblem<2>::slave_faces_along_chains();
 } // namespace RingContact

@@ -280,8 +280,9 @@ namespace RingContact
   // it reads of the problem (refinement_estimator.h; the estimators
   // themselves are in estimators/). Kelly's estimator takes one mapping: the
   // bodies' highest degree.
+  template <int dim>
   Vector<float>
-  ContactProblem::estimate_error() const
+  ContactProblem<dim>::estimate_error() const
   {
     hp::QCollection<1> face_quadrature;
     for (unsigned int k = 0; k < fe_collection.size(); ++k)
@@ -303,8 +304,9 @@ namespace RingContact
   }
 
   // @sect4{Refine, carry the state over, set the problem up again}
+  template <int dim>
   void
-  ContactProblem::refine_mesh()
+  ContactProblem<dim>::refine_mesh()
   {
     TimerOutput::Scope  t(timer, "refinement");
     const auto         &refinement = parameters.refinement;
@@ -415,8 +417,9 @@ namespace RingContact
   // refinement are due, and solves the step again after each
   // (LoadStepper::solve_again_on_refined_meshes()): every Mesh
   // refinement/Every steps, and after the last step.
+  template <int dim>
   unsigned int
-  ContactProblem::refinement_cycles(const unsigned int step)
+  ContactProblem<dim>::refinement_cycles(const unsigned int step)
   {
     const auto &refinement = parameters.refinement;
     if (refinement.adaptive_cycles == 0 ||
@@ -438,9 +441,10 @@ namespace RingContact
   // One cycle: the mesh refined and the state carried over (refine_mesh()),
   // unless it has reached Mesh refinement/Maximum cells, which ends the
   // cycles for good (said once).
+  template <int dim>
   bool
-  ContactProblem::refine_mesh_after_step(const unsigned int step,
-                                         const unsigned int cycle)
+  ContactProblem<dim>::refine_mesh_after_step(const unsigned int step,
+                                              const unsigned int cycle)
   {
     if (triangulation.n_active_cells() >= parameters.refinement.maximum_cells)
       {
@@ -455,4 +459,17 @@ namespace RingContact
     refine_mesh();
     return true;
   }
+
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template Vector<float>
+  ContactProblem<2>::estimate_error() const;
+  template void
+  ContactProblem<2>::refine_mesh();
+  template unsigned int
+  ContactProblem<2>::refinement_cycles(const unsigned int step);
+  template bool
+  ContactProblem<2>::refine_mesh_after_step(const unsigned int step,
+                                            const unsigned int cycle);
 } // namespace RingContact

@@ -37,8 +37,9 @@ namespace RingContact
   // pairing: the contact couples each slave segment to the master segments
   // its points are paired with, here those of the unloaded state. Later
   // pairings that leave this pattern get a new one (assembly.cc).
+  template <int dim>
   void
-  ContactProblem::setup()
+  ContactProblem<dim>::setup()
   {
     make_grid();
     // A sector's two sides are tied node to node (cyclic_symmetry.h):
@@ -67,8 +68,9 @@ namespace RingContact
   // 500, or a general problem's tags). A boundary tag belongs to the body
   // of the cells along it; the contact pairs are given as pairs of
   // boundary tags, and this map turns them into pairs of bodies.
+  template <int dim>
   void
-  ContactProblem::make_grid()
+  ContactProblem<dim>::make_grid()
   {
     TimerOutput::Scope t(timer, "mesh");
     scenario->create_mesh(triangulation);
@@ -120,8 +122,9 @@ namespace RingContact
   // interface and each process gets its share of both. A cell with a face
   // on a slave surface weighs as much as five others: its contact points
   // cost that much (measured at 640 x 48, Gauss 2).
+  template <int dim>
   void
-  ContactProblem::partition_cells()
+  ContactProblem<dim>::partition_cells()
   {
     // The face graph joins the cells within each body, every cell weighing
     // one; the edges across the interfaces and the slave cells' weights are
@@ -179,8 +182,9 @@ namespace RingContact
   // seed mesh, 156 800 -> 126 720 at 640 x 48). The displacement elements
   // of the layer and of the rest of its body are the same FE_Q(p),
   // continuous across (deal.II's hp identities); the bodies share no vertex.
+  template <int dim>
   void
-  ContactProblem::setup_system()
+  ContactProblem<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
     make_finite_elements();
@@ -202,8 +206,9 @@ namespace RingContact
   // u_y, the pressure, the tangential traction; components.h), so that one
   // DoFHandler and one component mask reach them on every cell; only the
   // base elements differ.
+  template <int dim>
   void
-  ContactProblem::make_finite_elements()
+  ContactProblem<dim>::make_finite_elements()
   {
     const auto &fe          = parameters.finite_elements;
     const auto  add_element = [&](const Body<dim> &body, const bool layer) {
@@ -264,8 +269,9 @@ namespace RingContact
   // on a slave surface. Several processes: the cells partitioned (the same
   // partition on every process), the unknowns numbered process by process,
   // each process owning those of its cells (step-17).
+  template <int dim>
   void
-  ContactProblem::distribute_dofs()
+  ContactProblem<dim>::distribute_dofs()
   {
     std::set<types::boundary_id> slave_ids;
     for (const auto &[slave, master] : parameters.contact_pairs())
@@ -304,8 +310,9 @@ namespace RingContact
   // The tangent's solver (LinearSystem): direct by default, UMFPACK on one
   // process and MUMPS on several, or GMRES with a block preconditioner,
   // which needs to know the kind of each unknown and where it sits.
+  template <int dim>
   void
-  ContactProblem::make_linear_system()
+  ContactProblem<dim>::make_linear_system()
   {
     system = std::make_unique<LinearSystem>(communicator,
                                             parameters.newton.linear_solver,
@@ -370,8 +377,9 @@ namespace RingContact
   // per pair, each with the constants of subsection Contact and its own
   // surfaces; geometrically linear only when no body moves to a current
   // configuration of its own.
+  template <int dim>
   void
-  ContactProblem::make_contact_interfaces()
+  ContactProblem<dim>::make_contact_interfaces()
   {
     // deal.II's make_periodicity_constraints() pairs faces by a
     // translation; the sides of a sector are images of each other by a
@@ -458,9 +466,11 @@ namespace RingContact
   // the limit of 45 degrees admits a circle of 8 segments or more (the
   // cyclic test's 12 turn by 30), and refuses a block's corner (90) and a
   // wedge's. The margin keeps an octagon's round-off on the right side.
+  template <int dim>
   void
-  ContactProblem::refuse_slave_corners(const ContactSurface    &slave,
-                                       const types::boundary_id slave_id) const
+  ContactProblem<dim>::refuse_slave_corners(
+    const ContactSurface    &slave,
+    const types::boundary_id slave_id) const
   {
     const auto [turn, corner] = slave.sharpest_turn();
     const double degrees      = turn * 180 / numbers::PI;
@@ -488,11 +498,13 @@ namespace RingContact
   // Also called for the diagnostics before the first step, which compare a
   // point-wise scheme's load transfer with the mortar one's on the same
   // surfaces (diagnostics/surfaces_at_rest.h).
+  template <int dim>
   std::unique_ptr<ContactInterface<dim>>
-  ContactProblem::make_contact_interface(const types::boundary_id slave,
-                                         const types::boundary_id master,
-                                         const IntegrationScheme &scheme,
-                                         const bool geometrically_linear) const
+  ContactProblem<dim>::make_contact_interface(
+    const types::boundary_id slave,
+    const types::boundary_id master,
+    const IntegrationScheme &scheme,
+    const bool               geometrically_linear) const
   {
     ContactParameters pair_parameters  = parameters.contact;
     pair_parameters.slave_boundary_id  = slave;
@@ -520,8 +532,9 @@ namespace RingContact
   // couplings are those of the pairs and their neighbours, so that small
   // slips need no new pattern, and a new pattern costs a new symbolic
   // analysis of the direct solver.
+  template <int dim>
   void
-  ContactProblem::make_sparsity_pattern()
+  ContactProblem<dim>::make_sparsity_pattern()
   {
     // This process's cells; the contact couplings are few and the same on
     // every process. The couplings of constrained unknowns are left out
@@ -565,8 +578,9 @@ namespace RingContact
   // by METIS's nested dissection, which makes no dense block of such rows
   // (UMFPACK's AMD leaves them to the end, where they fill in together),
   // and the iterative solver factorizes no matrix of the whole system.
+  template <int dim>
   std::string
-  ContactProblem::describe_fill_in() const
+  ContactProblem<dim>::describe_fill_in() const
   {
     std::ostringstream text;
     text << std::setprecision(3);
@@ -595,4 +609,38 @@ namespace RingContact
     text << "or a coarser mesh";
     return text.str();
   }
+
+
+  // This chapter's members for the dimensions the program runs in (see
+  // contact_problem.cc).
+  template void
+  ContactProblem<2>::setup();
+  template void
+  ContactProblem<2>::make_grid();
+  template void
+  ContactProblem<2>::partition_cells();
+  template void
+  ContactProblem<2>::setup_system();
+  template void
+  ContactProblem<2>::make_finite_elements();
+  template void
+  ContactProblem<2>::distribute_dofs();
+  template void
+  ContactProblem<2>::make_linear_system();
+  template void
+  ContactProblem<2>::make_contact_interfaces();
+  template void
+  ContactProblem<2>::refuse_slave_corners(
+    const ContactSurface    &slave,
+    const types::boundary_id slave_id) const;
+  template std::unique_ptr<ContactInterface<dim>>
+  ContactProblem<2>::make_contact_interface(
+    const types::boundary_id slave,
+    const types::boundary_id master,
+    const IntegrationScheme &scheme,
+    const bool               geometrically_linear) const;
+  template void
+  ContactProblem<2>::make_sparsity_pattern();
+  template std::string
+  ContactProblem<2>::describe_fill_in() const;
 } // namespace RingContact

@@ -74,6 +74,7 @@ namespace RingContact
 {
   using namespace dealii;
 
+  template <int dim>
   class ContactProblem
       : public SolutionState<dim>
       , public NonlinearProblem

@@ -19,7 +19,7 @@ namespace RingContact
   class ContactProblemInspector
   {
   public:
-    explicit ContactProblemInspector(ContactProblem &problem)
+    explicit ContactProblemInspector(ContactProblem<dim> &problem)
         : problem(problem)
     {}
 
@@ -42,9 +42,10 @@ namespace RingContact
     /// Pair, choose the active set and assemble -R (and the tangent) at
     /// the current solution.
     unsigned int
-    assemble_newton_system(const Pairing pairing = Pairing::search,
-                           const ContactProblem::Assembly what =
-                             ContactProblem::Assembly::residual_and_tangent)
+    assemble_newton_system(
+      const Pairing                       pairing = Pairing::search,
+      const ContactProblem<dim>::Assembly what =
+        ContactProblem<dim>::Assembly::residual_and_tangent)
     {
       return problem.assemble_newton_system(pairing, what);
     }
@@ -115,7 +116,7 @@ namespace RingContact
     }
 
   private:
-    ContactProblem &problem;
+    ContactProblem<dim> &problem;
   };
 } // namespace RingContact
 
