@@ -12,7 +12,9 @@
 #include <Sacado.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -39,10 +41,10 @@ namespace RingContact
                   const types::boundary_id              tag,
                   std::vector<types::global_dof_index> *multipliers)
     {
-      const std::string surface = multipliers ? "slave" : "master";
-      std::vector<FaceContact::Face>                    faces;
-      std::map<types::global_dof_index, unsigned int>   node_of;
-      std::vector<types::global_dof_index>              local;
+      const std::string              surface = multipliers ? "slave" : "master";
+      std::vector<FaceContact::Face> faces;
+      std::map<types::global_dof_index, unsigned int> node_of;
+      std::vector<types::global_dof_index>            local;
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           {
@@ -55,7 +57,7 @@ namespace RingContact
                 "the 3D " + surface + " surface (boundary tag " +
                 std::to_string(tag) +
                 ") lies on cells that are not first-order (Q1) hexahedra: "
-                "the 3D segment-based contact takes bilinear faces");
+                "the 3D contact takes bilinear faces");
             if (multipliers != nullptr &&
                 (fe.n_components() != 4 ||
                  fe.base_element(fe.component_to_base_index(3).first)
@@ -71,7 +73,8 @@ namespace RingContact
                 const unsigned int cv =
                   GeometryInfo<3>::face_to_cell_vertices(f, v);
                 for (unsigned int d = 0; d < 3; ++d)
-                  face.u_dofs[v][d] = local[fe.component_to_system_index(d, cv)];
+                  face.u_dofs[v][d] =
+                    local[fe.component_to_system_index(d, cv)];
                 const Point<3> &x = cell->vertex(cv);
                 face.reference.push_back({{x[0], x[1], x[2]}});
                 face.node[v] = numbers::invalid_unsigned_int;
@@ -164,12 +167,19 @@ namespace RingContact
                            const types::boundary_id slave_tag,
                            const types::boundary_id master_tag,
                            const double             c,
-                           const bool               geometrically_linear)
+                           const bool               geometrically_linear,
+                           const Scheme             scheme,
+                           const unsigned int       gauss_points)
       : c(c)
       , geometrically_linear(geometrically_linear)
+      , scheme(scheme)
+      , points(
+          PointToFace::slave_points(scheme == Scheme::gauss ? gauss_points : 0))
   {
     if (!(c > 0))
       throw std::invalid_argument("the complementarity constant must be > 0");
+    if (scheme == Scheme::gauss && gauss_points == 0)
+      throw std::invalid_argument("the Gauss scheme needs at least one point");
     slave  = surface_faces(dof_handler, slave_tag, &multiplier_dofs);
     master = surface_faces(dof_handler, master_tag, nullptr);
     // w_k by the 2 x 2 Gauss rule on each reference slave face (exact for
@@ -182,10 +192,9 @@ namespace RingContact
       for (unsigned int q = 0; q < rule.size(); ++q)
         {
           bilinear().evaluate(rule.point(q), N, dN);
-          const auto p = FaceKernel::evaluate(face.reference, N, dN);
-          const auto n = FaceClipping::cross(p.a1, p.a2);
-          const double dA =
-            std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
+          const auto   p  = FaceKernel::evaluate(face.reference, N, dN);
+          const auto   n  = FaceClipping::cross(p.a1, p.a2);
+          const double dA = std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
           for (unsigned int k = 0; k < 4; ++k)
             weights[face.node[k]] += N[k] * dA;
         }
@@ -206,53 +215,88 @@ namespace RingContact
 
 
   // @sect4{The pairs and the active set}
-  //
+  namespace
+  {
+    /// The master faces at their positions, and their R-tree.
+    struct PlacedSurface
+    {
+      std::vector<FaceKernel::SurfaceFace> faces;
+      FaceKernel::FaceSearch               search;
+    };
+
+    PlacedSurface
+    place(const std::vector<FaceContact::Face> &faces,
+          const std::function<
+            std::vector<Vector3<double>>(const FaceContact::Face &)> &geometry)
+    {
+      std::vector<FaceKernel::SurfaceFace> placed;
+      for (const auto &face : faces)
+        placed.push_back({{}, geometry(face)});
+      FaceKernel::FaceSearch search(placed, 0.);
+      return {std::move(placed), std::move(search)};
+    }
+
+    /// The centre of a face and its diameter (twice the largest distance
+    /// of a node from the centre): the search radius about it.
+    std::pair<Point<3>, double>
+    centre_and_diameter(const std::vector<Vector3<double>> &x)
+    {
+      Point<3> centre;
+      for (const auto &v : x)
+        centre += Point<3>(v[0], v[1], v[2]) / 4.;
+      double diameter = 0;
+      for (const auto &v : x)
+        diameter =
+          std::max(diameter, 2 * centre.distance(Point<3>(v[0], v[1], v[2])));
+      return {centre, diameter};
+    }
+  } // namespace
+
+
   // The candidates of a slave face are the master faces whose boxes meet
   // the cube about its centre of half-width its diameter: the surfaces are
-  // paired up to a face's size apart. A candidate whose projection on the
-  // slave face's plane does not overlap it adds nothing.
+  // paired up to a face's size apart. Segment-based, a candidate whose
+  // projection on the slave face's plane does not overlap it adds nothing.
   unsigned int
   FaceContact::update(const Vector<double> &solution)
   {
-    const auto geometry = [&](const Face &face) {
-      return geometrically_linear ? face.reference : current(face, solution);
-    };
-    std::vector<FaceKernel::SurfaceFace> placed;
-    for (const Face &face : master)
-      placed.push_back({{}, geometry(face)});
-    const FaceKernel::FaceSearch search(placed, 0.);
-
+    const std::function<std::vector<Vector3<double>>(const Face &)> geometry =
+      [&](const Face &face) {
+        return geometrically_linear ? face.reference : current(face, solution);
+      };
     candidates.clear();
     overlapping.clear();
+    point_pairs.clear();
     std::fill(gaps.begin(), gaps.end(), 0.);
     std::vector<bool> covered(n_nodes(), false);
-    for (unsigned int s = 0; s < slave.size(); ++s)
+    if (scheme != Scheme::segment_based)
+      pair_points(geometry, solution, covered);
+    else
       {
-        const auto xs = geometry(slave[s]);
-        Point<3>   centre;
-        for (const auto &x : xs)
-          centre += Point<3>(x[0], x[1], x[2]) / 4.;
-        double radius = 0;
-        for (const auto &x : xs)
-          radius = std::max(radius,
-                            2 * centre.distance(Point<3>(x[0], x[1], x[2])));
-        for (const unsigned int m : search.near(centre, radius))
+        const PlacedSurface on = place(master, geometry);
+        for (unsigned int s = 0; s < slave.size(); ++s)
           {
-            candidates.emplace_back(s, m);
-            const auto terms =
-              Mortar3D::pair_terms<double>(xs,
-                                           placed[m].nodes,
-                                           current(slave[s], solution),
-                                           current(master[m], solution),
-                                           {},
-                                           clip_rule(xs, placed[m].nodes));
-            if (!(terms.overlap > 0))
-              continue;
-            overlapping.emplace_back(s, m);
-            for (unsigned int k = 0; k < 4; ++k)
+            const auto xs                 = geometry(slave[s]);
+            const auto [centre, diameter] = centre_and_diameter(xs);
+            for (const unsigned int m : on.search.near(centre, diameter))
               {
-                gaps[slave[s].node[k]] += terms.gaps[k];
-                covered[slave[s].node[k]] = true;
+                candidates.emplace_back(s, m);
+                const auto &xm = on.faces[m].nodes;
+                const auto  terms =
+                  Mortar3D::pair_terms<double>(xs,
+                                               xm,
+                                               current(slave[s], solution),
+                                               current(master[m], solution),
+                                               {},
+                                               clip_rule(xs, xm));
+                if (!(terms.overlap > 0))
+                  continue;
+                overlapping.emplace_back(s, m);
+                for (unsigned int k = 0; k < 4; ++k)
+                  {
+                    gaps[slave[s].node[k]] += terms.gaps[k];
+                    covered[slave[s].node[k]] = true;
+                  }
               }
           }
       }
@@ -261,14 +305,78 @@ namespace RingContact
     unsigned int changes = 0;
     for (unsigned int k = 0; k < n_nodes(); ++k)
       {
-        const bool now = covered[k] &&
-                         weights[k] * solution(multiplier_dofs[k]) -
-                             c * gaps[k] >
-                           0;
+        const bool now =
+          covered[k] &&
+          weights[k] * solution(multiplier_dofs[k]) - c * gaps[k] > 0;
         changes += (now != is_active[k]);
         is_active[k] = now;
       }
     return changes;
+  }
+
+
+  // Each point of each slave face is paired with the closest point on the
+  // master faces near it (within the slave face's diameter), among those
+  // whose closest point lies on the face; of several (a point over a
+  // master edge), the nearest, and of equally near ones the first. A point
+  // with none stays unpaired.
+  void
+  FaceContact::pair_points(
+    const std::function<std::vector<Vector3<double>>(const Face &)> &geometry,
+    const Vector<double>                                            &solution,
+    std::vector<bool>                                               &covered)
+  {
+    const PlacedSurface on = place(master, geometry);
+    for (unsigned int s = 0; s < slave.size(); ++s)
+      {
+        const auto             xs       = geometry(slave[s]);
+        const auto             diameter = centre_and_diameter(xs).second;
+        std::set<unsigned int> near;
+        for (unsigned int q = 0; q < points.size(); ++q)
+          {
+            std::vector<double>       N;
+            std::vector<Tensor<1, 2>> dN;
+            bilinear().evaluate(points[q].xi, N, dN);
+            const auto x = FaceKernel::evaluate(xs, N, dN).x;
+            PointPair  best{s, q, numbers::invalid_unsigned_int, {}};
+            double     nearest = std::numeric_limits<double>::max();
+            for (const unsigned int m :
+                 on.search.near(Point<3>(x[0], x[1], x[2]), diameter))
+              {
+                near.insert(m);
+                const auto found =
+                  FaceKernel::closest_point(bilinear(), on.faces[m].nodes, x);
+                if (found.converged && found.inside && found.distance < nearest)
+                  {
+                    nearest = found.distance;
+                    best    = {s, q, m, found.xi};
+                  }
+              }
+            if (best.master_face == numbers::invalid_unsigned_int)
+              continue;
+            point_pairs.push_back(best);
+            overlapping.emplace_back(s, best.master_face);
+            const auto terms =
+              PointToFace::point_terms<double>(xs,
+                                               on.faces[best.master_face].nodes,
+                                               current(slave[s], solution),
+                                               current(master[best.master_face],
+                                                       solution),
+                                               {},
+                                               points[q],
+                                               best.xi);
+            // A Gauss point reaches the face's four nodes, a vertex its own.
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                gaps[slave[s].node[k]] += terms.gaps[k];
+                if (points[q].vertex == numbers::invalid_unsigned_int ||
+                    points[q].vertex == k)
+                  covered[slave[s].node[k]] = true;
+              }
+          }
+        for (const unsigned int m : near)
+          candidates.emplace_back(s, m);
+      }
   }
 
 
@@ -299,8 +407,19 @@ namespace RingContact
                         SparseMatrix<double>            &matrix,
                         Vector<double>                  &rhs) const
   {
-    for (const auto &[s, m] : overlapping)
-      assemble_pair(slave[s], master[m], solution, constraints, matrix, rhs);
+    if (scheme == Scheme::segment_based)
+      for (const auto &[s, m] : overlapping)
+        assemble_pair(
+          slave[s], master[m], nullptr, solution, constraints, matrix, rhs);
+    else
+      for (const PointPair &pair : point_pairs)
+        assemble_pair(slave[pair.slave_face],
+                      master[pair.master_face],
+                      &pair,
+                      solution,
+                      constraints,
+                      matrix,
+                      rhs);
     // The open nodes' rows w_k lambda_k.
     FullMatrix<double> w(1, 1);
     Vector<double>     r(1);
@@ -316,10 +435,12 @@ namespace RingContact
 
 
   // One pair's rows in AD numbers of its 28 unknowns: the slave face's 12
-  // displacements, the master face's 12 and the slave face's 4 pressures.
+  // displacements, the master face's 12 and the slave face's 4 pressures;
+  // the clipped pair's, or with `point` one slave point's.
   void
   FaceContact::assemble_pair(const Face                      &s,
                              const Face                      &m,
+                             const PointPair                 *point,
                              const Vector<double>            &solution,
                              const AffineConstraints<double> &constraints,
                              SparseMatrix<double>            &matrix,
@@ -336,24 +457,22 @@ namespace RingContact
         dofs.push_back(multiplier_dofs[s.node[k]]);
         lambda.emplace_back(n, 24 + k, solution(dofs.back()));
       }
-    const auto xs = ad_nodes(current(s, solution), n, 0);
-    const auto xm = ad_nodes(current(m, solution), n, 12);
+    const auto xs   = ad_nodes(current(s, solution), n, 0);
+    const auto xm   = ad_nodes(current(m, solution), n, 12);
     const auto none = numbers::invalid_unsigned_int;
+    const auto sg = geometrically_linear ? ad_nodes(s.reference, n, none) : xs;
+    const auto mg = geometrically_linear ? ad_nodes(m.reference, n, none) : xm;
     const auto terms =
-      geometrically_linear ?
-        Mortar3D::pair_terms(ad_nodes(s.reference, n, none),
-                             ad_nodes(m.reference, n, none),
+      point != nullptr ?
+        PointToFace::point_terms(
+          sg, mg, xs, xm, lambda, points[point->point], point->xi) :
+        Mortar3D::pair_terms(sg,
+                             mg,
                              xs,
                              xm,
                              lambda,
-                             clip_rule(s.reference, m.reference)) :
-        Mortar3D::pair_terms(xs,
-                             xm,
-                             xs,
-                             xm,
-                             lambda,
-                             clip_rule(current(s, solution),
-                                       current(m, solution)));
+                             clip_rule(FaceKernel::values(sg),
+                                       FaceKernel::values(mg)));
 
     std::vector<AD> residual(terms.slave_force);
     residual.insert(residual.end(),

@@ -1,6 +1,6 @@
-// @sect3{The contact of two surfaces in three dimensions (segment-based)}
+// @sect3{The contact of two surfaces in three dimensions}
 //
-// The 3D counterpart of ContactInterface for the segment-based scheme: a
+// The 3D counterpart of ContactInterface: a
 // slave surface of bilinear faces that carries the contact pressure (the
 // Lagrange multiplier at its vertices, in the same finite-element system
 // as the displacement), a master surface of bilinear faces, and the rows
@@ -23,7 +23,10 @@
 // configuration's and the gaps are linear in the displacement.
 //
 // The pairs are the slave and master faces whose boxes meet (FaceSearch)
-// and whose projections on the slave face's plane overlap. The faces are
+// and whose projections on the slave face's plane overlap. The point-wise
+// schemes (nodal, Gauss N x N; point_to_face.h) pair each point of a slave
+// face with its closest point on the master surface instead, and make the
+// same rows from it. The faces are
 // bilinear (Q1 hexahedra): quadratic faces, split into four bilinear
 // sub-faces, are the next step, and a Q2 surface is refused here. This is
 // the contact of one pair of surfaces; ContactProblem<3> is to hold one per
@@ -38,8 +41,10 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact/face_clipping.h>
+#include <ring_contact/contact/point_to_face.h>
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -50,6 +55,15 @@ namespace RingContact
   class FaceContact
   {
   public:
+    /// How the slave surface is integrated: segment-based (clipped, exact
+    /// on non-matching surfaces), at the slave nodes, or at Gauss points.
+    enum class Scheme
+    {
+      segment_based,
+      nodal,
+      gauss
+    };
+
     /// A face of a contact surface: its four vertices in the lexicographic
     /// order of the face basis, oriented so that a1 x a2 points out of its
     /// body; their displacement unknowns (x, y, z) and reference
@@ -66,11 +80,14 @@ namespace RingContact
     /// (the unknowns' first three components are the displacement, the
     /// fourth the multiplier on the slave body's cells). `c` is the
     /// complementarity constant (a stiffness per length, E / h).
+    /// `gauss_points`: n of the Gauss n x n scheme.
     FaceContact(const DoFHandler<3>     &dof_handler,
                 const types::boundary_id slave,
                 const types::boundary_id master,
                 const double             c,
-                const bool               geometrically_linear);
+                const bool               geometrically_linear,
+                const Scheme             scheme       = Scheme::segment_based,
+                const unsigned int       gauss_points = 2);
 
     /// Pair the faces at `solution` (the reference configuration's in
     /// small strain), evaluate the weighted gaps and choose the active
@@ -123,8 +140,9 @@ namespace RingContact
     }
     /// @}
 
-    /// The faces of the surfaces, and the overlapping pairs of the last
-    /// update() (slave face, master face).
+    /// The faces of the surfaces, and the pairs of the last update() that
+    /// make rows (slave face, master face; with a point-wise scheme, one
+    /// per paired point).
     const std::vector<Face> &
     slave_faces() const
     {
@@ -142,6 +160,14 @@ namespace RingContact
     }
 
   private:
+    /// A point of a slave face (PointToFace::SlavePoint, by its index)
+    /// with the master face of its closest point and that point's xi.
+    struct PointPair
+    {
+      unsigned int slave_face, point, master_face;
+      Point<2>     xi;
+    };
+
     /// A face's node positions at `solution` (the reference + u).
     std::vector<FaceClipping::Vector3<double>>
     current(const Face &face, const Vector<double> &solution) const;
@@ -150,10 +176,20 @@ namespace RingContact
     void
     assemble_pair(const Face                      &s,
                   const Face                      &m,
+                  const PointPair                 *point,
                   const Vector<double>            &solution,
                   const AffineConstraints<double> &constraints,
                   SparseMatrix<double>            &matrix,
                   Vector<double>                  &rhs) const;
+
+    /// The point-wise schemes' pairs at the positions `geometry` of the
+    /// faces (their reference or current configuration), and the weighted
+    /// gaps they give; `covered` marks the nodes that some point reaches.
+    void
+    pair_points(const std::function<std::vector<FaceClipping::Vector3<double>>(
+                  const Face &)>     &geometry,
+                const Vector<double> &solution,
+                std::vector<bool>    &covered);
 
     std::vector<Face>                                  slave, master;
     std::vector<types::global_dof_index>               multiplier_dofs;
@@ -163,6 +199,11 @@ namespace RingContact
     const bool                                         geometrically_linear;
     std::vector<std::pair<unsigned int, unsigned int>> candidates;
     std::vector<std::pair<unsigned int, unsigned int>> overlapping;
+    const Scheme                                       scheme;
+    /// The points of a slave face under a point-wise scheme, and their
+    /// pairs at the last update().
+    const std::vector<PointToFace::SlavePoint> points;
+    std::vector<PointPair>                     point_pairs;
   };
 } // namespace RingContact
 
