@@ -35,10 +35,9 @@ namespace RingContactTests
     }
     RingContact::Parameters parameters;
     parameters.read(name + ".prm");
-    std::ostringstream               log;
-    RingContact::ContactProblem<dim> problem(parameters,
-                                             parameters.contact.schemes.front(),
-                                             log);
+    std::ostringstream                            log;
+    RingContact::ContactProblem<RingContact::dim> problem(
+      parameters, parameters.contact.schemes.front(), log);
     check(problem.run(), name + ": every step is solved");
     return problem.history();
   }

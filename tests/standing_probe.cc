@@ -258,8 +258,8 @@ main()
         {
           check(false, name + c.description + ": refused: " + e.what());
         }
-      std::ostringstream               log;
-      RingContact::ContactProblem<dim> problem(
+      std::ostringstream                            log;
+      RingContact::ContactProblem<RingContact::dim> problem(
         parameters, parameters.contact.schemes.front(), log);
       bool solved = false;
       try
