@@ -164,12 +164,28 @@ namespace RingContact
                          "element " + std::to_string(e.tag) + ": " + what);
       }
 
+      // Whether a corner's cross product or volume `value` keeps the sign of
+      // the corners before it (`sign`, 0 before the first, then set): it
+      // must be one sign and larger than 1e-12 of its scale, the product of
+      // its edges' lengths, so that the test does not depend on the units.
+      bool
+      keeps_orientation(const double value, const double scale, int &sign)
+      {
+        const int s = value > 1e-12 * scale  ? 1 :
+                      value < -1e-12 * scale ? -1 :
+                                               0;
+        if (s == 0 || (sign != 0 && s != sign))
+          return false;
+        sign = s;
+        return true;
+      }
+
       // A quadrilateral: gmsh numbers the corners around the cell, and the
       // turns at the four corners must all have one sign. One sign, not a
       // positive one: cells drawn clockwise (a surface whose outline runs
       // clockwise) are reoriented when the triangulation is built. The
       // cross product is compared with 1e-12 of the edge lengths' product,
-      // so the test does not depend on the units.
+      // so the test does not depend on the units (keeps_orientation()).
       void
       check_quadrilateral(const GmshMesh<2>            &mesh,
                           const GmshElement            &e,
@@ -189,16 +205,13 @@ namespace RingContact
             const Point<2> c = mesh.nodes.at(e.nodes[(i + 2) % 4]);
             const double   cross =
               (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
-            const double scale = (b - a).norm() * (c - b).norm();
-            const int    s     = cross > 1e-12 * scale  ? 1 :
-                                 cross < -1e-12 * scale ? -1 :
-                                                          0;
-            if (s == 0 || (sign != 0 && s != sign))
+            if (!keeps_orientation(cross,
+                                   (b - a).norm() * (c - b).norm(),
+                                   sign))
               element_fail(mesh.filename,
                            e,
                            "a quadrilateral that is flat, folded or not "
                            "convex");
-            sign = s;
           }
         // An edge of three cells is no surface deal.II can build.
         for (unsigned int i = 0; i < 4; ++i)
@@ -244,16 +257,13 @@ namespace RingContact
                   edge[d] *= -1; // along the axis, not against it
                 scale *= edge[d].norm();
               }
-            const double volume = cross_product_3d(edge[0], edge[1]) * edge[2];
-            const int    s      = volume > 1e-12 * scale  ? 1 :
-                                  volume < -1e-12 * scale ? -1 :
-                                                            0;
-            if (s == 0 || (sign != 0 && s != sign))
+            if (!keeps_orientation(cross_product_3d(edge[0], edge[1]) * edge[2],
+                                   scale,
+                                   sign))
               element_fail(mesh.filename,
                            e,
                            "a hexahedron that is flat, folded or twisted "
                            "(its corners' volumes change sign)");
-            sign = s;
           }
         // Its six faces, by their corners in gmsh's numbering.
         static const std::vector<std::vector<unsigned int>> faces = {
@@ -464,6 +474,63 @@ namespace RingContact
       }
     } // namespace
 
+    namespace
+    {
+      // A model of volumes is three-dimensional: said so in 2d, before its
+      // nodes off the plane are.
+      void
+      refuse_three_dimensional(const GmshModel   &model,
+                               const std::string &filename)
+      {
+        for (const auto &entity : model.entities)
+          if (entity.dim == 3 && !entity.types.empty())
+            refuse_mesh_file(filename,
+                             "the model is three-dimensional (gmsh volume " +
+                               std::to_string(entity.tag) +
+                               " is meshed): a two-dimensional problem is a "
+                               "model of surfaces in the plane z = 0");
+      }
+
+      // A mesh file declared its elements: gmsh must have read them all.
+      // A script keeps only the entities in physical groups (if it has
+      // any), as gmsh does when it saves a mesh: the curves between the
+      // patches of a ring and the points of its geometry are not part of
+      // the mesh. The count includes the points, as the file's count does.
+      // In 3d the volumes' types are checked first: a model of tetrahedra
+      // or prisms is told so, not that the first triangle on its boundary
+      // is refused.
+      template <int dim>
+      void
+      check_elements_read(const GmshModel      &model,
+                          const std::string    &filename,
+                          const DeclaredCounts &declared)
+      {
+        std::size_t n_elements = 0;
+        for (const auto &entity : model.entities)
+          for (const auto &tags : entity.element_tags)
+            n_elements += tags.size();
+        if (!declared.script && n_elements != declared.elements)
+          refuse_mesh_file(filename,
+                           "the file declares " +
+                             std::to_string(declared.elements) +
+                             " elements but gmsh read " +
+                             std::to_string(n_elements));
+        if (dim == 3)
+          for (const auto &entity : model.entities)
+            for (unsigned int t = 0; t < entity.types.size(); ++t)
+              if (entity.dim == 3 && nodes_of_type<dim>(entity.types[t]) == 0)
+                refuse_mesh_file(
+                  filename,
+                  "element " +
+                    std::to_string(entity.element_tags[t].empty() ?
+                                     0 :
+                                     entity.element_tags[t][0]) +
+                    " is a " + name_of_type(entity.types[t]) + " (gmsh type " +
+                    std::to_string(entity.types[t]) +
+                    "): " + accepted_elements<dim>());
+      }
+    } // namespace
+
     // @sect4{The mesh}
     //
     // What gmsh read, checked; the elements of each entity take the
@@ -478,54 +545,15 @@ namespace RingContact
     {
       GmshMesh<dim> mesh;
       mesh.filename = filename;
-      // A model of volumes is three-dimensional: said so in 2d, before its
-      // nodes off the plane are.
       if (dim == 2)
-        for (const auto &entity : model.entities)
-          if (entity.dim == 3 && !entity.types.empty())
-            refuse_mesh_file(filename,
-                             "the model is three-dimensional (gmsh volume " +
-                               std::to_string(entity.tag) +
-                               " is meshed): a two-dimensional problem is a "
-                               "model of surfaces in the plane z = 0");
+        refuse_three_dimensional(model, filename);
       read_nodes(model, declared, mesh);
-
-      // A mesh file declared its elements: gmsh must have read them all.
-      // A script keeps only the entities in physical groups (if it has
-      // any), as gmsh does when it saves a mesh: the curves between the
-      // patches of a ring and the points of its geometry are not part of
-      // the mesh.
-      // The count includes the points, as the file's count does.
-      std::size_t n_elements   = 0;
-      bool        any_physical = false;
-      for (const auto &entity : model.entities)
-        {
-          any_physical = any_physical || !entity.physicals.empty();
-          for (const auto &tags : entity.element_tags)
-            n_elements += tags.size();
-        }
-      if (!declared.script && n_elements != declared.elements)
-        refuse_mesh_file(filename,
-                         "the file declares " +
-                           std::to_string(declared.elements) +
-                           " elements but gmsh read " +
-                           std::to_string(n_elements));
-
-      // In 3d the volumes first: a model of tetrahedra or prisms is told
-      // so, not that the first triangle on its boundary is refused.
-      if (dim == 3)
-        for (const auto &entity : model.entities)
-          for (unsigned int t = 0; t < entity.types.size(); ++t)
-            if (entity.dim == 3 && nodes_of_type<dim>(entity.types[t]) == 0)
-              refuse_mesh_file(filename,
-                               "element " +
-                                 std::to_string(entity.element_tags[t].empty() ?
-                                                  0 :
-                                                  entity.element_tags[t][0]) +
-                                 " is a " + name_of_type(entity.types[t]) +
-                                 " (gmsh type " +
-                                 std::to_string(entity.types[t]) +
-                                 "): " + accepted_elements<dim>());
+      check_elements_read<dim>(model, filename, declared);
+      const bool any_physical = std::any_of(model.entities.begin(),
+                                            model.entities.end(),
+                                            [](const auto &entity) {
+                                              return !entity.physicals.empty();
+                                            });
 
       std::set<std::size_t> element_tags;
       for (const auto &entity : model.entities)
