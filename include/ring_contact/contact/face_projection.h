@@ -76,30 +76,35 @@ namespace RingContact
     };
 
     /// r_a = (x - p) . a_a and the Hessian H_ab = a_a . a_b + (x - p) .
-    /// x_,ab at the shape functions' point, in the number type.
+    /// x_,ab at the shape functions' point, in the number type; and, if
+    /// asked, the face point there.
     template <typename Number>
     Vector2<Number>
     distance_gradient(const std::vector<Vector3<Number>> &nodes,
                       const Vector3<Number>              &p,
                       const ShapeDerivatives             &s,
-                      Tensor<2, 2>                       *hessian = nullptr)
+                      Tensor<2, 2>                       *hessian = nullptr,
+                      FacePoint<Number>                  *point   = nullptr)
     {
       const FacePoint<Number> q = evaluate(nodes, s.N, s.dN);
-      Vector3<Number>         d;
+      if (point != nullptr)
+        *point = q;
+      Vector3<Number> d;
       for (unsigned int i = 0; i < 3; ++i)
         d[i] = q.x[i] - p[i];
       if (hessian != nullptr)
         {
           const Vector3<Number> *a[2] = {&q.a1, &q.a2};
+          // H is symmetric: its upper triangle, mirrored.
           for (unsigned int i = 0; i < 2; ++i)
-            for (unsigned int j = 0; j < 2; ++j)
+            for (unsigned int j = i; j < 2; ++j)
               {
                 double curvature = 0; // (x - p) . x_,ij
                 for (unsigned int k = 0; k < nodes.size(); ++k)
                   for (unsigned int c = 0; c < 3; ++c)
                     curvature += FaceClipping::value(d[c]) * s.d2N[k][i][j] *
                                  FaceClipping::value(nodes[k][c]);
-                (*hessian)[i][j] =
+                (*hessian)[i][j] = (*hessian)[j][i] =
                   FaceClipping::value(FaceClipping::dot(*a[i], *a[j])) +
                   curvature;
               }
@@ -124,13 +129,13 @@ namespace RingContact
         {
           const ShapeDerivatives s(basis, result.xi);
           Tensor<2, 2>           H;
-          const Vector2<double>  r = distance_gradient(nodes, p, s, &H);
+          FacePoint<double>      q;
+          const Vector2<double>  r = distance_gradient(nodes, p, s, &H, &q);
           // Where H is not positive definite (a point beyond the centre of
           // curvature, a start far off), Gauss-Newton's a_a . a_b.
           if (!(H[0][0] > 0 && determinant(H) > 1e-14 * H.norm_square()))
             {
-              const FacePoint<double> q = evaluate(nodes, s.N, s.dN);
-              H[0][0]                   = FaceClipping::dot(q.a1, q.a1);
+              H[0][0] = FaceClipping::dot(q.a1, q.a1);
               H[0][1] = H[1][0] = FaceClipping::dot(q.a1, q.a2);
               H[1][1]           = FaceClipping::dot(q.a2, q.a2);
               if (!(determinant(H) > 1e-14 * H.norm_square()))
