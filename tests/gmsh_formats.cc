@@ -16,6 +16,7 @@
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/gmsh_mesh.h>
 
+#include "gmsh_helpers.h"
 #include "run_problem.h"
 
 #include <gmsh.h>
@@ -30,45 +31,15 @@ namespace
 {
   const std::string meshes = std::string(RING_CONTACT_SOURCE_DIR) + "/meshes/";
 
-  // Write `from` again with gmsh, in format `version`, ASCII or binary.
-  void
-  convert(const std::string &from,
-          const std::string &to,
-          const double       version,
-          const bool         binary)
-  {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::open(from);
-    gmsh::option::setNumber("Mesh.MshFileVersion", version);
-    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
-    gmsh::write(to);
-    gmsh::finalize();
-  }
+  using Cells = RingContactTests::Cells<2>;
 
-  // A triangulation as comparable data: per cell its vertices, material
-  // id and the boundary ids of its faces.
-  struct Cells
-  {
-    std::vector<Point<2>>     vertices;
-    std::vector<unsigned int> ids;
-  };
-
+  // The triangulation of a mesh file (a script meshed to `script_order`).
   Cells
   cells_of(const std::string &file, const unsigned int script_order = 1)
   {
     Triangulation<2> triangulation;
     Geometry::read_gmsh(triangulation, file, {}, script_order);
-    Cells cells;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        for (const unsigned int v : cell->vertex_indices())
-          cells.vertices.push_back(cell->vertex(v));
-        cells.ids.push_back(cell->material_id());
-        for (const auto &face : cell->face_iterators())
-          cells.ids.push_back(face->at_boundary() ? face->boundary_id() : 9999);
-      }
-    return cells;
+    return RingContactTests::cells_of(triangulation);
   }
 
   double
@@ -110,7 +81,10 @@ main()
 
   // A file gmsh's reader crashes on, one it refuses, then the good ones.
   {
-    convert(meshes + "ssnp152a.msh", "crash.msh", 4.1, false);
+    RingContactTests::write_with_gmsh(meshes + "ssnp152a.msh",
+                                      "crash.msh",
+                                      4.1,
+                                      false);
     std::ifstream            in("crash.msh");
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);)
@@ -156,7 +130,10 @@ main()
             std::ostringstream name;
             name << original.substr(0, 8) << "-" << version
                  << (binary ? "-binary" : "") << ".msh";
-            convert(meshes + original, name.str(), version, binary);
+            RingContactTests::write_with_gmsh(meshes + original,
+                                              name.str(),
+                                              version,
+                                              binary);
             const Cells cells = cells_of(name.str());
             double      moved = 0;
             check(cells.vertices.size() == reference.vertices.size(),

@@ -26,6 +26,7 @@
 #include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/gmsh_mesh.h>
 
+#include "gmsh_helpers.h"
 #include "tests.h"
 
 #include <gmsh.h>
@@ -98,41 +99,6 @@ namespace
     std::ofstream(name) << text;
   }
 
-  // Mesh a script with gmsh itself and write it as a .msh of `version`.
-  void
-  write_msh(const std::string &geo,
-            const std::string &msh,
-            const double       version,
-            const int          order)
-  {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::open(geo);
-    gmsh::model::mesh::generate(3);
-    gmsh::model::mesh::setOrder(order);
-    gmsh::option::setNumber("Mesh.MshFileVersion", version);
-    gmsh::write(msh);
-    gmsh::finalize();
-  }
-
-  // A triangulation as comparable data: per cell its vertices, material
-  // id and the boundary ids of its faces.
-  std::pair<std::vector<Point<3>>, std::vector<unsigned int>>
-  cells_of(const Triangulation<3> &triangulation)
-  {
-    std::pair<std::vector<Point<3>>, std::vector<unsigned int>> cells;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        for (const unsigned int v : cell->vertex_indices())
-          cells.first.push_back(cell->vertex(v));
-        cells.second.push_back(cell->material_id());
-        for (const auto &face : cell->face_iterators())
-          cells.second.push_back(face->at_boundary() ? face->boundary_id() :
-                                                       9999);
-      }
-    return cells;
-  }
-
   // Read a 3d mesh with its audit; the error's text, or "".
   std::string
   error_of(const std::string &file, const unsigned int order = 1)
@@ -195,7 +161,7 @@ main()
             faces.at(12) == 24,
           "the boundary faces of each physical surface");
   }
-  const auto reference = cells_of(box_cells);
+  const auto reference = RingContactTests::cells_of(box_cells);
   for (const auto &[file, order] :
        std::vector<std::pair<std::string, int>>{{"box.geo", 2},
                                                 {"box22.msh", 1},
@@ -204,19 +170,23 @@ main()
                                                 {"box41_q.msh", 2}})
     {
       if (file != "box.geo")
-        write_msh("box.geo",
-                  file,
-                  file.find("22") != std::string::npos ? 2.2 : 4.1,
-                  order);
+        RingContactTests::write_with_gmsh("box.geo",
+                                          file,
+                                          file.find("22") != std::string::npos ?
+                                            2.2 :
+                                            4.1,
+                                          false,
+                                          order);
       Triangulation<3> triangulation;
       const auto       mesh =
         Geometry::read_gmsh(triangulation, file, {}, order, false);
       Geometry::check_boundary_tags(triangulation, mesh);
-      const auto cells = cells_of(triangulation);
-      double     moved = cells.first.size() == reference.first.size() ? 0 : 1;
-      for (unsigned int i = 0; moved == 0 && i < cells.first.size(); ++i)
-        moved = std::max(moved, cells.first[i].distance(reference.first[i]));
-      const bool same = moved < 1e-15 && cells.second == reference.second;
+      const auto cells = RingContactTests::cells_of(triangulation);
+      double moved = cells.vertices.size() == reference.vertices.size() ? 0 : 1;
+      for (unsigned int i = 0; moved == 0 && i < cells.vertices.size(); ++i)
+        moved =
+          std::max(moved, cells.vertices[i].distance(reference.vertices[i]));
+      const bool same = moved < 1e-15 && cells.ids == reference.ids;
       out << file << " (order " << order << ", "
           << (mesh.quadratic ? "quadratic" : "linear") << "): the same cells "
           << (same ? "yes" : "NO") << std::endl;
