@@ -58,6 +58,9 @@ namespace RingContact
       {
         const Tensor<2, 2> I = unit_symmetric_tensor<2>();
         F                    = I + H;
+        // det F - 1 without cancellation, as det_F_minus_one<2>() has it
+        // but summed in this order, which the 2D results' digits were
+        // computed with (the two may differ in the last bits).
         const double dilatation =
           H[0][0] + H[1][1] + H[0][0] * H[1][1] - H[0][1] * H[1][0];
         J               = 1 + dilatation;
