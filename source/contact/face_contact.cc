@@ -338,7 +338,7 @@ namespace RingContact
             std::vector<Tensor<1, 2>> dN;
             bilinear().evaluate(points[q].xi, N, dN);
             const auto x = FaceKernel::evaluate(xs, N, dN).x;
-            PointPair  best{s, q, numbers::invalid_unsigned_int, {}};
+            PointPair  best{s, q, numbers::invalid_unsigned_int};
             double     nearest = std::numeric_limits<double>::max();
             for (const unsigned int m :
                  on.search.near(Point<3>(x[0], x[1], x[2]), diameter))
@@ -346,10 +346,13 @@ namespace RingContact
                 near.insert(m);
                 const auto found =
                   FaceKernel::closest_point(bilinear(), on.faces[m].nodes, x);
-                if (found.converged && found.inside && found.distance < nearest)
+                if (found.converged && found.inside &&
+                    found.distance < nearest &&
+                    PointToFace::is_minimum(
+                      bilinear(), on.faces[m].nodes, x, found.xi))
                   {
                     nearest = found.distance;
-                    best    = {s, q, m, found.xi};
+                    best    = {s, q, m};
                   }
               }
             if (best.master_face == numbers::invalid_unsigned_int)
@@ -363,8 +366,7 @@ namespace RingContact
                                                current(master[best.master_face],
                                                        solution),
                                                {},
-                                               points[q],
-                                               best.xi);
+                                               points[q]);
             // A Gauss point reaches the face's four nodes, a vertex its own.
             for (unsigned int k = 0; k < 4; ++k)
               {
@@ -381,7 +383,8 @@ namespace RingContact
 
 
   void
-  FaceContact::add_couplings(DynamicSparsityPattern &pattern) const
+  FaceContact::add_couplings(DynamicSparsityPattern          &pattern,
+                             const AffineConstraints<double> &constraints) const
   {
     std::vector<types::global_dof_index> dofs;
     for (const auto &[s, m] : candidates)
@@ -392,11 +395,11 @@ namespace RingContact
             dofs.insert(dofs.end(), node.begin(), node.end());
         for (const unsigned int k : slave[s].node)
           dofs.push_back(multiplier_dofs[k]);
-        for (const auto i : dofs)
-          pattern.add_entries(i, dofs.begin(), dofs.end());
+        constraints.add_entries_local_to_global(dofs, pattern, false);
       }
     for (const auto dof : multiplier_dofs)
-      pattern.add(dof, dof);
+      constraints.add_entries_local_to_global(
+        std::vector<types::global_dof_index>{dof}, pattern, false);
   }
 
 
@@ -464,8 +467,7 @@ namespace RingContact
     const auto mg = geometrically_linear ? ad_nodes(m.reference, n, none) : xm;
     const auto terms =
       point != nullptr ?
-        PointToFace::point_terms(
-          sg, mg, xs, xm, lambda, points[point->point], point->xi) :
+        PointToFace::point_terms(sg, mg, xs, xm, lambda, points[point->point]) :
         Mortar3D::pair_terms(sg,
                              mg,
                              xs,

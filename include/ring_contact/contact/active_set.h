@@ -92,9 +92,9 @@ namespace RingContact
     {
       first_update_of_step = true;
       pressed_at_step_start =
-        std::any_of(nodes.dofs.begin(),
-                    nodes.dofs.end(),
-                    [&](const auto dof) { return solution(dof) > 0; });
+        std::any_of(nodes.dofs.begin(), nodes.dofs.end(), [&](const auto dof) {
+          return solution(dof) > 0;
+        });
     }
 
     /// Whether the step began with no pressure on the pair: a contact zone

@@ -97,9 +97,10 @@ namespace RingContact
     update(const Vector<double> &solution);
 
     /// The couplings of every candidate pair of the last update() (each
-    /// pair's 28 unknowns with each other).
+    /// pair's 28 unknowns with each other), through `constraints`.
     void
-    add_couplings(DynamicSparsityPattern &pattern) const;
+    add_couplings(DynamicSparsityPattern          &pattern,
+                  const AffineConstraints<double> &constraints) const;
 
     /// Add the contact rows at `solution` to `matrix` (their derivatives)
     /// and to `rhs` (minus their values), through `constraints`.
@@ -161,11 +162,10 @@ namespace RingContact
 
   private:
     /// A point of a slave face (PointToFace::SlavePoint, by its index)
-    /// with the master face of its closest point and that point's xi.
+    /// with the master face of its closest point.
     struct PointPair
     {
       unsigned int slave_face, point, master_face;
-      Point<2>     xi;
     };
 
     /// A face's node positions at `solution` (the reference + u).

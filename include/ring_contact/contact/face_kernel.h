@@ -197,10 +197,17 @@ namespace RingContact
                  const Vector2<Number>              &p,
                  const double                        tolerance = 1e-14)
     {
-      const std::vector<Vector3<double>> x      = values(nodes);
-      const Plane<double>                plane0 = values(plane);
-      const Vector2<double>              p0     = {
-                         {FaceClipping::value(p[0]), FaceClipping::value(p[1])}};
+      // The nodes and the plane about the plane's centre: the iteration's
+      // round-off is then that of the face's size, not of its distance
+      // from the origin (a face far out would never meet the tolerance).
+      std::vector<Vector3<double>> x      = values(nodes);
+      Plane<double>                plane0 = values(plane);
+      for (auto &node : x)
+        for (unsigned int d = 0; d < 3; ++d)
+          node[d] -= plane0.centre[d];
+      plane0.centre            = {{0, 0, 0}};
+      const Vector2<double> p0 = {
+        {FaceClipping::value(p[0]), FaceClipping::value(p[1])}};
       std::vector<double>       N;
       std::vector<Tensor<1, 2>> dN;
       Point<2>                  xi(0.5, 0.5);

@@ -116,14 +116,22 @@ namespace RingContact
     /// in xi.
     inline ClosestPoint
     closest_point(const FaceBasis                    &basis,
-                  const std::vector<Vector3<double>> &nodes,
-                  const Vector3<double>              &p,
+                  const std::vector<Vector3<double>> &global_nodes,
+                  const Vector3<double>              &global_p,
                   const double                        tolerance = 1e-14)
     {
-      if (nodes.size() != basis.size())
+      if (global_nodes.size() != basis.size())
         throw std::invalid_argument(
           "closest_point(): a face's nodes do not match its basis");
-      ClosestPoint result;
+      // The nodes about the point: the iteration's round-off is then that
+      // of the face's size, not of its distance from the origin (a face far
+      // out would never meet the tolerance).
+      std::vector<Vector3<double>> nodes = global_nodes;
+      for (auto &node : nodes)
+        for (unsigned int d = 0; d < 3; ++d)
+          node[d] -= global_p[d];
+      const Vector3<double> p = {{0, 0, 0}};
+      ClosestPoint          result;
       result.xi = Point<2>(0.5, 0.5);
       for (unsigned int step = 0; step < 30 && !result.converged; ++step)
         {

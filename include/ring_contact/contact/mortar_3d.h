@@ -88,7 +88,8 @@ namespace RingContact
     {
       // One basis for every call (its polynomials are built once).
       static const FaceBasis basis(1);
-      for (const auto *face : {&slave_geometry, &master_geometry, &slave, &master})
+      for (const auto *face :
+           {&slave_geometry, &master_geometry, &slave, &master})
         if (face->size() != basis.size())
           throw std::invalid_argument("pair_terms() takes bilinear faces");
       PairTerms<Number> terms;

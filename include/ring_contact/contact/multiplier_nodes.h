@@ -29,9 +29,8 @@ namespace RingContact
     /// image on the start side (the constraints tie the two). With
     /// `friction`, each node's tangential-traction dof is kept at its k.
     MultiplierNodes(
-      const ContactSurface &slave,
-      const std::map<types::global_dof_index, types::global_dof_index>
-                &twins,
+      const ContactSurface                                             &slave,
+      const std::map<types::global_dof_index, types::global_dof_index> &twins,
       const bool friction);
 
     /// The number of contact nodes.

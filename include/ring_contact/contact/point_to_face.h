@@ -32,6 +32,7 @@
 #include <ring_contact/contact/face_projection.h>
 #include <ring_contact/contact/mortar_3d.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace RingContact
@@ -71,6 +72,34 @@ namespace RingContact
       return points;
     }
 
+    /// The values of a point's numbers.
+    template <typename Number>
+    Vector3<double>
+    values(const Vector3<Number> &x)
+    {
+      return {{FaceClipping::value(x[0]),
+               FaceClipping::value(x[1]),
+               FaceClipping::value(x[2])}};
+    }
+
+    /// Whether the closest point xi of a face to p is a minimum of the
+    /// distance (its exact Hessian positive definite): where it is not (a
+    /// saddle that Gauss-Newton's steps settled on), its linearisation
+    /// would divide by a Hessian that is singular or indefinite.
+    inline bool
+    is_minimum(const FaceBasis                    &basis,
+               const std::vector<Vector3<double>> &nodes,
+               const Vector3<double>              &p,
+               const Point<2>                     &xi)
+    {
+      Tensor<2, 2> H;
+      FaceKernel::distance_gradient(nodes,
+                                    p,
+                                    FaceKernel::ShapeDerivatives(basis, xi),
+                                    &H);
+      return H[0][0] > 0 && determinant(H) > 1e-14 * H.norm_square();
+    }
+
     /// |a1 x a2| at shape gradients dN on a face.
     template <typename Number>
     Number
@@ -84,9 +113,10 @@ namespace RingContact
     }
 
     /// The terms of one slave point of the face `slave_geometry` against
-    /// the master face `master_geometry`, whose closest point to it is at
-    /// xi_m0 (closest_point()); the gaps with the positions `slave` and
-    /// `master` (PairTerms, as mortar_3d.h's pair_terms()).
+    /// the master face `master_geometry`, whose closest point to it is
+    /// found again here (closest_point(), in the values), so that the terms
+    /// are a function of the positions alone; the gaps with the positions
+    /// `slave` and `master` (PairTerms, as mortar_3d.h's pair_terms()).
     template <typename Number>
     Mortar3D::PairTerms<Number>
     point_terms(const std::vector<Vector3<Number>> &slave_geometry,
@@ -94,8 +124,7 @@ namespace RingContact
                 const std::vector<Vector3<Number>> &slave,
                 const std::vector<Vector3<Number>> &master,
                 const std::vector<Number>          &lambda,
-                const SlavePoint                   &point,
-                const Point<2>                     &xi_m0)
+                const SlavePoint                   &point)
     {
       static const FaceBasis    basis(1);
       std::vector<double>       N;
@@ -126,7 +155,15 @@ namespace RingContact
       for (unsigned int k = 0; k < 4; ++k)
         for (unsigned int d = 0; d < 3; ++d)
           x_g[d] += N[k] * slave_geometry[k][d];
-      const auto xi =
+      const auto found =
+        FaceKernel::closest_point(basis,
+                                  FaceKernel::values(master_geometry),
+                                  values(x_g));
+      if (!found.converged)
+        throw std::runtime_error(
+          "a slave point's closest point on its master face was lost");
+      const Point<2> &xi_m0 = found.xi;
+      const auto      xi =
         FaceKernel::linearised_closest_xi(basis, master_geometry, x_g, xi_m0);
       const FaceKernel::ShapeDerivatives s(basis, xi_m0);
       const Number        dxi[2] = {xi[0] - xi_m0[0], xi[1] - xi_m0[1]};
