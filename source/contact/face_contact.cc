@@ -1,6 +1,18 @@
 // The contact of two surfaces in 3D (face_contact.h): the surfaces from
 // the mesh, the pairs and the active set, and the rows of the Newton
 // system in AD numbers.
+//
+// A Newton iteration asks two things of the class, in this order, as it
+// asks the 2D ContactInterface: update() at the iterate (the pairs, the
+// weighted gaps in double and the active set they give), then assemble()
+// at the same iterate (each pair's rows and their derivatives). The
+// values and the derivatives come from one function per pair, written in
+// any number type: Mortar3D::pair_terms() for the clipped pairs,
+// PointToFace::point_terms() for a slave point; in double it gives the
+// weighted gaps of update(), in Sacado's DFad numbers of the pair's 28
+// unknowns the residual and its exact tangent. Nothing here is
+// linearised by hand: the clip vertices, the preimages, the closest points
+// and the normals all move with the unknowns through the AD numbers.
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
@@ -41,6 +53,10 @@ namespace RingContact
                   const types::boundary_id              tag,
                   std::vector<types::global_dof_index> *multipliers)
     {
+      // Each boundary face of the tag is one face of the surface; a face
+      // holds its cell's unknowns at its four vertices, found through the
+      // cell's vertex numbers (face_to_cell_vertices() gives them in the
+      // face's lexicographic order, the order of the face basis).
       const std::string              surface = multipliers ? "slave" : "master";
       std::vector<FaceContact::Face> faces;
       std::map<types::global_dof_index, unsigned int> node_of;
@@ -65,6 +81,9 @@ namespace RingContact
               throw std::runtime_error(
                 "the cells of the 3D slave surface (boundary tag " +
                 std::to_string(tag) + ") carry no contact pressure");
+            // The unknowns of the cell; the FESystem's component c at cell
+            // vertex v is its base element's unknown v (FE_Q numbers its
+            // vertices' unknowns first, in the cell's vertex order).
             local.resize(fe.n_dofs_per_cell());
             cell->get_dof_indices(local);
             FaceContact::Face face;
@@ -80,6 +99,8 @@ namespace RingContact
                 face.node[v] = numbers::invalid_unsigned_int;
                 if (multipliers == nullptr)
                   continue;
+                // The pressure unknown at the vertex: one node of the slave
+                // surface, shared by the faces around the vertex.
                 const auto dof = local[fe.component_to_system_index(3, cv)];
                 const auto [at, added] =
                   node_of.emplace(dof, multipliers->size());
@@ -115,7 +136,10 @@ namespace RingContact
     }
 
     /// Whether a face is a parallelogram (x0 - x1 - x2 + x3 = 0 relative to
-    /// its size): its map from the plane is then affine.
+    /// its size): its map from the plane is then affine. x0 - x1 - x2 + x3
+    /// is the bilinear map's twist, the coefficient of xi_1 xi_2; it is
+    /// compared with the square of the face's diagonal, so that the test
+    /// does not depend on the units.
     bool
     parallelogram(const std::vector<Vector3<double>> &x)
     {
@@ -146,7 +170,10 @@ namespace RingContact
     }
 
     /// The nodes of a face in AD numbers of value x and derivative 1 in
-    /// unknown `first` + 3 k + d (or none, `first` invalid).
+    /// unknown `first` + 3 k + d (or none, `first` invalid). The pair's
+    /// independent variables are its unknowns' increments: a node's value
+    /// is its position, reference plus displacement, and its derivative
+    /// with respect to its displacement unknown is 1.
     std::vector<Vector3<AD>>
     ad_nodes(const std::vector<Vector3<double>> &x,
              const unsigned int                  n_unknowns,
@@ -180,10 +207,15 @@ namespace RingContact
       throw std::invalid_argument("the complementarity constant must be > 0");
     if (scheme == Scheme::gauss && gauss_points == 0)
       throw std::invalid_argument("the Gauss scheme needs at least one point");
+    // The two surfaces, as faces with their unknowns; the slave's vertices
+    // numbered as the multiplier nodes.
     slave  = surface_faces(dof_handler, slave_tag, &multiplier_dofs);
     master = surface_faces(dof_handler, master_tag, nullptr);
     // w_k by the 2 x 2 Gauss rule on each reference slave face (exact for
-    // a parallelogram's bilinear N_k |a1 x a2|).
+    // a parallelogram's bilinear N_k |a1 x a2|). The weights are the
+    // reference configuration's in finite strain too: they scale the open
+    // nodes' rows w_k lambda_k and the active-set choice, where a fixed
+    // scale keeps the complementarity function's switch where it was.
     weights.assign(n_nodes(), 0.);
     const QGauss<2>           rule(2);
     std::vector<double>       N;
@@ -203,6 +235,8 @@ namespace RingContact
   }
 
 
+  // The positions of a face's nodes at a solution: the reference
+  // positions moved by the displacement unknowns.
   std::vector<Vector3<double>>
   FaceContact::current(const Face &face, const Vector<double> &solution) const
   {
@@ -260,10 +294,15 @@ namespace RingContact
   unsigned int
   FaceContact::update(const Vector<double> &solution)
   {
+    // Where the pairs are sought and the normals taken: the reference
+    // configuration in small strain (the gaps then linear in the
+    // displacement), the current one in finite strain.
     const std::function<std::vector<Vector3<double>>(const Face &)> geometry =
       [&](const Face &face) {
         return geometrically_linear ? face.reference : current(face, solution);
       };
+    // Everything of the last update() is found again: the pairs change as
+    // the surfaces slide.
     candidates.clear();
     overlapping.clear();
     point_pairs.clear();
@@ -273,6 +312,8 @@ namespace RingContact
       pair_points(geometry, solution, covered);
     else
       {
+        // Each slave face against the master faces near it: the clip of
+        // each gives its share of the face nodes' weighted gaps.
         const PlacedSurface on = place(master, geometry);
         for (unsigned int s = 0; s < slave.size(); ++s)
           {
@@ -300,8 +341,10 @@ namespace RingContact
               }
           }
       }
-    // A node that no master face covers stays open: its gap row would be
-    // empty.
+    // The primal-dual active set: node k is closed where
+    // w_k lambda_k - c g~_k > 0, i.e. where the pressure the node carries,
+    // or the interpenetration its weighted gap measures, says so. A node
+    // that no master face covers stays open: its gap row would be empty.
     unsigned int changes = 0;
     for (unsigned int k = 0; k < n_nodes(); ++k)
       {
@@ -315,6 +358,9 @@ namespace RingContact
   }
 
 
+  // The point-wise schemes' pairing, the 3D form of the 2D nodal and Gauss
+  // schemes' projections.
+  //
   // Each point of each slave face is paired with the closest point on the
   // master faces near it (within the slave face's diameter), among those
   // whose closest point lies on the face; of several (a point over a
@@ -329,8 +375,10 @@ namespace RingContact
     const PlacedSurface on = place(master, geometry);
     for (unsigned int s = 0; s < slave.size(); ++s)
       {
-        const auto             xs       = geometry(slave[s]);
-        const auto             diameter = centre_and_diameter(xs).second;
+        const auto xs       = geometry(slave[s]);
+        const auto diameter = centre_and_diameter(xs).second;
+        // The master faces met by any point of this face: its candidates
+        // (for the sparsity pattern).
         std::set<unsigned int> near;
         for (unsigned int q = 0; q < points.size(); ++q)
           {
@@ -355,6 +403,8 @@ namespace RingContact
                     best    = {s, q, m};
                   }
               }
+            // No master face under the point (beyond the master's edge):
+            // it adds nothing, as a slave segment past the master does in 2D.
             if (best.master_face == numbers::invalid_unsigned_int)
               continue;
             point_pairs.push_back(best);
@@ -382,6 +432,11 @@ namespace RingContact
   }
 
 
+  // The couplings are those of the candidates, not only of the pairs that
+  // overlap now: a pair that starts to overlap in a later iteration then
+  // finds its entries in the pattern. Each pair couples all its unknowns,
+  // both faces' displacements and the slave face's pressures, as its
+  // local matrix is full.
   void
   FaceContact::add_couplings(DynamicSparsityPattern          &pattern,
                              const AffineConstraints<double> &constraints) const
@@ -423,7 +478,9 @@ namespace RingContact
                       constraints,
                       matrix,
                       rhs);
-    // The open nodes' rows w_k lambda_k.
+    // The open nodes' rows w_k lambda_k: the pressure of an open node is
+    // zero, written as a row scaled as the closed nodes' gap rows are
+    // (forces), so that the system's rows share one scale.
     FullMatrix<double> w(1, 1);
     Vector<double>     r(1);
     for (unsigned int k = 0; k < n_nodes(); ++k)
@@ -449,6 +506,8 @@ namespace RingContact
                              SparseMatrix<double>            &matrix,
                              Vector<double>                  &rhs) const
   {
+    // The 28 unknowns: the slave face's displacements (3 per node, 0-11),
+    // the master face's (12-23), the slave face's pressures (24-27).
     constexpr unsigned int               n = 28;
     std::vector<types::global_dof_index> dofs;
     for (const Face *face : {&s, &m})
@@ -460,6 +519,9 @@ namespace RingContact
         dofs.push_back(multiplier_dofs[s.node[k]]);
         lambda.emplace_back(n, 24 + k, solution(dofs.back()));
       }
+    // The positions in AD numbers; in small strain the clip, the points
+    // and the normal take the reference positions (constants), the gaps
+    // the current ones.
     const auto xs   = ad_nodes(current(s, solution), n, 0);
     const auto xm   = ad_nodes(current(m, solution), n, 12);
     const auto none = numbers::invalid_unsigned_int;
@@ -476,6 +538,12 @@ namespace RingContact
                              clip_rule(FaceKernel::values(sg),
                                        FaceKernel::values(mg)));
 
+    // The pair's residual in the unknowns' order: the forces on the two
+    // faces' nodes, then the closed nodes' gap rows c g~_k (the open
+    // nodes' rows are assemble()'s); its derivatives are the local
+    // matrix, its values with the sign of a right-hand side -R the local
+    // vector, both added through the constraints (the imposed
+    // displacements, the pressure fixed off the slave surface).
     std::vector<AD> residual(terms.slave_force);
     residual.insert(residual.end(),
                     terms.master_force.begin(),
