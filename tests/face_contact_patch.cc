@@ -42,7 +42,9 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <ring_contact/contact/active_set.h>
 #include <ring_contact/contact/face_contact.h>
+#include <ring_contact/contact/multiplier_nodes.h>
 
 #include "tests.h"
 
@@ -53,7 +55,9 @@
 #include <vector>
 
 using namespace dealii;
+using RingContact::ActiveSet;
 using RingContact::FaceContact;
+using RingContact::MultiplierNodes;
 using RingContactTests::check;
 
 namespace
@@ -243,6 +247,79 @@ worse(const double a, const double b)
 // then the multipliers and the displacements against the closed form.
 using Scheme = FaceContact::Scheme;
 
+// The faces of a pair with the program's active set (ActiveSet, chosen
+// from the faces' weighted gaps) and the open nodes' rows w_k lambda_k:
+// what ContactInterface<3> adds to FaceContact, here on a SparseMatrix.
+struct Pair
+{
+  Pair(const DoFHandler<3> &dofs, const bool linear, const Scheme scheme)
+      : faces(dofs, 3, 2, c, linear, scheme)
+      , nodes(multipliers(faces), faces.weights())
+      , states(nodes, c, 0., 0.2)
+  {}
+
+  static std::vector<types::global_dof_index>
+  multipliers(const FaceContact &faces)
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (unsigned int k = 0; k < faces.n_nodes(); ++k)
+      dofs.push_back(faces.multiplier_dof(k));
+    return dofs;
+  }
+
+  unsigned int
+  update(const Vector<double> &u)
+  {
+    faces.pair(u);
+    return states.choose_closed_nodes(u,
+                                      faces.weighted_gaps(),
+                                      faces.covered(),
+                                      true);
+  }
+
+  void
+  assemble(const Vector<double>            &u,
+           const AffineConstraints<double> &constraints,
+           SparseMatrix<double>            &matrix,
+           Vector<double>                  &rhs) const
+  {
+    std::vector<bool> closed(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      closed[k] = states.is_closed(k);
+    faces.assemble(u,
+                   closed,
+                   true,
+                   0,
+                   1,
+                   [&](const FullMatrix<double>                   &m,
+                       const Vector<double>                       &r,
+                       const std::vector<types::global_dof_index> &d) {
+                     constraints.distribute_local_to_global(
+                       m, r, d, matrix, rhs);
+                   });
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      if (!closed[k])
+        {
+          FullMatrix<double> w(1, 1);
+          Vector<double>     r(1);
+          w(0, 0) = nodes.reference_weight[k];
+          r(0)    = -nodes.reference_weight[k] * u(nodes.dofs[k]);
+          constraints.distribute_local_to_global(
+            w,
+            r,
+            std::vector<types::global_dof_index>{nodes.dofs[k]},
+            matrix,
+            rhs);
+        }
+  }
+
+  /// c = E / h with the slave faces' size.
+  static constexpr double c = E[1] / 0.2;
+  FaceContact             faces;
+  const MultiplierNodes   nodes;
+  ActiveSet               states;
+};
+
 std::string
 name(const Scheme scheme)
 {
@@ -266,10 +343,9 @@ patch_test(std::ostream &out,
   const hp::FECollection<3> fe = elements(1);
   DoFHandler<3>             dofs(blocks);
   distribute(dofs, fe);
-  // c = E / h with the slave faces' size.
-  FaceContact               contact(dofs, 3, 2, E[1] / 0.2, true, scheme);
+  Pair                      contact(dofs, true, scheme);
   AffineConstraints<double> constraints;
-  make_constraints(dofs, contact, constraints);
+  make_constraints(dofs, contact.faces, constraints);
 
   Vector<double>                            u(dofs.n_dofs());
   std::map<types::global_dof_index, double> top;
@@ -283,7 +359,7 @@ patch_test(std::ostream &out,
   contact.update(u);
   DynamicSparsityPattern pattern(dofs.n_dofs());
   DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
-  contact.add_couplings(pattern, constraints);
+  contact.faces.add_couplings(pattern, constraints);
   SparsityPattern sparsity;
   sparsity.copy_from(pattern);
   SparseMatrix<double> matrix(sparsity);
@@ -306,13 +382,13 @@ patch_test(std::ostream &out,
 
   double       worst_pressure = 0;
   unsigned int n_active       = 0;
-  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+  for (unsigned int k = 0; k < contact.nodes.size(); ++k)
     {
-      const double lambda = u(contact.multiplier_dof(k));
+      const double lambda = u(contact.nodes.dofs[k]);
       worst_pressure      = worse(worst_pressure, std::abs(lambda - p));
-      n_active += contact.active(k);
+      n_active += contact.states.is_closed(k);
     }
-  check(n_active == contact.n_nodes(), "every slave node is closed");
+  check(n_active == contact.nodes.size(), "every slave node is closed");
   const std::string case_name =
     name(scheme) + ", " + (matching ? "matching" : "non-matching") + " meshes" +
     (offset != 0 ? ", 100 out from the origin" : "");
@@ -364,10 +440,11 @@ patch_test(std::ostream &out,
                     exact[c]));
       }
   check(worst_u < 1e-8 * d, "the displacement is the closed form's");
-  out << "patch test, " << case_name << ", " << contact.slave_faces().size()
-      << " slave faces against " << contact.master_faces().size()
-      << " master faces, " << contact.pairs().size() << " pairs, "
-      << contact.n_nodes() << " contact nodes, " << dofs.n_dofs()
+  out << "patch test, " << case_name << ", "
+      << contact.faces.slave_faces().size() << " slave faces against "
+      << contact.faces.master_faces().size() << " master faces, "
+      << contact.faces.pairs().size() << " pairs, " << contact.faces.n_nodes()
+      << " contact nodes, " << dofs.n_dofs()
       << " unknowns: the active set settled after " << iterations << " solves"
       << std::endl
       << "every multiplier is p = (d - g0) / (h1/E1 + h2/E2) = " << p
@@ -396,32 +473,33 @@ tangent_test(std::ostream &out, const Scheme scheme)
   const hp::FECollection<3> fe = elements(1);
   DoFHandler<3>             dofs(blocks);
   distribute(dofs, fe);
-  FaceContact contact(dofs, 3, 2, E[1] / 0.2, false, scheme);
+  Pair contact(dofs, false, scheme);
 
   std::set<types::global_dof_index> unknowns;
-  for (const auto *faces : {&contact.slave_faces(), &contact.master_faces()})
+  for (const auto *faces :
+       {&contact.faces.slave_faces(), &contact.faces.master_faces()})
     for (const auto &face : *faces)
       for (const auto &node : face.u_dofs)
         unknowns.insert(node.begin(), node.end());
   Vector<double> state(dofs.n_dofs());
   for (const auto i : unknowns)
     state(i) = 4e-3 * scatter(i);
-  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
+  for (unsigned int k = 0; k < contact.nodes.size(); ++k)
     {
-      unknowns.insert(contact.multiplier_dof(k));
-      state(contact.multiplier_dof(k)) = p * (0.5 + scatter(1000 + k));
+      unknowns.insert(contact.nodes.dofs[k]);
+      state(contact.nodes.dofs[k]) = p * (0.5 + scatter(1000 + k));
     }
   contact.update(state);
   unsigned int n_active = 0;
-  for (unsigned int k = 0; k < contact.n_nodes(); ++k)
-    n_active += contact.active(k);
-  check(n_active > 0 && n_active < contact.n_nodes(),
+  for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+    n_active += contact.states.is_closed(k);
+  check(n_active > 0 && n_active < contact.nodes.size(),
         "the state has open and closed nodes");
 
   AffineConstraints<double> none;
   none.close();
   DynamicSparsityPattern pattern(dofs.n_dofs());
-  contact.add_couplings(pattern, none);
+  contact.faces.add_couplings(pattern, none);
   SparsityPattern sparsity;
   sparsity.copy_from(pattern);
   SparseMatrix<double> matrix(sparsity), scratch(sparsity);
@@ -446,7 +524,7 @@ tangent_test(std::ostream &out, const Scheme scheme)
     }
   check(worst < 1e-8 * scale, "the contact tangent is exact");
   out << "finite strain, " << name(scheme) << ", a displaced state with "
-      << n_active << " of " << contact.n_nodes()
+      << n_active << " of " << contact.nodes.size()
       << " nodes closed: the derivatives of the contact rows in "
       << unknowns.size()
       << " unknowns equal central differences to 1e-8 of the largest entry"

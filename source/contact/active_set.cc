@@ -82,6 +82,26 @@ namespace RingContact
                                  const bool piecewise_linear)
   {
     sum_weighted_gaps(slave, points);
+    return choose_from_weighted_gaps(solution, nullptr, piecewise_linear);
+  }
+
+  unsigned int
+  ActiveSet::choose_closed_nodes(const Vector<double>      &solution,
+                                 const std::vector<double> &weighted_gaps,
+                                 const std::vector<bool>   &covered,
+                                 const bool                 piecewise_linear)
+  {
+    AssertDimension(weighted_gaps.size(), nodes.size());
+    AssertDimension(covered.size(), nodes.size());
+    weighted_gap = weighted_gaps;
+    return choose_from_weighted_gaps(solution, &covered, piecewise_linear);
+  }
+
+  unsigned int
+  ActiveSet::choose_from_weighted_gaps(const Vector<double>    &solution,
+                                       const std::vector<bool> *covered,
+                                       const bool piecewise_linear)
+  {
     std::vector<bool>   closed(nodes.dofs.size());
     std::vector<double> indicator(nodes.dofs.size());
     for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
@@ -121,8 +141,12 @@ namespace RingContact
         std::count(closed.begin(), closed.end(), true) <= 1)
       for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
         if (solution(nodes.dofs[k]) >= 0 &&
-            weighted_gap[k] <= 1e-2 * segment_length * nodes.reference_weight[k])
+            weighted_gap[k] <=
+              1e-2 * segment_length * nodes.reference_weight[k])
           closed[k] = true;
+    if (covered != nullptr)
+      for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
+        closed[k] = closed[k] && (*covered)[k];
     if (edge_extrapolation && piecewise_linear && !first_update_of_step)
       extrapolate_zone_edges(active,
                              std::vector<bool>(active.size(), true),
@@ -167,10 +191,9 @@ namespace RingContact
             const double w = nodes.reference_weight[k];
             trial[k] =
               w * solution(nodes.tangential_dofs[k]) + c * weighted_slip[k];
-            const double bound = friction_coefficient *
-                                 std::max(0.0,
-                                          w * solution(nodes.dofs[k]) -
-                                            c * weighted_gap[k]);
+            const double bound =
+              friction_coefficient *
+              std::max(0.0, w * solution(nodes.dofs[k]) - c * weighted_gap[k]);
             room[k] = bound - std::abs(trial[k]);
             // A sliding node at the bound stays sliding: at the start of
             // a step (s~ = 0) a node that slid has |T| = B to round-off,
@@ -213,10 +236,10 @@ namespace RingContact
     // At finite strain a sliding node whose new state is sliding the other
     // way sticks first: it slides the other way only if its trial is still
     // beyond the bound at the next update. There the stick zones' edges are
-    // not extrapolated (but in a step from rest, problem/first_step.cc; the rule comes
-    // after the extrapolation, which reads the plain rule's states), and the
-    // nodes a stick zone grows over flipped from one sense to the other at
-    // each iteration (a slip of 1e-7 against the sense slid gives a trial of
+    // not extrapolated (but in a step from rest, problem/first_step.cc; the
+    // rule comes after the extrapolation, which reads the plain rule's states),
+    // and the nodes a stick zone grows over flipped from one sense to the other
+    // at each iteration (a slip of 1e-7 against the sense slid gives a trial of
     // ten times the bound) under a damped line search. Steel on aluminium from
     // touching, Saint Venant-Kirchhoff, mu = 0.2, four steps: fewer iterations
     // in all with the rule, for nodal, Gauss 2 and segment-based 2 alike, the
@@ -269,14 +292,14 @@ namespace RingContact
   //
   // Written for any zone of nodes `inside` a set: the contact zones (closed
   // nodes, indicator w lambda - c g~, walks over all nodes), and the stick
-  // zones within them (choose_friction_states(): sticking nodes, indicator B - |T|,
-  // walks over the closed nodes only). "Closed" and "open" below read
+  // zones within them (choose_friction_states(): sticking nodes, indicator B -
+  // |T|, walks over the closed nodes only). "Closed" and "open" below read
   // "inside" and "outside".
   void
   ActiveSet::extrapolate_zone_edges(const std::vector<bool>   &inside,
-                                           const std::vector<bool>   &linked,
-                                           const std::vector<double> &indicator,
-                                           std::vector<bool> &closed) const
+                                    const std::vector<bool>   &linked,
+                                    const std::vector<double> &indicator,
+                                    std::vector<bool>         &closed) const
   {
     const unsigned int n      = inside.size();
     std::vector<bool>  result = closed;

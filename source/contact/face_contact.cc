@@ -2,14 +2,14 @@
 // the mesh, the pairs and the active set, and the rows of the Newton
 // system in AD numbers.
 //
-// A Newton iteration asks two things of the class, in this order, as it
-// asks the 2D ContactInterface: update() at the iterate (the pairs, the
-// weighted gaps in double and the active set they give), then assemble()
-// at the same iterate (each pair's rows and their derivatives). The
+// A Newton iteration asks two things of the class, in this order (through
+// ContactInterface<3>, which chooses the active set between them): pair()
+// at the iterate (the pairs and the weighted gaps in double), then
+// assemble() at the same iterate (each pair's rows and their derivatives). The
 // values and the derivatives come from one function per pair, written in
 // any number type: Mortar3D::pair_terms() for the clipped pairs,
 // PointToFace::point_terms() for a slave point; in double it gives the
-// weighted gaps of update(), in Sacado's DFad numbers of the pair's 28
+// weighted gaps of pair(), in Sacado's DFad numbers of the pair's 28
 // unknowns the residual and its exact tangent. Nothing here is
 // linearised by hand: the clip vertices, the preimages, the closest points
 // and the normals all move with the unknowns through the AD numbers.
@@ -75,7 +75,7 @@ namespace RingContact
                 ") lies on cells that are not first-order (Q1) hexahedra: "
                 "the 3D contact takes bilinear faces");
             if (multipliers != nullptr &&
-                (fe.n_components() != 4 ||
+                (fe.n_components() < 4 ||
                  fe.base_element(fe.component_to_base_index(3).first)
                      .n_dofs_per_vertex() != 1))
               throw std::runtime_error(
@@ -216,7 +216,7 @@ namespace RingContact
     // reference configuration's in finite strain too: they scale the open
     // nodes' rows w_k lambda_k and the active-set choice, where a fixed
     // scale keeps the complementarity function's switch where it was.
-    weights.assign(n_nodes(), 0.);
+    node_weights.assign(n_nodes(), 0.);
     const QGauss<2>           rule(2);
     std::vector<double>       N;
     std::vector<Tensor<1, 2>> dN;
@@ -228,10 +228,10 @@ namespace RingContact
           const auto   n  = FaceClipping::cross(p.a1, p.a2);
           const double dA = std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
           for (unsigned int k = 0; k < 4; ++k)
-            weights[face.node[k]] += N[k] * dA;
+            node_weights[face.node[k]] += N[k] * dA;
         }
     gaps.assign(n_nodes(), 0.);
-    is_active.assign(n_nodes(), false);
+    is_covered.assign(n_nodes(), false);
   }
 
 
@@ -291,8 +291,8 @@ namespace RingContact
   // the cube about its centre of half-width its diameter: the surfaces are
   // paired up to a face's size apart. Segment-based, a candidate whose
   // projection on the slave face's plane does not overlap it adds nothing.
-  unsigned int
-  FaceContact::update(const Vector<double> &solution)
+  void
+  FaceContact::pair(const Vector<double> &solution)
   {
     // Where the pairs are sought and the normals taken: the reference
     // configuration in small strain (the gaps then linear in the
@@ -301,9 +301,9 @@ namespace RingContact
       [&](const Face &face) {
         return geometrically_linear ? face.reference : current(face, solution);
       };
-    // Everything of the last update() is found again: the pairs change as
+    // Everything of the last pair() is found again: the pairs change as
     // the surfaces slide.
-    candidates.clear();
+    near_pairs.clear();
     overlapping.clear();
     point_pairs.clear();
     std::fill(gaps.begin(), gaps.end(), 0.);
@@ -321,7 +321,7 @@ namespace RingContact
             const auto [centre, diameter] = centre_and_diameter(xs);
             for (const unsigned int m : on.search.near(centre, diameter))
               {
-                candidates.emplace_back(s, m);
+                near_pairs.emplace_back(s, m);
                 const auto &xm = on.faces[m].nodes;
                 const auto  terms =
                   Mortar3D::pair_terms<double>(xs,
@@ -341,20 +341,7 @@ namespace RingContact
               }
           }
       }
-    // The primal-dual active set: node k is closed where
-    // w_k lambda_k - c g~_k > 0, i.e. where the pressure the node carries,
-    // or the interpenetration its weighted gap measures, says so. A node
-    // that no master face covers stays open: its gap row would be empty.
-    unsigned int changes = 0;
-    for (unsigned int k = 0; k < n_nodes(); ++k)
-      {
-        const bool now =
-          covered[k] &&
-          weights[k] * solution(multiplier_dofs[k]) - c * gaps[k] > 0;
-        changes += (now != is_active[k]);
-        is_active[k] = now;
-      }
-    return changes;
+    is_covered = covered;
   }
 
 
@@ -427,7 +414,7 @@ namespace RingContact
               }
           }
         for (const unsigned int m : near)
-          candidates.emplace_back(s, m);
+          near_pairs.emplace_back(s, m);
       }
   }
 
@@ -437,94 +424,97 @@ namespace RingContact
   // finds its entries in the pattern. Each pair couples all its unknowns,
   // both faces' displacements and the slave face's pressures, as its
   // local matrix is full.
+  std::vector<types::global_dof_index>
+  FaceContact::pair_dofs(const Face &s, const Face &m) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const Face *face : {&s, &m})
+      for (const auto &node : face->u_dofs)
+        dofs.insert(dofs.end(), node.begin(), node.end());
+    for (const unsigned int k : s.node)
+      dofs.push_back(multiplier_dofs[k]);
+    return dofs;
+  }
+
   void
   FaceContact::add_couplings(DynamicSparsityPattern          &pattern,
                              const AffineConstraints<double> &constraints) const
   {
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &[s, m] : candidates)
-      {
-        dofs.clear();
-        for (const Face *face : {&slave[s], &master[m]})
-          for (const auto &node : face->u_dofs)
-            dofs.insert(dofs.end(), node.begin(), node.end());
-        for (const unsigned int k : slave[s].node)
-          dofs.push_back(multiplier_dofs[k]);
-        constraints.add_entries_local_to_global(dofs, pattern, false);
-      }
+    for (const auto &[s, m] : near_pairs)
+      constraints.add_entries_local_to_global(pair_dofs(slave[s], master[m]),
+                                              pattern,
+                                              false);
     for (const auto dof : multiplier_dofs)
       constraints.add_entries_local_to_global(
         std::vector<types::global_dof_index>{dof}, pattern, false);
   }
 
+  std::vector<std::vector<types::global_dof_index>>
+  FaceContact::coupling_blocks() const
+  {
+    std::vector<std::vector<types::global_dof_index>> blocks;
+    for (const auto &[s, m] : near_pairs)
+      {
+        blocks.push_back(pair_dofs(slave[s], master[m]));
+        std::sort(blocks.back().begin(), blocks.back().end());
+      }
+    return blocks;
+  }
+
 
   // @sect4{The rows of the Newton system}
+  //
+  // Each pair (a clipped pair, or a paired slave point) is one local
+  // system; the i-th is this process's if i % n_processes == process.
   void
-  FaceContact::assemble(const Vector<double>            &solution,
-                        const AffineConstraints<double> &constraints,
-                        SparseMatrix<double>            &matrix,
-                        Vector<double>                  &rhs) const
+  FaceContact::assemble(const Vector<double>    &solution,
+                        const std::vector<bool> &closed,
+                        const bool               derivatives,
+                        const unsigned int       process,
+                        const unsigned int       n_processes,
+                        const LocalRows         &add) const
   {
-    if (scheme == Scheme::segment_based)
-      for (const auto &[s, m] : overlapping)
+    AssertDimension(closed.size(), n_nodes());
+    const bool        segment_based = scheme == Scheme::segment_based;
+    const std::size_t n_pairs =
+      segment_based ? overlapping.size() : point_pairs.size();
+    for (std::size_t i = process; i < n_pairs; i += n_processes)
+      {
+        const PointPair *point = segment_based ? nullptr : &point_pairs[i];
+        const auto [s, m] =
+          segment_based ? overlapping[i] :
+                          std::make_pair(point->slave_face, point->master_face);
         assemble_pair(
-          slave[s], master[m], nullptr, solution, constraints, matrix, rhs);
-    else
-      for (const PointPair &pair : point_pairs)
-        assemble_pair(slave[pair.slave_face],
-                      master[pair.master_face],
-                      &pair,
-                      solution,
-                      constraints,
-                      matrix,
-                      rhs);
-    // The open nodes' rows w_k lambda_k: the pressure of an open node is
-    // zero, written as a row scaled as the closed nodes' gap rows are
-    // (forces), so that the system's rows share one scale.
-    FullMatrix<double> w(1, 1);
-    Vector<double>     r(1);
-    for (unsigned int k = 0; k < n_nodes(); ++k)
-      if (!is_active[k])
-        {
-          w(0, 0) = weights[k];
-          r(0)    = -weights[k] * solution(multiplier_dofs[k]);
-          constraints.distribute_local_to_global(
-            w, r, {multiplier_dofs[k]}, matrix, rhs);
-        }
+          slave[s], master[m], point, solution, closed, derivatives, add);
+      }
   }
 
 
   // One pair's rows in AD numbers of its 28 unknowns: the slave face's 12
   // displacements, the master face's 12 and the slave face's 4 pressures;
-  // the clipped pair's, or with `point` one slave point's.
+  // the clipped pair's, or with `point` one slave point's. Without
+  // derivatives the AD numbers carry none (their values are the same).
   void
-  FaceContact::assemble_pair(const Face                      &s,
-                             const Face                      &m,
-                             const PointPair                 *point,
-                             const Vector<double>            &solution,
-                             const AffineConstraints<double> &constraints,
-                             SparseMatrix<double>            &matrix,
-                             Vector<double>                  &rhs) const
+  FaceContact::assemble_pair(const Face              &s,
+                             const Face              &m,
+                             const PointPair         *point,
+                             const Vector<double>    &solution,
+                             const std::vector<bool> &closed,
+                             const bool               derivatives,
+                             const LocalRows         &add) const
   {
-    // The 28 unknowns: the slave face's displacements (3 per node, 0-11),
-    // the master face's (12-23), the slave face's pressures (24-27).
-    constexpr unsigned int               n = 28;
-    std::vector<types::global_dof_index> dofs;
-    for (const Face *face : {&s, &m})
-      for (const auto &node : face->u_dofs)
-        dofs.insert(dofs.end(), node.begin(), node.end());
-    std::vector<AD> lambda;
+    constexpr unsigned int n    = 28;
+    const auto             dofs = pair_dofs(s, m);
+    const auto             none = numbers::invalid_unsigned_int;
+    std::vector<AD>        lambda;
     for (unsigned int k = 0; k < 4; ++k)
-      {
-        dofs.push_back(multiplier_dofs[s.node[k]]);
-        lambda.emplace_back(n, 24 + k, solution(dofs.back()));
-      }
+      lambda.push_back(derivatives ? AD(n, 24 + k, solution(dofs[24 + k])) :
+                                     AD(solution(dofs[24 + k])));
     // The positions in AD numbers; in small strain the clip, the points
     // and the normal take the reference positions (constants), the gaps
     // the current ones.
-    const auto xs   = ad_nodes(current(s, solution), n, 0);
-    const auto xm   = ad_nodes(current(m, solution), n, 12);
-    const auto none = numbers::invalid_unsigned_int;
+    const auto xs = ad_nodes(current(s, solution), n, derivatives ? 0 : none);
+    const auto xm = ad_nodes(current(m, solution), n, derivatives ? 12 : none);
     const auto sg = geometrically_linear ? ad_nodes(s.reference, n, none) : xs;
     const auto mg = geometrically_linear ? ad_nodes(m.reference, n, none) : xm;
     const auto terms =
@@ -540,26 +530,24 @@ namespace RingContact
 
     // The pair's residual in the unknowns' order: the forces on the two
     // faces' nodes, then the closed nodes' gap rows c g~_k (the open
-    // nodes' rows are assemble()'s); its derivatives are the local
+    // nodes' rows are the caller's); its derivatives are the local
     // matrix, its values with the sign of a right-hand side -R the local
-    // vector, both added through the constraints (the imposed
-    // displacements, the pressure fixed off the slave surface).
+    // vector.
     std::vector<AD> residual(terms.slave_force);
     residual.insert(residual.end(),
                     terms.master_force.begin(),
                     terms.master_force.end());
     for (unsigned int k = 0; k < 4; ++k)
-      residual.push_back(is_active[s.node[k]] ? c * terms.gaps[k] : AD(0.));
-    FullMatrix<double> local_matrix(n, n);
+      residual.push_back(closed[s.node[k]] ? c * terms.gaps[k] : AD(0.));
+    FullMatrix<double> local_matrix(derivatives ? n : 0, derivatives ? n : 0);
     Vector<double>     local_rhs(n);
     for (unsigned int i = 0; i < n; ++i)
       {
         local_rhs(i) = -residual[i].val();
-        if (residual[i].size() > 0)
+        if (derivatives && residual[i].size() > 0)
           for (unsigned int j = 0; j < n; ++j)
             local_matrix(i, j) = residual[i].dx(j);
       }
-    constraints.distribute_local_to_global(
-      local_matrix, local_rhs, dofs, matrix, rhs);
+    add(local_matrix, local_rhs, dofs);
   }
 } // namespace RingContact

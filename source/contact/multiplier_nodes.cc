@@ -26,9 +26,9 @@ namespace RingContact
   // and the trial tractions stay linear in the unknowns, and the rows keep
   // their scale however the surface stretches.
   MultiplierNodes::MultiplierNodes(
-    const ContactSurface &slave,
+    const ContactSurface                                             &slave,
     const std::map<types::global_dof_index, types::global_dof_index> &twins,
-    const bool friction)
+    const bool                                                        friction)
   {
     const QGauss<1> exact(slave.geometry_basis().size() +
                           slave.multiplier_basis().size());
@@ -126,6 +126,18 @@ namespace RingContact
     for (const auto &[dof, k] : index)
       all.push_back(dof);
     return all;
+  }
+
+  // The faces' nodes: each dof its own node, the weights the caller's.
+  MultiplierNodes::MultiplierNodes(
+    const std::vector<types::global_dof_index> &dofs,
+    const std::vector<double>                  &weights)
+      : dofs(dofs)
+      , reference_weight(weights)
+      , neighbours(dofs.size())
+  {
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      index[dofs[k]] = k;
   }
 
   // Without friction there is no tangential traction (and no list).

@@ -72,6 +72,15 @@ namespace RingContact
                         const std::vector<ContactPoint> &points,
                         const bool                       piecewise_linear);
 
+    /// The same choice from weighted gaps g~_k summed by the caller (the
+    /// faces of a 3D surface, FaceContact); a node that no master face
+    /// covers (`covered[k]` false: its gap row would be empty) stays open.
+    unsigned int
+    choose_closed_nodes(const Vector<double>      &solution,
+                        const std::vector<double> &weighted_gaps,
+                        const std::vector<bool>   &covered,
+                        const bool                 piecewise_linear);
+
     /// Friction: the stick and slip states of the closed nodes from their
     /// trial tractions, with the weighted slips s~_k (`weighted_slip`) of
     /// the contact element; `linear_gaps`: small strain. Returns the
@@ -170,6 +179,13 @@ namespace RingContact
     /// @}
 
   private:
+    /// The primal-dual choice from `weighted_gap`, nodes not `covered` (if
+    /// given) kept open: the two choose_closed_nodes().
+    unsigned int
+    choose_from_weighted_gaps(const Vector<double>    &solution,
+                              const std::vector<bool> *covered,
+                              const bool               piecewise_linear);
+
     /// The weighted gaps g~_k = sum Phi_k g ds over the paired `points`.
     void
     sum_weighted_gaps(const ContactSurface            &slave,

@@ -63,8 +63,8 @@
 namespace RingContact
 {
   /// The contact interface of a pair of surfaces in `dim` dimensions: the
-  /// class below for dim = 2; the 3D one is FaceContact
-  /// (face_contact.h) until the problem holds either (issue 48).
+  /// class below for dim = 2 (segments of curves); for dim = 3 (bilinear
+  /// faces) face_contact_interface.h, with the same vocabulary.
   template <int dim>
   class ContactInterface;
 
@@ -309,5 +309,8 @@ namespace RingContact
     std::set<std::pair<unsigned int, unsigned int>> pattern_pairs;
   };
 } // namespace RingContact
+
+// The 3D interface, ContactInterface<3>.
+#include <ring_contact/contact/face_contact_interface.h>
 
 #endif

@@ -1,6 +1,6 @@
 // @sect3{The contact of two surfaces in three dimensions}
 //
-// The 3D counterpart of ContactInterface: a
+// The 3D counterpart of the 2D contact surfaces and pairing: a
 // slave surface of bilinear faces that carries the contact pressure (the
 // Lagrange multiplier at its vertices, in the same finite-element system
 // as the displacement), a master surface of bilinear faces, and the rows
@@ -29,8 +29,9 @@
 // same rows from it. The faces are
 // bilinear (Q1 hexahedra): quadratic faces, split into four bilinear
 // sub-faces, are the next step, and a Q2 surface is refused here. This is
-// the contact of one pair of surfaces; ContactProblem<3> is to hold one per
-// pair, as the 2D program holds its ContactInterface.
+// the geometry and the rows of one pair of surfaces; ContactInterface<3>
+// (face_contact_interface.h) adds the active set and is what
+// ContactProblem<3> holds per pair.
 #ifndef ring_contact_contact_face_contact_h
 #define ring_contact_contact_face_contact_h
 
@@ -90,25 +91,53 @@ namespace RingContact
                 const unsigned int       gauss_points = 2);
 
     /// Pair the faces at `solution` (the reference configuration's in
-    /// small strain), evaluate the weighted gaps and choose the active
-    /// set from them and the multipliers. Returns the number of nodes
-    /// whose state changed.
-    unsigned int
-    update(const Vector<double> &solution);
+    /// small strain) and evaluate the weighted gaps g~_k and which nodes
+    /// a master face covers (the active set is chosen from them by the
+    /// caller: ContactInterface<3>, whose ActiveSet is the 2D one).
+    void
+    pair(const Vector<double> &solution);
 
-    /// The couplings of every candidate pair of the last update() (each
+    /// Small strain (pairs, normals and clip of the reference
+    /// configuration, gaps linear in the displacement) or finite strain;
+    /// switched while a step is solved linearised (ContactInterface<3>).
+    void
+    set_geometrically_linear(const bool linear)
+    {
+      geometrically_linear = linear;
+    }
+
+    /// The couplings of every candidate pair of the last pair() (each
     /// pair's 28 unknowns with each other), through `constraints`.
     void
     add_couplings(DynamicSparsityPattern          &pattern,
                   const AffineConstraints<double> &constraints) const;
 
-    /// Add the contact rows at `solution` to `matrix` (their derivatives)
-    /// and to `rhs` (minus their values), through `constraints`.
+    /// The unknowns of each candidate pair of the last pair(), sorted: the
+    /// blocks of the sparsity pattern (LinearSystem's memory estimate).
+    std::vector<std::vector<types::global_dof_index>>
+    coupling_blocks() const;
+
+    /// What assemble() hands on per pair: its local matrix (the
+    /// derivatives; empty without them), its local right-hand side (minus
+    /// the residual's values) and its unknowns.
+    using LocalRows =
+      std::function<void(const FullMatrix<double> &,
+                         const Vector<double> &,
+                         const std::vector<types::global_dof_index> &)>;
+
+    /// The pairs' rows at `solution`: the forces of the pressure on both
+    /// faces and, for the nodes `closed`, c times the weighted gaps (the
+    /// open nodes' rows w_k lambda_k are the caller's). With
+    /// `derivatives` their exact derivatives in AD numbers. The pairs
+    /// numbered i with i % n_processes == process (all of them with one
+    /// process), so that processes share the work.
     void
-    assemble(const Vector<double>            &solution,
-             const AffineConstraints<double> &constraints,
-             SparseMatrix<double>            &matrix,
-             Vector<double>                  &rhs) const;
+    assemble(const Vector<double>    &solution,
+             const std::vector<bool> &closed,
+             const bool               derivatives,
+             const unsigned int       process,
+             const unsigned int       n_processes,
+             const LocalRows         &add) const;
 
     /// @name The multiplier nodes (the slave surface's vertices)
     /// @{
@@ -122,26 +151,28 @@ namespace RingContact
     {
       return multiplier_dofs[k];
     }
-    /// w_k = int N_k dA over the reference slave surface.
-    double
-    weight(const unsigned int k) const
+    /// w_k = int N_k dA over the reference slave surface, per node k.
+    const std::vector<double> &
+    weights() const
     {
-      return weights[k];
+      return node_weights;
     }
-    /// g~_k at the last update().
-    double
-    weighted_gap(const unsigned int k) const
+    /// g~_k at the last pair().
+    const std::vector<double> &
+    weighted_gaps() const
     {
-      return gaps[k];
+      return gaps;
     }
-    bool
-    active(const unsigned int k) const
+    /// Whether a master face covers node k (a clip cell or a paired point
+    /// reaches it) at the last pair().
+    const std::vector<bool> &
+    covered() const
     {
-      return is_active[k];
+      return is_covered;
     }
     /// @}
 
-    /// The faces of the surfaces, and the pairs of the last update() that
+    /// The faces of the surfaces, and the pairs of the last pair() that
     /// make rows (slave face, master face; with a point-wise scheme, one
     /// per paired point).
     const std::vector<Face> &
@@ -159,6 +190,13 @@ namespace RingContact
     {
       return overlapping;
     }
+    /// The candidate pairs of the last pair(): the faces near each other,
+    /// whose couplings the sparsity pattern holds.
+    const std::vector<std::pair<unsigned int, unsigned int>> &
+    candidates() const
+    {
+      return near_pairs;
+    }
 
   private:
     /// A point of a slave face (PointToFace::SlavePoint, by its index)
@@ -172,15 +210,16 @@ namespace RingContact
     std::vector<FaceClipping::Vector3<double>>
     current(const Face &face, const Vector<double> &solution) const;
 
-    /// The pair's rows (residual and derivatives) at `solution`.
+    /// The pair's rows (residual, and derivatives if asked) at
+    /// `solution`, handed to `add`.
     void
-    assemble_pair(const Face                      &s,
-                  const Face                      &m,
-                  const PointPair                 *point,
-                  const Vector<double>            &solution,
-                  const AffineConstraints<double> &constraints,
-                  SparseMatrix<double>            &matrix,
-                  Vector<double>                  &rhs) const;
+    assemble_pair(const Face              &s,
+                  const Face              &m,
+                  const PointPair         *point,
+                  const Vector<double>    &solution,
+                  const std::vector<bool> &closed,
+                  const bool               derivatives,
+                  const LocalRows         &add) const;
 
     /// The point-wise schemes' pairs at the positions `geometry` of the
     /// faces (their reference or current configuration), and the weighted
@@ -191,17 +230,23 @@ namespace RingContact
                 const Vector<double> &solution,
                 std::vector<bool>    &covered);
 
+    /// The unknowns of a candidate pair, in the local order of its rows:
+    /// the slave face's displacements (3 per node), the master face's, the
+    /// slave face's pressures.
+    std::vector<types::global_dof_index>
+    pair_dofs(const Face &s, const Face &m) const;
+
     std::vector<Face>                                  slave, master;
     std::vector<types::global_dof_index>               multiplier_dofs;
-    std::vector<double>                                weights, gaps;
-    std::vector<bool>                                  is_active;
+    std::vector<double>                                node_weights, gaps;
+    std::vector<bool>                                  is_covered;
     const double                                       c;
-    const bool                                         geometrically_linear;
-    std::vector<std::pair<unsigned int, unsigned int>> candidates;
+    bool                                               geometrically_linear;
+    std::vector<std::pair<unsigned int, unsigned int>> near_pairs;
     std::vector<std::pair<unsigned int, unsigned int>> overlapping;
     const Scheme                                       scheme;
     /// The points of a slave face under a point-wise scheme, and their
-    /// pairs at the last update().
+    /// pairs at the last pair().
     const std::vector<PointToFace::SlavePoint> points;
     std::vector<PointPair>                     point_pairs;
   };

@@ -33,6 +33,13 @@ namespace RingContact
       const std::map<types::global_dof_index, types::global_dof_index> &twins,
       const bool friction);
 
+    /// The nodes of a slave surface of faces (3D, FaceContact): their
+    /// multiplier dofs in the order of k and their weights w_k. No sites
+    /// (the faces know their nodes), no neighbours (the walks along a
+    /// curve of the active set's edge extrapolation are 2D), no friction.
+    MultiplierNodes(const std::vector<types::global_dof_index> &dofs,
+                    const std::vector<double>                  &weights);
+
     /// The number of contact nodes.
     unsigned int
     size() const
