@@ -90,7 +90,7 @@ namespace
   {
   public:
     State(const AnalyticSolution &analytic, const double p, const double angle)
-        : Function<2>(Components::n_components)
+        : Function<2>(Components::n_components<dim>)
         , analytic(analytic)
         , p(p)
         , angle(angle)
@@ -99,9 +99,9 @@ namespace
     double
     value(const Point<2> &X, const unsigned int component) const override
     {
-      if (component == Components::multiplier)
+      if (component == Components::multiplier<dim>)
         return analytic.contact_pressure(p);
-      if (component == Components::tangential)
+      if (component == Components::tangential<dim>)
         return -0.1 * analytic.contact_pressure(p);
       const double r     = X.norm();
       const double theta = std::atan2(X[1], X[0]);
@@ -255,7 +255,7 @@ namespace
     if (pressure_loaded)
       for (const auto i : DoFTools::extract_boundary_dofs(
              problem.get_dof_handler(),
-             Components::displacement_mask(),
+             Components::displacement_mask<dim>(),
              {static_cast<types::boundary_id>(Ssnp152::Ids::outer_boundary)}))
         columns.push_back(i);
     std::sort(columns.begin(), columns.end());

@@ -109,7 +109,7 @@ namespace RingContact
             }
           else if (component == Components::uy)
             segment.dofs_y.push_back(face_dofs[i]);
-          else if (component == Components::tangential)
+          else if (component == Components::tangential<dim>)
             segment.tangential_dofs.push_back(face_dofs[i]);
           else
             {

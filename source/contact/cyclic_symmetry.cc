@@ -99,9 +99,9 @@ namespace RingContact
       // The nodes of each side: position, body, and dof per component.
       struct Node
       {
-        Point<dim>                                                    position;
-        types::material_id                                            body;
-        std::array<types::global_dof_index, Components::n_components> dofs;
+        Point<dim>         position;
+        types::material_id body;
+        std::array<types::global_dof_index, Components::n_components<dim>> dofs;
       };
       std::array<std::vector<Node>, 2> side_nodes; // start, end
       // 1e-10 of a length of the mesh's size, the distance of its first vertex
@@ -197,9 +197,9 @@ namespace RingContact
     {
       std::map<types::global_dof_index, types::global_dof_index> twins;
       for (const auto &pair : pairs)
-        if (pair.end[Components::multiplier] != numbers::invalid_dof_index)
-          twins[pair.end[Components::multiplier]] =
-            pair.start[Components::multiplier];
+        if (pair.end[Components::multiplier<dim>] != numbers::invalid_dof_index)
+          twins[pair.end[Components::multiplier<dim>]] =
+            pair.start[Components::multiplier<dim>];
       return twins;
     }
 
@@ -235,12 +235,14 @@ namespace RingContact
           // The multiplier is tied where it is an unknown; on the layer's nodes
           // off the slave surface it is constrained to zero already, and stays
           // so.
-          if (pair.end[Components::multiplier] != numbers::invalid_dof_index &&
-              !constraints.is_constrained(pair.end[Components::multiplier]))
+          if (pair.end[Components::multiplier<dim>] !=
+                numbers::invalid_dof_index &&
+              !constraints.is_constrained(
+                pair.end[Components::multiplier<dim>]))
             {
-              constraints.add_line(pair.end[Components::multiplier]);
-              constraints.add_entry(pair.end[Components::multiplier],
-                                    pair.start[Components::multiplier],
+              constraints.add_line(pair.end[Components::multiplier<dim>]);
+              constraints.add_entry(pair.end[Components::multiplier<dim>],
+                                    pair.start[Components::multiplier<dim>],
                                     1.0);
             }
         }

@@ -1,6 +1,8 @@
 // The contact interface of a pair of surfaces in 3D (face_contact_interface.h):
 // FaceContact's pairs and rows, the 2D ActiveSet's choice between them.
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <ring_contact/contact/face_contact_interface.h>
@@ -243,6 +245,48 @@ namespace RingContact
             ++faces;
           }
     return faces > 0 ? sum / faces : 1.;
+  }
+
+  // Over each slave face with the 3 x 3 Gauss rule, at the reference and
+  // the current positions of its nodes.
+  double
+  ContactInterface<3>::l2_relative_error(const Vector<double> &solution,
+                                         const double          reference,
+                                         const PressureMeasure measure) const
+  {
+    const QGauss<2> rule(3);
+    const FE_Q<2>   bilinear(1);
+    double          error = 0, norm = 0;
+    for (const auto &face : face_contact.slave_faces())
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          // The area elements |a1 x a2| of the reference and current face.
+          Tensor<1, 3> a1, a2, A1, A2;
+          double       lambda = 0;
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const auto dN = bilinear.shape_grad(v, rule.point(q));
+              lambda += bilinear.shape_value(v, rule.point(q)) *
+                        solution(face_contact.multiplier_dof(face.node[v]));
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const double X = face.reference[v][d];
+                  const double x = X + solution(face.u_dofs[v][d]);
+                  A1[d] += dN[0] * X;
+                  A2[d] += dN[1] * X;
+                  a1[d] += dN[0] * x;
+                  a2[d] += dN[1] * x;
+                }
+            }
+          const double dA0 = cross_product_3d(A1, A2).norm() * rule.weight(q);
+          const double dA  = cross_product_3d(a1, a2).norm() * rule.weight(q);
+          const bool   cauchy = measure == PressureMeasure::cauchy;
+          const double p      = cauchy ? lambda : lambda * dA / dA0;
+          const double area   = cauchy ? dA : dA0;
+          error += (p - reference) * (p - reference) * area;
+          norm += reference * reference * area;
+        }
+    return std::sqrt(error) / std::sqrt(norm);
   }
 
   double

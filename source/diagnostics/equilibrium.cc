@@ -16,7 +16,6 @@
 #include <deal.II/hp/q_collection.h>
 
 #include <ring_contact/base/components.h>
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/equilibrium.h>
 
 #include <algorithm>
@@ -77,6 +76,7 @@ namespace RingContact
     // weighted gap or a traction condition, not a force, and stays out of
     // every sum. The bodies share no vertex, so each unknown has one
     // body.
+    template <int dim>
     std::vector<types::material_id>
     body_of_unknowns(const DoFHandler<dim> &dof_handler)
     {
@@ -89,20 +89,21 @@ namespace RingContact
           dofs.resize(fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (Components::is_displacement(
+            if (Components::is_displacement<dim>(
                   fe.system_to_component_index(i).first))
               body[dofs[i]] = cell->material_id();
         }
       return body;
     }
 
-    // The component (0 or 1) of each displacement unknown: the sums are of
-    // vectors, one per body.
+    // The component (0 to dim - 1) of each displacement unknown: the sums are
+    // of vectors, one per body.
+    template <int dim>
     std::vector<unsigned int>
     component_of_unknowns(const DoFHandler<dim> &dof_handler)
     {
       std::vector<unsigned int>            component(dof_handler.n_dofs(),
-                                          Components::n_components);
+                                          Components::n_components<dim>);
       std::vector<types::global_dof_index> dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
@@ -119,6 +120,7 @@ namespace RingContact
     // component summed, or over the round-off of the forces where that is
     // larger (a body moved rigidly carries forces that are round-off
     // only): 0 when nothing acts.
+    template <int dim>
     struct Sum
     {
       Tensor<1, dim> total;
@@ -147,6 +149,7 @@ namespace RingContact
     };
   } // namespace
 
+  template <int dim>
   Balance
   measure_balance(
     const DoFHandler<dim>                                         &dof_handler,
@@ -168,12 +171,12 @@ namespace RingContact
     // the body's free residual: zero at the solution, and a measure of how
     // far the state is from it. The round-off, when the caller gives it,
     // is summed per body too.
-    std::map<types::material_id, Sum> per_body;
+    std::map<types::material_id, Sum<dim>> per_body;
     for (types::global_dof_index i = 0; i < body.size(); ++i)
       {
         if (body[i] == numbers::invalid_material_id)
           continue;
-        Sum &sum = per_body[body[i]];
+        Sum<dim> &sum = per_body[body[i]];
         if (forces.round_off.size() == body.size())
           sum.round_off += forces.round_off(i);
         sum.add(component[i], forces.applied(i));
@@ -202,7 +205,7 @@ namespace RingContact
             balance.pairs.push_back(std::nan(""));
             continue;
           }
-        Sum sum;
+        Sum<dim> sum;
         for (types::global_dof_index i = 0; i < body.size(); ++i)
           if (body[i] == pair_bodies[k].first ||
               body[i] == pair_bodies[k].second)
@@ -212,4 +215,18 @@ namespace RingContact
     return balance;
   }
 
+  template Balance
+  measure_balance(
+    const DoFHandler<2> &,
+    const NodalForces &,
+    const std::vector<std::pair<types::material_id, std::string>> &,
+    const std::vector<std::pair<types::material_id, types::material_id>> &,
+    const bool);
+  template Balance
+  measure_balance(
+    const DoFHandler<3> &,
+    const NodalForces &,
+    const std::vector<std::pair<types::material_id, std::string>> &,
+    const std::vector<std::pair<types::material_id, types::material_id>> &,
+    const bool);
 } // namespace RingContact

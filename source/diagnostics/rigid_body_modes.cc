@@ -100,10 +100,11 @@ namespace RingContact
         // support acts.
         std::map<types::material_id, Frame>           frames;
         std::map<types::global_dof_index, Point<dim>> support_points;
-        DoFTools::map_dofs_to_support_points(mapping_collection,
-                                             dof_handler,
-                                             support_points,
-                                             Components::displacement_mask());
+        DoFTools::map_dofs_to_support_points(
+          mapping_collection,
+          dof_handler,
+          support_points,
+          Components::displacement_mask<dim>());
         // The unknowns imposed whole, and the nodes (their u_x) of the normal
         // conditions. A normal condition's constrained unknown is in
         // `imposed_dofs` too (constraints.cc), but it fixes N . u only, not
@@ -147,7 +148,7 @@ namespace RingContact
                     {
                       const unsigned int c =
                         cell->get_fe().system_to_component_index(i).first;
-                      if (!Components::is_displacement(c))
+                      if (!Components::is_displacement<dim>(c))
                         continue;
                       // An imposed component c: e_c . u = 0 for the motion.
                       if (imposed.count(dofs[i]))

@@ -29,6 +29,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <type_traits>
 
 namespace RingContact
 {
@@ -293,55 +294,67 @@ namespace RingContact
         // Each scheme is a problem of its own (its mesh, unknowns and
         // history): the schemes share nothing but the results folder and
         // the verdicts, which accumulate over them.
+        // One scheme's problem in the problem's dimension (the scenario's:
+        // Parameters::dimension); false if the run is to stop after it.
+        const auto run_scheme = [&](const unsigned int s, auto dimension) {
+          constexpr int            spacedim = decltype(dimension)::value;
+          const auto              &scheme   = parameters.contact.schemes[s];
+          ContactProblem<spacedim> problem(parameters, scheme, out, world);
+          const auto               columns = problem.history_columns();
+          problem.set_progress(progress);
+          progress.start_scheme(s);
+          // Until the problem starts, an error is a refusal of its input
+          // (exit code 2); after, a failure of the run (3).
+          started = false;
+          problem.set_start_observer([&]() {
+            started = true;
+            folder.prepare(columns);
+            folder.record_parameters(parameters.used_parameters);
+          });
+          problem.set_step_observer([&](const HistoryRow &row) {
+            // Every process takes part (process 0's failure is all of
+            // theirs): the condition is the same on all of them.
+            folder.append(row);
+            stop = stop_asked(world);
+            return !stop;
+          });
+          // run() first: `solved && problem.run()` would skip the later
+          // schemes once one failed.
+          solved = problem.run() && solved;
+          summary.add(problem.history());
+          // Asked again: the observer does not run after a failed step,
+          // and a signal may come after its last call.
+          stop = stop_asked(world);
+          // A scheme stopped by a signal before its last step has no
+          // verdicts: its checks are not known.
+          const auto &history = problem.history();
+          if (stop &&
+              (history.empty() || history.back().step < problem.n_steps()))
+            {
+              out << "Stopped after "
+                  << (history.empty() ?
+                        std::string("no converged step") :
+                        "step " + std::to_string(history.back().step))
+                  << " of scheme " << scheme.name() << '\n';
+              return false;
+            }
+          // verdicts.csv holds all the schemes done so far, rewritten
+          // whole after each: a run stopped later keeps them.
+          const auto these = problem.verdicts();
+          verdicts.insert(verdicts.end(), these.begin(), these.end());
+          folder.write_verdicts(verdicts);
+          return true;
+        };
         for (unsigned int s = 0; s < parameters.contact.schemes.size(); ++s)
           {
-            const auto &scheme = parameters.contact.schemes[s];
             if (stop)
               break;
-            ContactProblem<dim> problem(parameters, scheme, out, world);
-            const auto          columns = problem.history_columns();
-            problem.set_progress(progress);
-            progress.start_scheme(s);
-            // Until the problem starts, an error is a refusal of its input
-            // (exit code 2); after, a failure of the run (3).
-            started = false;
-            problem.set_start_observer([&]() {
-              started = true;
-              folder.prepare(columns);
-              folder.record_parameters(parameters.used_parameters);
-            });
-            problem.set_step_observer([&](const HistoryRow &row) {
-              // Every process takes part (process 0's failure is all of
-              // theirs): the condition is the same on all of them.
-              folder.append(row);
-              stop = stop_asked(world);
-              return !stop;
-            });
-            // run() first: `solved && problem.run()` would skip the later
-            // schemes once one failed.
-            solved = problem.run() && solved;
-            summary.add(problem.history());
-            // Asked again: the observer does not run after a failed step,
-            // and a signal may come after its last call.
-            stop = stop_asked(world);
-            // A scheme stopped by a signal before its last step has no
-            // verdicts: its checks are not known.
-            const auto &history = problem.history();
-            if (stop &&
-                (history.empty() || history.back().step < problem.n_steps()))
-              {
-                out << "Stopped after "
-                    << (history.empty() ?
-                          std::string("no converged step") :
-                          "step " + std::to_string(history.back().step))
-                    << " of scheme " << scheme.name() << '\n';
-                break;
-              }
-            // verdicts.csv holds all the schemes done so far, rewritten
-            // whole after each: a run stopped later keeps them.
-            const auto these = problem.verdicts();
-            verdicts.insert(verdicts.end(), these.begin(), these.end());
-            folder.write_verdicts(verdicts);
+            const bool go_on =
+              parameters.dimension == 3 ?
+                run_scheme(s, std::integral_constant<int, 3>()) :
+                run_scheme(s, std::integral_constant<int, 2>());
+            if (!go_on)
+              break;
           }
         // A stopped run shows the verdicts of its finished schemes, and
         // says on stderr where its complete results are: the converged

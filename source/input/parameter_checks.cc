@@ -378,6 +378,40 @@ namespace RingContact
         }
     }
 
+    // Two or three finite coordinates below 1e300 in magnitude (a point of
+    // either dimension; the scenario checks the count against its own).
+    std::vector<double>
+    coordinates_from_text(const std::string &text,
+                          const std::string &subsection,
+                          const std::string &entry)
+    {
+      const auto          items = Utilities::split_string_list(text);
+      std::vector<double> point;
+      for (const auto &item : items)
+        {
+          double value = std::nan("");
+          try
+            {
+              value = Utilities::string_to_double(item);
+            }
+          catch (...)
+            {}
+          point.push_back(value);
+        }
+      require((point.size() == 2 || point.size() == 3) &&
+                std::all_of(point.begin(),
+                            point.end(),
+                            [](const double x) {
+                              return std::isfinite(x) && std::abs(x) < 1e300;
+                            }),
+              subsection,
+              entry,
+              "must be two or three finite coordinates 'x, y' or 'x, y, z', "
+              "got '" +
+                printable(text) + "'");
+      return point;
+    }
+
     // Two finite coordinates below 1e300 in magnitude. The count is checked
     // here too, for the callers whose pattern does not say it.
     std::array<double, 2>

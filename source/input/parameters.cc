@@ -266,6 +266,9 @@ namespace RingContact
         load.finish();
         output.finish(name);
         scenario_parameters.at(scenario)->finish(*this);
+        dimension = scenario_parameters.at(scenario)->dimension();
+        if (dimension == 3)
+          refuse_two_dimensional_entries();
         contact.choose_schemes(
           scenario_parameters.at(scenario)->default_integration_schemes(),
           scenario_parameters.at(scenario)->highest_displacement_degree());
@@ -275,6 +278,45 @@ namespace RingContact
         throw std::runtime_error(located(e));
       }
     used_parameters = describe_used_parameters(prm);
+  }
+
+
+  // What a 3D problem does not have yet, each refused with the entry that
+  // asks for it: friction (frictionless 3D contact, its friction the next
+  // step), adaptive refinement, the iterative solver (its preconditioner's
+  // blocks and rigid modes are 2D), the plane assumption (a 3D body has
+  // none), and the Newton-Cotes rules of the 2D segments (the 3D schemes are
+  // segment-based, nodal and Gauss n x n).
+  void
+  Parameters::refuse_two_dimensional_entries() const
+  {
+    using namespace ParameterChecks;
+    require(contact.friction_coefficient == 0,
+            "Contact",
+            "Friction coefficient",
+            "must be 0 in 3D: 3D contact is frictionless so far");
+    require(refinement.adaptive_cycles == 0,
+            "Mesh refinement",
+            "Adaptive cycles",
+            "must be 0 in 3D: adaptive refinement is 2D only so far");
+    require(newton.linear_solver != LinearSolverType::iterative,
+            "Newton",
+            "Linear solver",
+            "= iterative is 2D only so far (its preconditioner knows the 2D "
+            "rigid-body modes): in 3D take auto, UMFPACK or MUMPS");
+    require(origins.count("Materials/Plane assumption") == 0,
+            "Materials",
+            "Plane assumption",
+            "is a 2D entry: a 3D body has no plane assumption (remove the "
+            "line)");
+    for (const auto &scheme : contact.schemes)
+      require(scheme.cuts_at_master_kinks() || scheme.family->name == "nodal" ||
+                scheme.family->name == "Gauss",
+              "Contact",
+              "Integration schemes",
+              "'" + scheme.name() +
+                "' is a 2D scheme: in 3D the schemes are segment-based, "
+                "nodal and Gauss n (n x n points per slave face)");
   }
 
 

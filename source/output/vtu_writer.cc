@@ -27,7 +27,6 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ring_contact/base/components.h>
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/linear_algebra/linear_system.h>
 #include <ring_contact/output/output_folder.h>
@@ -45,18 +44,28 @@ namespace RingContact
   {
     // @sect4{The points of a patch}
     //
-    // A cell is written as (n + 1) x (n + 1) points, evenly spaced on the
+    // A cell is written as (n + 1)^dim points, evenly spaced on the
     // reference cell, x fastest; a face as n + 1 points from its first
-    // vertex to its second. The mapping places them, curved where the
-    // geometry is, in the cell's interior as well (the polar manifold
-    // curves every cell of a ring, not only those on its boundary).
+    // vertex to its second (3D: (n + 1)^2, as a cell of the face). The
+    // mapping places them, curved where the geometry is, in the cell's
+    // interior as well (the polar manifold curves every cell of a ring,
+    // not only those on its boundary).
+    template <int dim>
     Quadrature<dim>
     patch_points(const unsigned int n)
     {
       std::vector<Point<dim>> points;
-      for (unsigned int j = 0; j <= n; ++j)
-        for (unsigned int i = 0; i <= n; ++i)
-          points.emplace_back(double(i) / n, double(j) / n);
+      for (unsigned int k = 0; k <= (dim == 3 ? n : 0); ++k)
+        for (unsigned int j = 0; j <= n; ++j)
+          for (unsigned int i = 0; i <= n; ++i)
+            {
+              Point<dim> x;
+              x[0] = double(i) / n;
+              x[1] = double(j) / n;
+              if constexpr (dim == 3)
+                x[2] = double(k) / n;
+              points.push_back(x);
+            }
       return Quadrature<dim>(points);
     }
 
@@ -91,12 +100,36 @@ namespace RingContact
 
     // A cell's points as one cell: a Lagrange quadrilateral with n > 1, so
     // that ParaView draws curved edges curved and a Q2 field with its own
-    // degree; a plain quadrilateral with n = 1.
+    // degree; a plain quadrilateral with n = 1. A hexahedron's as n^3 plain
+    // hexahedra (VTK's vertex order: the bottom face counterclockwise, then
+    // the top one).
+    template <int dim>
     void
     add_patch_cell(VtuGrid           &grid,
                    const std::int64_t first,
                    const unsigned int n)
     {
+      if constexpr (dim == 3)
+        {
+          const auto id = [&](const unsigned int i,
+                              const unsigned int j,
+                              const unsigned int k) {
+            return first + (k * (n + 1) + j) * (n + 1) + i;
+          };
+          for (unsigned int k = 0; k < n; ++k)
+            for (unsigned int j = 0; j < n; ++j)
+              for (unsigned int i = 0; i < n; ++i)
+                grid.add_cell(VtuCellType::hexahedron,
+                              {id(i, j, k),
+                               id(i + 1, j, k),
+                               id(i + 1, j + 1, k),
+                               id(i, j + 1, k),
+                               id(i, j, k + 1),
+                               id(i + 1, j, k + 1),
+                               id(i + 1, j + 1, k + 1),
+                               id(i, j + 1, k + 1)});
+          return;
+        }
       std::vector<std::int64_t> ids((n + 1) * (n + 1));
       for (unsigned int j = 0; j <= n; ++j)
         for (unsigned int i = 0; i <= n; ++i)
@@ -116,6 +149,7 @@ namespace RingContact
     // function of Grad u at the point); and each cell's material id, the
     // physical group of a gmsh model, constant on the cell. Under MPI the
     // cells of the process's subdomain alone.
+    template <int dim>
     VtuGrid
     bulk_grid(const DoFHandler<dim>                       &dof_handler,
               const hp::MappingCollection<dim>            &mapping,
@@ -137,7 +171,7 @@ namespace RingContact
 
       hp::FEValues<dim>                hp_values(mapping,
                                   dof_handler.get_fe_collection(),
-                                  hp::QCollection<dim>(patch_points(n)),
+                                  hp::QCollection<dim>(patch_points<dim>(n)),
                                   update_values | update_gradients |
                                     update_quadrature_points);
       const FEValuesExtractors::Vector u(Components::ux);
@@ -159,9 +193,13 @@ namespace RingContact
             {
               const Point<dim> x = v.quadrature_point(q);
               grid.points.values.insert(grid.points.values.end(),
-                                        {x[0], x[1], 0});
+                                        {x[0],
+                                         x[1],
+                                         dim == 3 ? x[dim - 1] : 0});
               displacement.insert(displacement.end(),
-                                  {values[q][0], values[q][1], 0});
+                                  {values[q][0],
+                                   values[q][1],
+                                   dim == 3 ? values[q][dim - 1] : 0});
               // A law checks its range at the quadrature points of the
               // assembly; at these points (the patch's) a state near the
               // bound may lie past it (Saint Venant-Kirchhoff in plane
@@ -177,14 +215,19 @@ namespace RingContact
               else
                 {
                   const Tensor<2, dim> s = material.cauchy_stress(gradients[q]);
-                  stress.insert(
-                    stress.end(),
-                    {s[0][0], s[0][1], 0, s[1][0], s[1][1], 0, 0, 0, 0});
+                  if constexpr (dim == 3)
+                    for (unsigned int i = 0; i < dim; ++i)
+                      for (unsigned int j = 0; j < dim; ++j)
+                        stress.push_back(s[i][j]);
+                  else
+                    stress.insert(
+                      stress.end(),
+                      {s[0][0], s[0][1], 0, s[1][0], s[1][1], 0, 0, 0, 0});
                   von_mises.push_back(material.von_mises_stress(gradients[q]));
                 }
               material_id.push_back(cell->material_id());
             }
-          add_patch_cell(grid, first, n);
+          add_patch_cell<dim>(grid, first, n);
         }
       return grid;
     }
@@ -208,77 +251,153 @@ namespace RingContact
     // interpolated like the pressure. The pressure is written here only: in
     // the bulk it would be a field falling to zero across the layer of
     // slave cells.
+    // A 3D slave surface: each face as n x n quadrilaterals on its own
+    // (n + 1)^2 points (no chains: a surface has no order to plot along),
+    // with the displacement, the contact pressure, and the nodal fields the
+    // problem hands over (the gap) read from the multiplier component.
+    template <int dim>
     VtuGrid
-    slave_surface_grid(
-      const DoFHandler<dim>                      &dof_handler,
-      const hp::MappingCollection<dim>           &mapping,
-      const Vector<double>                       &solution,
-      const std::vector<VtuWriter::SurfaceField> &surface_fields,
-      const std::vector<VtuWriter::SlaveFace>    &faces,
-      const unsigned int                          n)
+    slave_faces_grid(
+      const DoFHandler<dim>                                    &dof_handler,
+      const hp::MappingCollection<dim>                         &mapping,
+      const Vector<double>                                     &solution,
+      const std::vector<typename VtuWriter<dim>::SurfaceField> &surface_fields,
+      const std::vector<typename VtuWriter<dim>::SlaveFace>    &faces,
+      const unsigned int                                        n)
     {
       VtuGrid grid;
-      grid.point_data = {{"displacement", 3},
-                         {"contact_pressure", 1},
-                         {"tangential_traction", 1}};
+      grid.point_data = {{"displacement", 3}, {"contact_pressure", 1}};
       for (const auto &field : surface_fields)
         grid.point_data.push_back({field.name, 1});
-
       hp::FEFaceValues<dim>            hp_values(mapping,
                                       dof_handler.get_fe_collection(),
-                                      hp::QCollection<1>(segment_points(n)),
+                                      hp::QCollection<dim - 1>(
+                                        patch_points<dim - 1>(n)),
                                       update_values | update_quadrature_points);
       const FEValuesExtractors::Vector u(Components::ux);
-      const FEValuesExtractors::Scalar pressure(Components::multiplier);
-      const FEValuesExtractors::Scalar traction(Components::tangential);
-      std::vector<Tensor<1, dim>>      displacement(n + 1);
-      std::vector<double>              scalar(n + 1);
+      const FEValuesExtractors::Scalar pressure(Components::multiplier<dim>);
+      std::vector<Tensor<1, dim>>      displacement;
+      std::vector<double>              scalar;
       for (const auto &face : faces)
         {
           hp_values.reinit(face.cell, face.face_no);
-          const FEFaceValues<dim> &v = hp_values.get_present_fe_values();
+          const FEFaceValues<dim> &v     = hp_values.get_present_fe_values();
+          const std::int64_t       first = grid.n_points();
+          displacement.resize(v.n_quadrature_points);
+          scalar.resize(v.n_quadrature_points);
           v[u].get_function_values(solution, displacement);
-          // The face's points in the chain's direction; its first is the
-          // last of the face before, but at a chain's start.
-          const auto point = [&](const unsigned int k) {
-            return face.reversed ? n - k : k;
-          };
-          const unsigned int first_new = face.starts_chain ? 0 : 1;
-          const std::int64_t first =
-            static_cast<std::int64_t>(grid.n_points()) - first_new;
-          for (unsigned int k = first_new; k <= n; ++k)
+          for (unsigned int q = 0; q < v.n_quadrature_points; ++q)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                grid.points.values.push_back(v.quadrature_point(q)[d]);
+                grid.point_data[0].values.push_back(displacement[q][d]);
+              }
+          for (unsigned int k = 0; k <= surface_fields.size(); ++k)
             {
-              const Point<dim> x = v.quadrature_point(point(k));
-              grid.points.values.insert(grid.points.values.end(),
-                                        {x[0], x[1], 0});
-              const Tensor<1, dim> &d = displacement[point(k)];
-              grid.point_data[0].values.insert(grid.point_data[0].values.end(),
-                                               {d[0], d[1], 0});
+              v[pressure].get_function_values(
+                k == 0 ? solution : surface_fields[k - 1].values, scalar);
+              grid.point_data[1 + k].values.insert(
+                grid.point_data[1 + k].values.end(),
+                scalar.begin(),
+                scalar.end());
             }
-          // The scalars, each read from its vector's multiplier component
-          // (the solution's own multiplier and tangential traction first).
-          const auto add_scalar = [&](const unsigned int                array,
-                                      const Vector<double>             &vector,
-                                      const FEValuesExtractors::Scalar &c) {
-            v[c].get_function_values(vector, scalar);
-            for (unsigned int k = first_new; k <= n; ++k)
-              grid.point_data[array].values.push_back(scalar[point(k)]);
-          };
-          add_scalar(1, solution, pressure);
-          add_scalar(2, solution, traction);
-          for (unsigned int k = 0; k < surface_fields.size(); ++k)
-            {
-              const auto &field = surface_fields[k];
-              add_scalar(3 + k,
-                         face.closes_chain && field.closing_values.size() > 0 ?
-                           field.closing_values :
-                           field.values,
-                         pressure);
-            }
-          for (unsigned int k = 0; k < n; ++k)
-            grid.add_cell(VtuCellType::line, {first + k, first + k + 1});
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const auto id = [&](const unsigned int a,
+                                    const unsigned int b) {
+                  return first + b * (n + 1) + a;
+                };
+                grid.add_cell(
+                  VtuCellType::quadrilateral,
+                  {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+              }
         }
       return grid;
+    }
+
+    template <int dim>
+    VtuGrid
+    slave_surface_grid(
+      const DoFHandler<dim>                                    &dof_handler,
+      const hp::MappingCollection<dim>                         &mapping,
+      const Vector<double>                                     &solution,
+      const std::vector<typename VtuWriter<dim>::SurfaceField> &surface_fields,
+      const std::vector<typename VtuWriter<dim>::SlaveFace>    &faces,
+      const unsigned int                                        n)
+    {
+      if constexpr (dim == 3)
+        return slave_faces_grid(
+          dof_handler, mapping, solution, surface_fields, faces, n);
+      else
+        {
+          VtuGrid grid;
+          grid.point_data = {{"displacement", 3},
+                             {"contact_pressure", 1},
+                             {"tangential_traction", 1}};
+          for (const auto &field : surface_fields)
+            grid.point_data.push_back({field.name, 1});
+
+          hp::FEFaceValues<dim>            hp_values(mapping,
+                                          dof_handler.get_fe_collection(),
+                                          hp::QCollection<1>(segment_points(n)),
+                                          update_values |
+                                            update_quadrature_points);
+          const FEValuesExtractors::Vector u(Components::ux);
+          const FEValuesExtractors::Scalar pressure(
+            Components::multiplier<dim>);
+          const FEValuesExtractors::Scalar traction(
+            Components::tangential<dim>);
+          std::vector<Tensor<1, dim>> displacement(n + 1);
+          std::vector<double>         scalar(n + 1);
+          for (const auto &face : faces)
+            {
+              hp_values.reinit(face.cell, face.face_no);
+              const FEFaceValues<dim> &v = hp_values.get_present_fe_values();
+              v[u].get_function_values(solution, displacement);
+              // The face's points in the chain's direction; its first is the
+              // last of the face before, but at a chain's start.
+              const auto point = [&](const unsigned int k) {
+                return face.reversed ? n - k : k;
+              };
+              const unsigned int first_new = face.starts_chain ? 0 : 1;
+              const std::int64_t first =
+                static_cast<std::int64_t>(grid.n_points()) - first_new;
+              for (unsigned int k = first_new; k <= n; ++k)
+                {
+                  const Point<dim> x = v.quadrature_point(point(k));
+                  grid.points.values.insert(grid.points.values.end(),
+                                            {x[0], x[1], 0});
+                  const Tensor<1, dim> &d = displacement[point(k)];
+                  grid.point_data[0].values.insert(
+                    grid.point_data[0].values.end(), {d[0], d[1], 0});
+                }
+              // The scalars, each read from its vector's multiplier component
+              // (the solution's own multiplier and tangential traction first).
+              const auto add_scalar = [&](const unsigned int    array,
+                                          const Vector<double> &vector,
+                                          const FEValuesExtractors::Scalar &c) {
+                v[c].get_function_values(vector, scalar);
+                for (unsigned int k = first_new; k <= n; ++k)
+                  grid.point_data[array].values.push_back(scalar[point(k)]);
+              };
+              add_scalar(1, solution, pressure);
+              add_scalar(2, solution, traction);
+              for (unsigned int k = 0; k < surface_fields.size(); ++k)
+                {
+                  const auto &field = surface_fields[k];
+                  add_scalar(3 + k,
+                             face.closes_chain &&
+                                 field.closing_values.size() > 0 ?
+                               field.closing_values :
+                               field.values,
+                             pressure);
+                }
+              for (unsigned int k = 0; k < n; ++k)
+                grid.add_cell(VtuCellType::line, {first + k, first + k + 1});
+            }
+          return grid;
+        }
     }
 
     // Every process writes its piece with the same types, which the .pvtu
@@ -300,10 +419,11 @@ namespace RingContact
   // The writer lives as long as its scheme's run and keeps the records of
   // all its steps: each step's .pvd is written anew with every step so
   // far.
-  VtuWriter::VtuWriter(const std::string &directory,
-                       const std::string &tag,
-                       const unsigned int subdivisions,
-                       const MPI_Comm     communicator)
+  template <int dim>
+  VtuWriter<dim>::VtuWriter(const std::string &directory,
+                            const std::string &tag,
+                            const unsigned int subdivisions,
+                            const MPI_Comm     communicator)
       : directory(directory)
       , tag(tag)
       , subdivisions(subdivisions)
@@ -316,22 +436,23 @@ namespace RingContact
   // .pvtu that lists the pieces, the .pvd records and the slave surface.
   // Any process's failure is every process's: write() is collective, and
   // a process that threw alone would leave the others waiting.
+  template <int dim>
   void
-  VtuWriter::write(const DoFHandler<dim>                       &dof_handler,
-                   const hp::MappingCollection<dim>            &mapping,
-                   const Vector<double>                        &solution,
-                   const std::vector<SurfaceField>             &surface_fields,
-                   const std::map<unsigned int, Material<dim>> &materials,
-                   const std::vector<SlaveFace>                &slave_faces,
-                   const unsigned int                           step,
-                   const double                                 time)
+  VtuWriter<dim>::write(const DoFHandler<dim>            &dof_handler,
+                        const hp::MappingCollection<dim> &mapping,
+                        const Vector<double>             &solution,
+                        const std::vector<SurfaceField>  &surface_fields,
+                        const std::map<unsigned int, Material<dim>> &materials,
+                        const std::vector<SlaveFace> &slave_faces,
+                        const unsigned int            step,
+                        const double                  time)
   {
     // Under MPI every process holds the whole mesh and state; each writes
     // the cells it owns (its subdomain), so that the pieces partition the
     // mesh and no cell is written twice.
     const unsigned int n_pieces = n_processes(communicator);
     const unsigned int piece    = this_process(communicator);
-    VtuGrid            bulk     = bulk_grid(
+    VtuGrid            bulk     = bulk_grid<dim>(
       dof_handler, mapping, solution, materials, subdivisions, piece, n_pieces);
     choose_precision(bulk, communicator);
     // Four digits: ParaView groups the files of a series by name, in the
@@ -390,10 +511,11 @@ namespace RingContact
   // The bodies' file: one .vtu, or under MPI one piece per process, whose
   // list (the .pvtu) process 0 writes later, once all are whole. Returns
   // the name the .pvd lists.
+  template <int dim>
   std::string
-  VtuWriter::write_bulk(const VtuGrid     &bulk,
-                        const std::string &bulk_stem,
-                        const double       time)
+  VtuWriter<dim>::write_bulk(const VtuGrid     &bulk,
+                             const std::string &bulk_stem,
+                             const double       time)
   {
     const unsigned int n_pieces  = n_processes(communicator);
     const unsigned int piece     = this_process(communicator);
@@ -429,8 +551,9 @@ namespace RingContact
 
   // The slave surfaces of every contact pair, with the nodal gap and arc
   // length, and the .pvd that lists them.
+  template <int dim>
   void
-  VtuWriter::write_slave_surface(
+  VtuWriter<dim>::write_slave_surface(
     const DoFHandler<dim>            &dof_handler,
     const hp::MappingCollection<dim> &mapping,
     const Vector<double>             &solution,
@@ -439,12 +562,12 @@ namespace RingContact
     const unsigned int                step,
     const double                      time)
   {
-    VtuGrid surface = slave_surface_grid(dof_handler,
-                                         mapping,
-                                         solution,
-                                         surface_fields,
-                                         slave_faces,
-                                         subdivisions);
+    VtuGrid surface = slave_surface_grid<dim>(dof_handler,
+                                              mapping,
+                                              solution,
+                                              surface_fields,
+                                              slave_faces,
+                                              subdivisions);
     choose_precision(surface);
     const std::string surface_name =
       "slave-" + tag + "-" + Utilities::int_to_string(step, 4) + ".vtu";
@@ -457,10 +580,11 @@ namespace RingContact
 
   // A rewritten step (the state written again after a failed step)
   // replaces its record instead of listing the file twice.
+  template <int dim>
   void
-  VtuWriter::record(std::vector<std::pair<double, std::string>> &records,
-                    const double                                 time,
-                    const std::string                           &name)
+  VtuWriter<dim>::record(std::vector<std::pair<double, std::string>> &records,
+                         const double                                 time,
+                         const std::string                           &name)
   {
     for (auto &r : records)
       if (r.second == name)
@@ -474,12 +598,16 @@ namespace RingContact
   // The whole record list at every step: the .pvd is small, and it is
   // replaced atomically rather than appended to, so that it is always a
   // complete XML file.
+  template <int dim>
   std::string
-  VtuWriter::pvd_contents(
+  VtuWriter<dim>::pvd_contents(
     const std::vector<std::pair<double, std::string>> &records)
   {
     std::ostringstream out;
     DataOutBase::write_pvd_record(out, records);
     return out.str();
   }
+
+  template class VtuWriter<2>;
+  template class VtuWriter<3>;
 } // namespace RingContact

@@ -61,7 +61,7 @@ namespace RingContact
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
             layout.component[i] = fe.system_to_component_index(i).first;
-            if (!Components::is_displacement(layout.component[i]))
+            if (!Components::is_displacement<dim>(layout.component[i]))
               continue;
             // The index of the scalar shape function in its base element.
             layout.u_dofs.push_back(i);
@@ -518,21 +518,35 @@ namespace RingContact
       return;
     // cof(G) = det(G) G^-T, in two dimensions [[G11, -G10], [-G01, G00]]:
     // linear in G, so that cof(I + Grad u) = I + cof(Grad u) and its
-    // derivative along phi_j is cof(Grad phi_j), exactly.
-    const auto cofactor = [](const Tensor<2, dim> &G) {
-      Tensor<2, dim> C;
-      C[0][0] = G[1][1];
-      C[0][1] = -G[1][0];
-      C[1][0] = -G[0][1];
-      C[1][1] = G[0][0];
-      return C;
+    // derivative along phi_j is cof(Grad phi_j), exactly. In three it is
+    // quadratic, cof(F + G) = cof(F) + cof'(F)[G] + cof(G), which gives the
+    // derivative exactly from three cofactors (deal.II's).
+    const auto cof = [](const Tensor<2, dim> &G) {
+      if constexpr (dim == 2)
+        {
+          Tensor<2, dim> C;
+          C[0][0] = G[1][1];
+          C[0][1] = -G[1][0];
+          C[1][0] = -G[0][1];
+          C[1][1] = G[0][0];
+          return C;
+        }
+      else
+        return cofactor(G);
+    };
+    const auto cof_derivative = [&](const Tensor<2, dim> &F,
+                                    const Tensor<2, dim> &G) {
+      if constexpr (dim == 2)
+        return cof(G);
+      else
+        return Tensor<2, dim>(cof(F + G) - cof(F) - cof(G));
     };
     // p + 1 Gauss points on the faces of an element of degree p (the
     // FESystem's degree is its displacement's, which the multiplier's does
     // not exceed).
-    hp::QCollection<1> face_q;
+    hp::QCollection<dim - 1> face_q;
     for (unsigned int i = 0; i < q_collection.size(); ++i)
-      face_q.push_back(QGauss<1>(fe_collection[i].degree + 1));
+      face_q.push_back(QGauss<dim - 1>(fe_collection[i].degree + 1));
     hp::FEFaceValues<dim>                hp_face_values(mapping_collection,
                                          fe_collection,
                                          face_q,
@@ -585,7 +599,7 @@ namespace RingContact
                       Tensor<1, dim>(
                         -p *
                         ((follower ?
-                            cofactor(unit_symmetric_tensor<dim>() + grad_u[q]) :
+                            cof(unit_symmetric_tensor<dim>() + grad_u[q]) :
                             Tensor<2, dim>(unit_symmetric_tensor<dim>())) *
                          N) *
                         dA) :
@@ -597,7 +611,7 @@ namespace RingContact
                     {
                       const unsigned int c =
                         fe.system_to_component_index(i).first;
-                      if (!Components::is_displacement(c))
+                      if (!Components::is_displacement<dim>(c))
                         continue;
                       face_rhs(i) += fv.shape_value(i, q) * force[c];
                       // A dead load does not depend on u: no tangent.
@@ -607,13 +621,18 @@ namespace RingContact
                         {
                           const unsigned int d =
                             fe.system_to_component_index(j).first;
-                          if (!Components::is_displacement(d))
+                          if (!Components::is_displacement<dim>(d))
                             continue;
                           // Grad phi_j = e_d (x) grad(phi_j): its row d.
                           Tensor<2, dim> G;
                           G[d] = fv.shape_grad(j, q);
-                          face_matrix(i, j) += p * fv.shape_value(i, q) *
-                                               (cofactor(G) * N)[c] * dA;
+                          face_matrix(i, j) +=
+                            p * fv.shape_value(i, q) *
+                            (cof_derivative(unit_symmetric_tensor<dim>() +
+                                              grad_u[q],
+                                            G) *
+                             N)[c] *
+                            dA;
                         }
                     }
                 }
@@ -622,32 +641,9 @@ namespace RingContact
   }
 
 
-  // This chapter's members for the dimensions the program runs in (see
-  // contact_problem.cc).
-  template void
-  ContactProblem<2>::store_reference_geometry();
-  template unsigned int
-  ContactProblem<2>::assemble_newton_system(const Pairing  pairing,
-                                            const Assembly what);
-  template void
-  ContactProblem<2>::assemble_system(Assembly what);
-  template void
-  ContactProblem<2>::assemble_contact_terms();
-  template void
-  ContactProblem<2>::assemble_bulk(const bool tangent);
-  template bool
-  ContactProblem<2>::outside_law(const Material<dim>     &material,
-                                 const Tensor<2, dim>    &grad_u,
-                                 const types::material_id body);
-  template std::string
-  ContactProblem<2>::inverted_state_reason() const;
-  template void
-  ContactProblem<2>::add_local_system(
-    const FullMatrix<double>                   &matrix,
-    const Vector<double>                       &rhs,
-    const std::vector<types::global_dof_index> &dofs,
-    Vector<double>                             &force,
-    const unsigned int                          cell);
-  template void
-  ContactProblem<2>::assemble_boundary_loads();
+  // This chapter's members for the dimensions the program runs in: the
+  // explicit instantiation of the class in a chapter instantiates the
+  // members defined here (see contact_problem.cc).
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

@@ -52,8 +52,10 @@ namespace RingContact
     // is that of the reference boundary, fixed for the whole run.
     for (const auto &line : normal_target)
       {
-        const unsigned int a =
-          std::abs(line.normal[0]) >= std::abs(line.normal[1]) ? 0 : 1;
+        unsigned int a = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(line.normal[d]) > std::abs(line.normal[a]))
+            a = d;
         normal_component.push_back(a);
         imposed_dofs.push_back(line.dofs[a]);
       }
@@ -65,7 +67,7 @@ namespace RingContact
     // Every multiplier unknown, on the slave surfaces or not: the rows
     // whose residual is a gap or a traction rather than a force.
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, Components::contact_mask());
+      DoFTools::extract_dofs(dof_handler, Components::contact_mask<dim>());
     is_multiplier.assign(dof_handler.n_dofs(), false);
     for (const auto i : all_multipliers)
       is_multiplier[i] = true;
@@ -78,7 +80,8 @@ namespace RingContact
     for (const auto dof : imposed_dofs)
       supported[dof] = true;
     for (const auto &line : normal_target)
-      supported[line.dofs[0]] = supported[line.dofs[1]] = true;
+      for (const auto dof : line.dofs)
+        supported[dof] = true;
     for (const auto &pair : cyclic_pairs)
       for (const unsigned int c : {Components::ux, Components::uy})
         supported[pair.end[c]] = supported[pair.start[c]] = true;
@@ -113,10 +116,12 @@ namespace RingContact
     for (unsigned int k = 0; k < normal_target.size(); ++k)
       {
         const auto        &line = normal_target[k];
-        const unsigned int a = normal_component[k], b = 1 - a;
-        target.add_entry(line.dofs[a],
-                         line.dofs[b],
-                         -line.normal[b] / line.normal[a]);
+        const unsigned int a    = normal_component[k];
+        for (unsigned int b = 0; b < dim; ++b)
+          if (b != a)
+            target.add_entry(line.dofs[a],
+                             line.dofs[b],
+                             -line.normal[b] / line.normal[a]);
         if (!normal_increment.empty())
           target.set_inhomogeneity(line.dofs[a], normal_increment[k]);
       }
@@ -132,7 +137,7 @@ namespace RingContact
     // the surface (on its inner faces) are held at zero, which leaves the
     // trace of FE_Q(q) on the slave surface as the multiplier's space.
     const IndexSet all_multipliers =
-      DoFTools::extract_dofs(dof_handler, Components::contact_mask());
+      DoFTools::extract_dofs(dof_handler, Components::contact_mask<dim>());
     std::set<types::global_dof_index> slave_multipliers;
     for (const auto &[node, pair] : pair_of_node)
       slave_multipliers.insert(node);
@@ -206,16 +211,20 @@ namespace RingContact
   }
 
   // The value of the constrained component u_a that satisfies the k-th
-  // normal condition N . u = g with the other component of `u`:
-  // u_a = (g - N_b u_b) / N_a.
+  // normal condition N . u = g with the other components of `u`:
+  // u_a = (g - sum over b != a of N_b u_b) / N_a.
   template <int dim>
   double
   ContactProblem<dim>::normal_constrained_value(const unsigned int    k,
                                                 const Vector<double> &u) const
   {
     const auto        &line = normal_target[k];
-    const unsigned int a = normal_component[k], b = 1 - a;
-    return (line.value - line.normal[b] * u(line.dofs[b])) / line.normal[a];
+    const unsigned int a    = normal_component[k];
+    double             rest = line.value;
+    for (unsigned int b = 0; b < dim; ++b)
+      if (b != a)
+        rest -= line.normal[b] * u(line.dofs[b]);
+    return rest / line.normal[a];
   }
 
   // The boundary exactly at its target, not up to round-off: the imposed
@@ -292,26 +301,9 @@ namespace RingContact
   }
 
 
-  // This chapter's members for the dimensions the program runs in (see
-  // contact_problem.cc).
-  template void
-  ContactProblem<2>::make_constraints();
-  template void
-  ContactProblem<2>::add_constraints(
-    AffineConstraints<double>                       &target,
-    const std::map<types::global_dof_index, double> &boundary_increment,
-    const std::vector<double>                       &normal_increment,
-    std::vector<bool>                               *fixed_dofs);
-  template bool
-  ContactProblem<2>::impose_boundary_increment();
-  template double
-  ContactProblem<2>::normal_constrained_value(const unsigned int    k,
-                                              const Vector<double> &u) const;
-  template void
-  ContactProblem<2>::set_boundary_at_target();
-  template void
-  ContactProblem<2>::apply_boundary_motion(const LoadState &load);
-  template bool
-  ContactProblem<2>::boundary_near_target(
-    const Vector<double> &converged) const;
+  // This chapter's members for the dimensions the program runs in: the
+  // explicit instantiation of the class in a chapter instantiates the
+  // members defined here (see contact_problem.cc).
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

@@ -37,7 +37,7 @@ namespace RingContact
       , communicator(communicator)
       , n_processes(RingContact::n_processes(communicator))
       , this_process(RingContact::this_process(communicator))
-      , scenario(make_scenario(parameters))
+      , scenario(make_scenario<dim>(parameters))
       , bodies(scenario->bodies())
       , boundary_loads(scenario->boundary_loads())
       , load_program(scenario->load_program())
@@ -163,9 +163,10 @@ namespace RingContact
 
 
   // The class for the dimensions the program runs in: this file's
-  // members, those defined in the header and the virtual table; the
-  // other chapters instantiate their own members (as ASPECT's Simulator
-  // does), since an explicit instantiation of the class only takes
-  // the members defined where it stands.
+  // members, those defined in the header and the virtual table. An
+  // explicit instantiation of the class takes only the members defined
+  // where it stands, so every other chapter instantiates the class too,
+  // for its own members.
   template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

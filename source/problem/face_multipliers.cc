@@ -27,7 +27,7 @@ namespace RingContact
         {
           const unsigned int component =
             fe.face_system_to_component_index(i).first;
-          if (Components::is_displacement(component))
+          if (Components::is_displacement<dim>(component))
             continue;
           const auto base = fe.face_system_to_base_index(i);
           points.push_back({component,
@@ -103,7 +103,7 @@ namespace RingContact
       cell->face(f)->get_dof_indices(face_dofs, cell->active_fe_index());
       FaceValues values;
       for (unsigned int i = 0, k = 0; i < fe.n_dofs_per_face(); ++i)
-        if (!Components::is_displacement(
+        if (!Components::is_displacement<dim>(
               fe.face_system_to_component_index(i).first))
           {
             values[{points[k].component, points[k].index}] = u(face_dofs[i]);

@@ -419,36 +419,9 @@ namespace RingContact
   }
 
 
-  // This chapter's members for the dimensions the program runs in (see
-  // contact_problem.cc).
-  template ResidualMeasure
-  ContactProblem<2>::residual_measure() const;
-  template bool
-  ContactProblem<2>::solve_linear_system(Vector<double> &newton_update,
-                                         std::string    &failure_reason);
-  template void
-  ContactProblem<2>::restore_state(const Vector<double> &state,
-                                   const LoadState      &load);
-  template void
-  ContactProblem<2>::accept_contact_state(const Vector<double> &state);
-  template std::vector<ContactPairState>
-  ContactProblem<2>::contact_pair_states() const;
-  template std::vector<NodeStates>
-  ContactProblem<2>::contact_node_states() const;
-  template void
-  ContactProblem<2>::start_contact_step();
-  template void
-  ContactProblem<2>::hold_stick(const bool hold);
-  template void
-  ContactProblem<2>::allow_edge_extrapolation(const std::vector<bool> &allow);
-  template bool
-  ContactProblem<2>::may_linearise() const;
-  template void
-  ContactProblem<2>::linearise(const bool on);
-  template bool
-  ContactProblem<2>::state_rejected() const;
-  template std::string
-  ContactProblem<2>::rejection_reason() const;
-  template bool
-  ContactProblem<2>::stop_requested() const;
+  // This chapter's members for the dimensions the program runs in: the
+  // explicit instantiation of the class in a chapter instantiates the
+  // members defined here (see contact_problem.cc).
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

@@ -167,7 +167,7 @@ namespace RingContact
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
               const auto [component, index] = fe.system_to_component_index(i);
-              if (!Components::is_displacement(component))
+              if (!Components::is_displacement<dim>(component))
                 continue;
               const auto j =
                 u_dofs[u_fe.component_to_system_index(component, index)];
@@ -261,7 +261,7 @@ namespace RingContact
                 }
               const FaceValues &values = record.at(key_of(c->face(f)));
               for (unsigned int i = 0, k = 0; i < fe.n_dofs_per_face(); ++i)
-                if (!Components::is_displacement(
+                if (!Components::is_displacement<dim>(
                       fe.face_system_to_component_index(i).first))
                   {
                     u(face_dofs[i]) = interpolate(values,
@@ -284,23 +284,34 @@ namespace RingContact
   Vector<float>
   ContactProblem<dim>::estimate_error() const
   {
-    hp::QCollection<1> face_quadrature;
-    for (unsigned int k = 0; k < fe_collection.size(); ++k)
-      face_quadrature.push_back(QGauss<1>(fe_collection[k].degree + 1));
-    unsigned int mapping_degree = 1;
-    for (const Body<dim> &body : bodies)
-      mapping_degree = std::max(mapping_degree, body.mapping_degree);
-    const EstimatorInput input{triangulation,
-                               dof_handler,
-                               fe_collection,
-                               mapping_collection,
-                               face_quadrature,
-                               mapping_degree,
-                               solution,
-                               materials,
-                               slave_boundaries(parameters),
-                               parameters.contact.frictional()};
-    return RingContact::estimate_error(parameters.refinement.estimator, input);
+    // Adaptive refinement is two-dimensional (a 3D run that asks for it
+    // is refused with the input, setup.cc).
+    if constexpr (dim == 3)
+      {
+        AssertThrow(false, ExcMessage("adaptive refinement is 2D only"));
+        return Vector<float>();
+      }
+    else
+      {
+        hp::QCollection<1> face_quadrature;
+        for (unsigned int k = 0; k < fe_collection.size(); ++k)
+          face_quadrature.push_back(QGauss<1>(fe_collection[k].degree + 1));
+        unsigned int mapping_degree = 1;
+        for (const Body<dim> &body : bodies)
+          mapping_degree = std::max(mapping_degree, body.mapping_degree);
+        const EstimatorInput input{triangulation,
+                                   dof_handler,
+                                   fe_collection,
+                                   mapping_collection,
+                                   face_quadrature,
+                                   mapping_degree,
+                                   solution,
+                                   materials,
+                                   slave_boundaries(parameters),
+                                   parameters.contact.frictional()};
+        return RingContact::estimate_error(parameters.refinement.estimator,
+                                           input);
+      }
   }
 
   // @sect4{Refine, carry the state over, set the problem up again}
@@ -308,107 +319,121 @@ namespace RingContact
   void
   ContactProblem<dim>::refine_mesh()
   {
-    TimerOutput::Scope  t(timer, "refinement");
-    const auto         &refinement = parameters.refinement;
-    const Vector<float> indicator  = estimate_error();
-    GridRefinement::refine_and_coarsen_fixed_number(triangulation,
-                                                    indicator,
-                                                    refinement.refine_fraction,
-                                                    refinement.coarsen_fraction,
-                                                    refinement.maximum_cells);
-    // Never finer than 'Maximum level', never coarser than the mesh the
-    // scenario made (its global refinements).
-    for (const auto &cell : triangulation.active_cell_iterators())
+    // Adaptive refinement is two-dimensional (a 3D run that asks for it
+    // is refused with the input, setup.cc).
+    if constexpr (dim == 3)
       {
-        if (cell->level() >= static_cast<int>(refinement.maximum_level))
-          cell->clear_refine_flag();
-        if (cell->level() <=
-            static_cast<int>(parameters.mesh.global_refinements))
-          cell->clear_coarsen_flag();
+        AssertThrow(false, ExcMessage("adaptive refinement is 2D only"));
+        return;
       }
-
-    keep_facing_faces_matched(contacts, refinement.maximum_level);
-
-    // The displacement on a DoFHandler of its own: one FE_Q(p)^2 per body,
-    // each cell the element of its body.
-    hp::FECollection<dim> displacement_fe;
-    for (const Body<dim> &body : bodies)
-      displacement_fe.push_back(FESystem<dim>(FE_Q<dim>(body.degree), 2));
-    DoFHandler<dim> displacement_dofs(triangulation);
-    const auto      set_bodies = [&]() {
-      for (const auto &cell : displacement_dofs.active_cell_iterators())
-        cell->set_active_fe_index(fe_index_of.at(cell->material_id()));
-      displacement_dofs.distribute_dofs(displacement_fe);
-    };
-    set_bodies();
-    std::vector<Vector<double>> states(
-      2, Vector<double>(displacement_dofs.n_dofs()));
-    copy_displacement(
-      dof_handler, displacement_dofs, solution, states[0], true);
-    copy_displacement(
-      dof_handler, displacement_dofs, previous_solution, states[1], true);
-
-    // The multipliers, face by face along the slave surfaces.
-    const auto                      slave_ids   = slave_boundaries(parameters);
-    const std::array<FaceRecord, 2> face_record = {
-      {record_multipliers(dof_handler, slave_ids, solution),
-       record_multipliers(dof_handler, slave_ids, previous_solution)}};
-
-    SolutionTransfer<dim, Vector<double>> transfer(displacement_dofs);
-    triangulation.prepare_coarsening_and_refinement();
-    // The rest of the cycle's line in the log (refine_and_solve_again()
-    // starts it): the flags as deal.II's smoothing left them.
-    unsigned int       n_refined = 0, n_coarsened = 0;
-    const unsigned int cells_before = triangulation.n_active_cells();
-    for (const auto &cell : triangulation.active_cell_iterators())
+    else
       {
-        n_refined += cell->refine_flag_set() ? 1 : 0;
-        n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
+        TimerOutput::Scope  t(timer, "refinement");
+        const auto         &refinement = parameters.refinement;
+        const Vector<float> indicator  = estimate_error();
+        GridRefinement::refine_and_coarsen_fixed_number(
+          triangulation,
+          indicator,
+          refinement.refine_fraction,
+          refinement.coarsen_fraction,
+          refinement.maximum_cells);
+        // Never finer than 'Maximum level', never coarser than the mesh the
+        // scenario made (its global refinements).
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            if (cell->level() >= static_cast<int>(refinement.maximum_level))
+              cell->clear_refine_flag();
+            if (cell->level() <=
+                static_cast<int>(parameters.mesh.global_refinements))
+              cell->clear_coarsen_flag();
+          }
+
+        keep_facing_faces_matched(contacts, refinement.maximum_level);
+
+        // The displacement on a DoFHandler of its own: one FE_Q(p)^2 per body,
+        // each cell the element of its body.
+        hp::FECollection<dim> displacement_fe;
+        for (const Body<dim> &body : bodies)
+          displacement_fe.push_back(FESystem<dim>(FE_Q<dim>(body.degree), 2));
+        DoFHandler<dim> displacement_dofs(triangulation);
+        const auto      set_bodies = [&]() {
+          for (const auto &cell : displacement_dofs.active_cell_iterators())
+            cell->set_active_fe_index(fe_index_of.at(cell->material_id()));
+          displacement_dofs.distribute_dofs(displacement_fe);
+        };
+        set_bodies();
+        std::vector<Vector<double>> states(
+          2, Vector<double>(displacement_dofs.n_dofs()));
+        copy_displacement(
+          dof_handler, displacement_dofs, solution, states[0], true);
+        copy_displacement(
+          dof_handler, displacement_dofs, previous_solution, states[1], true);
+
+        // The multipliers, face by face along the slave surfaces.
+        const auto slave_ids = slave_boundaries(parameters);
+        const std::array<FaceRecord, 2> face_record = {
+          {record_multipliers(dof_handler, slave_ids, solution),
+           record_multipliers(dof_handler, slave_ids, previous_solution)}};
+
+        SolutionTransfer<dim, Vector<double>> transfer(displacement_dofs);
+        triangulation.prepare_coarsening_and_refinement();
+        // The rest of the cycle's line in the log (refine_and_solve_again()
+        // starts it): the flags as deal.II's smoothing left them.
+        unsigned int       n_refined = 0, n_coarsened = 0;
+        const unsigned int cells_before = triangulation.n_active_cells();
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            n_refined += cell->refine_flag_set() ? 1 : 0;
+            n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
+          }
+        transfer.prepare_for_coarsening_and_refinement(states);
+        triangulation.execute_coarsening_and_refinement();
+        set_bodies();
+        std::vector<Vector<double>> new_states(
+          2, Vector<double>(displacement_dofs.n_dofs()));
+        transfer.interpolate(states, new_states);
+
+        // The contact problem on the new mesh: its elements per cell, unknowns,
+        // solver, interfaces and constraints (setup.cc), the reference geometry
+        // and the arc length made again when next needed.
+        distribute_dofs();
+        make_linear_system();
+        make_contact_interfaces();
+        for (Vector<double> *v : {&solution,
+                                  &previous_solution,
+                                  &internal_force,
+                                  &external_force,
+                                  &residual_magnitude})
+          v->reinit(dof_handler.n_dofs());
+        make_constraints();
+        reference_geometry.start.clear();
+        arc_length.reinit(0);
+
+        copy_displacement(
+          dof_handler, displacement_dofs, solution, new_states[0], false);
+        copy_displacement(dof_handler,
+                          displacement_dofs,
+                          previous_solution,
+                          new_states[1],
+                          false);
+        restore_multipliers(dof_handler, slave_ids, face_record[0], solution);
+        restore_multipliers(dof_handler,
+                            slave_ids,
+                            face_record[1],
+                            previous_solution);
+        // The hanging nodes take their constrained values (the transfer gives
+        // them already where a cell was refined; coarsening may not).
+        hanging_node_constraints.distribute(solution);
+        hanging_node_constraints.distribute(previous_solution);
+        ++n_refinements;
+
+        for (const auto &contact : contacts)
+          contact->update(solution);
+        make_sparsity_pattern();
+        log << cells_before << " -> " << triangulation.n_active_cells()
+            << " cells (" << n_refined << " refined, " << n_coarsened
+            << " coarsened), " << dof_handler.n_dofs() << " unknowns\n";
       }
-    transfer.prepare_for_coarsening_and_refinement(states);
-    triangulation.execute_coarsening_and_refinement();
-    set_bodies();
-    std::vector<Vector<double>> new_states(
-      2, Vector<double>(displacement_dofs.n_dofs()));
-    transfer.interpolate(states, new_states);
-
-    // The contact problem on the new mesh: its elements per cell, unknowns,
-    // solver, interfaces and constraints (setup.cc), the reference geometry
-    // and the arc length made again when next needed.
-    distribute_dofs();
-    make_linear_system();
-    make_contact_interfaces();
-    for (Vector<double> *v : {&solution,
-                              &previous_solution,
-                              &internal_force,
-                              &external_force,
-                              &residual_magnitude})
-      v->reinit(dof_handler.n_dofs());
-    make_constraints();
-    reference_geometry.start.clear();
-    arc_length.reinit(0);
-
-    copy_displacement(
-      dof_handler, displacement_dofs, solution, new_states[0], false);
-    copy_displacement(
-      dof_handler, displacement_dofs, previous_solution, new_states[1], false);
-    restore_multipliers(dof_handler, slave_ids, face_record[0], solution);
-    restore_multipliers(dof_handler,
-                        slave_ids,
-                        face_record[1],
-                        previous_solution);
-    // The hanging nodes take their constrained values (the transfer gives
-    // them already where a cell was refined; coarsening may not).
-    hanging_node_constraints.distribute(solution);
-    hanging_node_constraints.distribute(previous_solution);
-    ++n_refinements;
-
-    for (const auto &contact : contacts)
-      contact->update(solution);
-    make_sparsity_pattern();
-    log << cells_before << " -> " << triangulation.n_active_cells()
-        << " cells (" << n_refined << " refined, " << n_coarsened
-        << " coarsened), " << dof_handler.n_dofs() << " unknowns\n";
   }
 
   // @sect4{Refinement after a converged step}
@@ -461,15 +486,9 @@ namespace RingContact
   }
 
 
-  // This chapter's members for the dimensions the program runs in (see
-  // contact_problem.cc).
-  template Vector<float>
-  ContactProblem<2>::estimate_error() const;
-  template void
-  ContactProblem<2>::refine_mesh();
-  template unsigned int
-  ContactProblem<2>::refinement_cycles(const unsigned int step);
-  template bool
-  ContactProblem<2>::refine_mesh_after_step(const unsigned int step,
-                                            const unsigned int cycle);
+  // This chapter's members for the dimensions the program runs in: the
+  // explicit instantiation of the class in a chapter instantiates the
+  // members defined here (see contact_problem.cc).
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

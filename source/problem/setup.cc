@@ -228,14 +228,14 @@ namespace RingContact
       // would not.
       if (layer)
         fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree),
-                                              2,
+                                              dim,
                                               FE_Q<dim>(fe.multiplier_degree),
                                               1,
                                               *tangential,
                                               1));
       else
         fe_collection.push_back(FESystem<dim>(
-          FE_Q<dim>(degree), 2, FE_Nothing<dim>(), 1, FE_Nothing<dim>(), 1));
+          FE_Q<dim>(degree), dim, FE_Nothing<dim>(), 1, FE_Nothing<dim>(), 1));
       // (p+1) x (p+1) Gauss points are the full rule; p x p is
       // the reduced integration of modelisation H (Code_Aster's
       // C_PLAN_SI: 2 x 2 points on Q2), whose zero-energy modes the test
@@ -347,22 +347,21 @@ namespace RingContact
         // the multipliers (pressure and tangential traction).
         std::vector<BlockSolver::Kind> kinds(dof_handler.n_dofs(),
                                              BlockSolver::multiplier);
-        for (const auto i :
-             DoFTools::extract_dofs(dof_handler,
-                                    Components::displacement_mask(true, false)))
+        for (const auto i : DoFTools::extract_dofs(
+               dof_handler, Components::displacement_mask<dim>(true, false)))
           kinds[i] = BlockSolver::displacement_x;
-        for (const auto i :
-             DoFTools::extract_dofs(dof_handler,
-                                    Components::displacement_mask(false, true)))
+        for (const auto i : DoFTools::extract_dofs(
+               dof_handler, Components::displacement_mask<dim>(false, true)))
           kinds[i] = BlockSolver::displacement_y;
         // The reference position of each displacement unknown, through
         // the bodies' mappings; the multipliers keep the origin, which the
         // preconditioner does not read.
         std::map<types::global_dof_index, Point<dim>> support_points;
-        DoFTools::map_dofs_to_support_points(mapping_collection,
-                                             dof_handler,
-                                             support_points,
-                                             Components::displacement_mask());
+        DoFTools::map_dofs_to_support_points(
+          mapping_collection,
+          dof_handler,
+          support_points,
+          Components::displacement_mask<dim>());
         std::vector<Point<dim>> positions(dof_handler.n_dofs());
         for (const auto &[i, point] : support_points)
           positions[i] = point;
@@ -387,21 +386,23 @@ namespace RingContact
     // turned through the sector angle. The master window (how far the
     // rotated copies of the master surface reach on each side) leans
     // towards the side the slave slides to, so that its nodes stay inside.
-    if (const auto cyclic = scenario->cyclic_sector())
-      {
-        sector.angle = cyclic->angle;
-        CyclicSymmetry::set_master_window(sector,
-                                          cyclic->sector_elements,
-                                          cyclic->elements_around,
-                                          cyclic->slave_rotation);
-        cyclic_pairs = CyclicSymmetry::find_node_pairs(dof_handler,
-                                                       mapping_collection,
-                                                       sector.angle,
-                                                       cyclic->start_side,
-                                                       cyclic->end_side);
-        sector.multiplier_twins =
-          CyclicSymmetry::multiplier_pairs(cyclic_pairs);
-      }
+    // (Cyclic symmetry is 2D: a 3D scenario has no sector.)
+    if constexpr (dim == 2)
+      if (const auto cyclic = scenario->cyclic_sector())
+        {
+          sector.angle = cyclic->angle;
+          CyclicSymmetry::set_master_window(sector,
+                                            cyclic->sector_elements,
+                                            cyclic->elements_around,
+                                            cyclic->slave_rotation);
+          cyclic_pairs = CyclicSymmetry::find_node_pairs(dof_handler,
+                                                         mapping_collection,
+                                                         sector.angle,
+                                                         cyclic->start_side,
+                                                         cyclic->end_side);
+          sector.multiplier_twins =
+            CyclicSymmetry::multiplier_pairs(cyclic_pairs);
+        }
 
     // Small strain means geometrically linear throughout: pairing, normal
     // and length element of the reference configuration, a gap linear in
@@ -418,33 +419,39 @@ namespace RingContact
       {
         contacts.push_back(
           make_contact_interface(slave, master, scheme, geometrically_linear));
-        refuse_slave_corners(contacts.back()->slave_surface(), slave);
-        // Every scheme of the file suits this pair's surfaces: known now,
-        // not after the schemes listed before it have run. A rule must
-        // integrate the surfaces' shape functions exactly (the contact
-        // patch test): segment-based 1 on quadratic rings once failed only
-        // after the schemes before it in the list had run, and without
-        // naming the entry. The degree is that of the richer surface.
-        const unsigned int surface_degree =
-          std::max(
-            contacts.back()->slave_surface().displacement_basis().size(),
-            contacts.back()->master_surface().displacement_basis().size()) -
-          1;
-        for (const auto &other : parameters.contact.schemes)
-          try
-            {
-              contact_quadrature(other,
-                                 surface_degree,
-                                 parameters.finite_elements.multiplier_degree);
-            }
-          catch (const std::exception &e)
-            {
-              // Named with the file and line that list it (driver/run.cc).
-              throw ParameterError("Contact",
-                                   "Integration schemes",
-                                   "Contact/Integration schemes: " +
-                                     one_line_message(e));
-            }
+        // In 3D the faces are bilinear (FaceContact refuses others) and
+        // every 3D scheme integrates them as its own rule says.
+        if constexpr (dim == 2)
+          {
+            refuse_slave_corners(contacts.back()->slave_surface(), slave);
+            // Every scheme of the file suits this pair's surfaces: known now,
+            // not after the schemes listed before it have run. A rule must
+            // integrate the surfaces' shape functions exactly (the contact
+            // patch test): segment-based 1 on quadratic rings once failed only
+            // after the schemes before it in the list had run, and without
+            // naming the entry. The degree is that of the richer surface.
+            const unsigned int surface_degree =
+              std::max(
+                contacts.back()->slave_surface().displacement_basis().size(),
+                contacts.back()->master_surface().displacement_basis().size()) -
+              1;
+            for (const auto &other : parameters.contact.schemes)
+              try
+                {
+                  contact_quadrature(
+                    other,
+                    surface_degree,
+                    parameters.finite_elements.multiplier_degree);
+                }
+              catch (const std::exception &e)
+                {
+                  // Named with the file and line that list it (driver/run.cc).
+                  throw ParameterError("Contact",
+                                       "Integration schemes",
+                                       "Contact/Integration schemes: " +
+                                         one_line_message(e));
+                }
+          }
         // Each multiplier node belongs to one pair (two pairs' slave
         // surfaces may not share a vertex: the mesh checks refuse it), which
         // answers contact_of() and keeps the node free in
@@ -513,16 +520,25 @@ namespace RingContact
       bodies[fe_index_of.at(body_of_boundary.at(slave))];
     const Body<dim> &master_body =
       bodies[fe_index_of.at(body_of_boundary.at(master))];
-    return std::make_unique<ContactInterface<dim>>(
-      dof_handler,
-      pair_parameters,
-      scheme,
-      slave_body.mapping_degree,
-      master_body.mapping_degree,
-      std::max(slave_body.material.youngs_modulus,
-               master_body.material.youngs_modulus),
-      geometrically_linear,
-      sector);
+    if constexpr (dim == 3)
+      return std::make_unique<ContactInterface<dim>>(
+        dof_handler,
+        pair_parameters,
+        scheme,
+        std::max(slave_body.material.youngs_modulus,
+                 master_body.material.youngs_modulus),
+        geometrically_linear);
+    else
+      return std::make_unique<ContactInterface<dim>>(
+        dof_handler,
+        pair_parameters,
+        scheme,
+        slave_body.mapping_degree,
+        master_body.mapping_degree,
+        std::max(slave_body.material.youngs_modulus,
+                 master_body.material.youngs_modulus),
+        geometrically_linear,
+        sector);
   }
 
   // The bulk couplings, and those of the current contact pairs.
@@ -584,18 +600,20 @@ namespace RingContact
   {
     std::ostringstream text;
     text << std::setprecision(3);
-    for (unsigned int k = 0; k < contacts.size(); ++k)
-      {
-        const double slave = contacts[k]->slave_surface().min_segment_length();
-        const double master =
-          contacts[k]->master_surface().min_segment_length();
-        if (slave > 4 * master)
-          text << "; contact pair " << k + 1 << ": the slave surface's "
-               << "segments are up to " << slave / master
-               << " times longer than the master's, and each couples to "
-                  "every master segment it faces (a dense block): make the "
-                  "slave the finer surface, or mesh them alike";
-      }
+    if constexpr (dim == 2)
+      for (unsigned int k = 0; k < contacts.size(); ++k)
+        {
+          const double slave =
+            contacts[k]->slave_surface().min_segment_length();
+          const double master =
+            contacts[k]->master_surface().min_segment_length();
+          if (slave > 4 * master)
+            text << "; contact pair " << k + 1 << ": the slave surface's "
+                 << "segments are up to " << slave / master
+                 << " times longer than the master's, and each couples to "
+                    "every master segment it faces (a dense block): make the "
+                    "slave the finer surface, or mesh them alike";
+        }
     // The other solvers, those this run does not use already.
     text << "; ways to need less memory: ";
     if (system->direct_solver_name() == "UMFPACK")
@@ -611,36 +629,9 @@ namespace RingContact
   }
 
 
-  // This chapter's members for the dimensions the program runs in (see
-  // contact_problem.cc).
-  template void
-  ContactProblem<2>::setup();
-  template void
-  ContactProblem<2>::make_grid();
-  template void
-  ContactProblem<2>::partition_cells();
-  template void
-  ContactProblem<2>::setup_system();
-  template void
-  ContactProblem<2>::make_finite_elements();
-  template void
-  ContactProblem<2>::distribute_dofs();
-  template void
-  ContactProblem<2>::make_linear_system();
-  template void
-  ContactProblem<2>::make_contact_interfaces();
-  template void
-  ContactProblem<2>::refuse_slave_corners(
-    const ContactSurface    &slave,
-    const types::boundary_id slave_id) const;
-  template std::unique_ptr<ContactInterface<dim>>
-  ContactProblem<2>::make_contact_interface(
-    const types::boundary_id slave,
-    const types::boundary_id master,
-    const IntegrationScheme &scheme,
-    const bool               geometrically_linear) const;
-  template void
-  ContactProblem<2>::make_sparsity_pattern();
-  template std::string
-  ContactProblem<2>::describe_fill_in() const;
+  // This chapter's members for the dimensions the program runs in: the
+  // explicit instantiation of the class in a chapter instantiates the
+  // members defined here (see contact_problem.cc).
+  template class ContactProblem<2>;
+  template class ContactProblem<3>;
 } // namespace RingContact

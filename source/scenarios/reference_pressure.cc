@@ -9,7 +9,6 @@
 // here and each scenario passes its reference. A general problem, whose
 // references are expressions given per check, has its own quantities
 // (scenarios/general/quantities.cc).
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/scenarios/reference_pressure.h>
 
 #include <cmath>
@@ -43,6 +42,7 @@ namespace RingContact
     // The extremes over every contact node, open ones included: an open
     // node's zero pressure belongs in the spread, which it makes large under
     // a load that should close the whole surface.
+    template <int dim>
     std::pair<double, double>
     pressure_extremes(const SolutionState<dim> &state)
     {
@@ -56,6 +56,7 @@ namespace RingContact
       return {lowest, highest};
     }
 
+    template <int dim>
     void
     report(const SolutionState<dim> &state,
            const Point<dim>         &probe,
@@ -211,6 +212,7 @@ namespace RingContact
       return {"tangential_traction_A", "slipping_nodes"};
     }
 
+    template <int dim>
     unsigned int
     n_slipping(const SolutionState<dim> &state)
     {
@@ -220,6 +222,7 @@ namespace RingContact
       return n;
     }
 
+    template <int dim>
     void
     report(const SolutionState<dim> &state,
            const Point<dim>         &probe,
@@ -244,26 +247,29 @@ namespace RingContact
 
   // @sect4{The scenarios checked against a reference pressure}
 
+  template <int dim>
   std::vector<std::string>
-  ReferencePressureScenario::leading_columns() const
+  ReferencePressureScenario<dim>::leading_columns() const
   {
     return ReferencePressure::columns();
   }
 
+  template <int dim>
   std::vector<std::string>
-  ReferencePressureScenario::trailing_columns() const
+  ReferencePressureScenario<dim>::trailing_columns() const
   {
     if (run_parameters().contact.frictional())
       return Friction::columns();
     return {};
   }
 
+  template <int dim>
   void
-  ReferencePressureScenario::report(const SolutionState<dim> &state,
-                                    HistoryRow               &row) const
+  ReferencePressureScenario<dim>::report(const SolutionState<dim> &state,
+                                         HistoryRow               &row) const
   {
     const Parameters &parameters = run_parameters();
-    const Point<dim> &probe      = reference_entries().probe_point;
+    const Point<dim>  probe      = reference_entries().template probe_point<dim>();
     ReferencePressure::report(state,
                               probe,
                               reference_pressure(state.load_state()),
@@ -273,8 +279,9 @@ namespace RingContact
       Friction::report(state, probe, row.trailing);
   }
 
+  template <int dim>
   std::vector<StepField>
-  ReferencePressureScenario::step_fields(const HistoryRow &row) const
+  ReferencePressureScenario<dim>::step_fields(const HistoryRow &row) const
   {
     auto fields = ReferencePressure::step_fields(row);
     if (run_parameters().contact.frictional())
@@ -283,21 +290,29 @@ namespace RingContact
     return fields;
   }
 
+  template <int dim>
   void
-  ReferencePressureScenario::warn(std::ostream     &out,
-                                  const HistoryRow &row) const
+  ReferencePressureScenario<dim>::warn(std::ostream     &out,
+                                       const HistoryRow &row) const
   {
     ReferencePressure::warn_if_open(out, row);
   }
 
+  template <int dim>
   std::vector<Verdict>
-  ReferencePressureScenario::evaluate_checks(
+  ReferencePressureScenario<dim>::evaluate_checks(
     const std::string             &scheme,
     const std::vector<HistoryRow> &history) const
   {
     return ReferencePressure::evaluate_checks(reference_entries().checks,
                                               scheme,
                                               history,
-                                              load_program().n_steps());
+                                              this->load_program().n_steps());
   }
+  // The scenarios of both dimensions (the patch test has both); the count
+  // of sliding nodes for the general problem as well.
+  template unsigned int
+  Friction::n_slipping(const SolutionState<2> &);
+  template class ReferencePressureScenario<2>;
+  template class ReferencePressureScenario<3>;
 } // namespace RingContact

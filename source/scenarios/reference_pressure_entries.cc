@@ -170,15 +170,38 @@ namespace RingContact
     Subsection s(prm, "Contact", &declared);
     s.add("Probe point",
           "0.6, 0",
-          Patterns::List(Patterns::Double(), 2, 2),
+          Patterns::List(Patterns::Double(), 2, 3),
           "Reference position [m] of the probe, the slave node "
           "whose pressure is reported (the nearest slave node is "
-          "used). Not set: node A at (R2, 0) for any interface radius. "
+          "used): x, y in 2D, x, y, z in 3D. Not set: node A at (R2, 0) "
+          "for any interface radius; the centre of the 3D patch test's "
+          "interface. "
           "The rings and the patch test only: a general problem reports "
           "the quantities of its Check subsections.",
           [this](const std::string &text) {
-            const auto xy = point_from_text(text, "Contact", "Probe point");
-            probe_point   = Point<dim>(xy[0], xy[1]);
+            probe = coordinates_from_text(text, "Contact", "Probe point");
           });
   }
+
+  template <int spacedim>
+  Point<spacedim>
+  ReferencePressureEntries::probe_point() const
+  {
+    require(probe.size() == spacedim,
+            "Contact",
+            "Probe point",
+            "has " + std::to_string(probe.size()) +
+              " coordinates: a point of a " + std::to_string(spacedim) +
+              "D problem has " + std::to_string(spacedim) + " (" +
+              (spacedim == 2 ? "x, y" : "x, y, z") + ")");
+    Point<spacedim> x;
+    for (unsigned int d = 0; d < spacedim; ++d)
+      x[d] = probe[d];
+    return x;
+  }
+
+  template Point<2>
+  ReferencePressureEntries::probe_point<2>() const;
+  template Point<3>
+  ReferencePressureEntries::probe_point<3>() const;
 } // namespace RingContact

@@ -38,12 +38,31 @@ namespace RingContact
     return registry();
   }
 
-  std::unique_ptr<Scenario<dim>>
-  make_scenario(const Parameters &parameters)
+  template <>
+  std::unique_ptr<Scenario<2>>
+  make_scenario<2>(const Parameters &parameters)
   {
     for (const auto &scenario : registered_scenarios())
       if (scenario.name == parameters.scenario)
         return scenario.make(parameters);
+    // Problem/Scenario's pattern admits only registered names, so this is a
+    // program error, not a user's.
+    throw std::logic_error("no scenario named '" + parameters.scenario + "'");
+  }
+
+  template <>
+  std::unique_ptr<Scenario<3>>
+  make_scenario<3>(const Parameters &parameters)
+  {
+    for (const auto &scenario : registered_scenarios())
+      if (scenario.name == parameters.scenario)
+        {
+          if (!scenario.make_3d)
+            throw std::runtime_error("Problem/Scenario = " + scenario.name +
+                                     ": " + scenario.description +
+                                     " is two-dimensional only");
+          return scenario.make_3d(parameters);
+        }
     // Problem/Scenario's pattern admits only registered names, so this is a
     // program error, not a user's.
     throw std::logic_error("no scenario named '" + parameters.scenario + "'");

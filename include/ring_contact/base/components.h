@@ -1,14 +1,18 @@
-// The layout of the unknowns of every body's FESystem: the two displacement
-// components, then the contact pressure (the Lagrange multiplier: FE_Q on
-// the layer of slave cells along the slave surface, constrained to zero off
-// it; FE_Nothing elsewhere), then the tangential traction (the friction
-// multiplier: as the pressure with friction, FE_Nothing everywhere without,
-// where it adds no unknown). Names for the indices and masks, instead of 2, 3
-// and ComponentMask({false, false, true}) in the code.
+// The layout of the unknowns of every body's FESystem in `dim` dimensions:
+// the dim displacement components, then the contact pressure (the Lagrange
+// multiplier: FE_Q on the layer of slave cells along the slave surface,
+// constrained to zero off it; FE_Nothing elsewhere), then the tangential
+// traction (the friction multiplier: as the pressure with friction,
+// FE_Nothing everywhere without, where it adds no unknown; 2D only). Names
+// for the indices and masks, instead of 2, 3 and
+// ComponentMask({false, false, true}) in the code; each a template over
+// dim, so that one name serves both dimensions.
 #ifndef ring_contact_base_components_h
 #define ring_contact_base_components_h
 
 #include <deal.II/fe/component_mask.h>
+
+#include <vector>
 
 namespace RingContact
 {
@@ -16,43 +20,65 @@ namespace RingContact
   {
     using namespace dealii;
 
-    /// u_x and u_y.
+    /// u_x, u_y and (3D) u_z.
     constexpr unsigned int ux = 0;
     constexpr unsigned int uy = 1;
+    constexpr unsigned int uz = 2;
     /// The contact pressure.
-    constexpr unsigned int multiplier = 2;
-    /// The tangential traction (Coulomb friction).
-    constexpr unsigned int tangential = 3;
-    /// All of them.
-    constexpr unsigned int n_components = 4;
+    template <int dim>
+    constexpr unsigned int multiplier = dim;
+    /// The tangential traction (friction).
+    template <int dim>
+    constexpr unsigned int tangential = dim + 1;
+    template <int dim>
+    constexpr unsigned int n_components = dim + 2;
 
-    /// Whether component c is one of the displacement's.
+    template <int dim>
     constexpr bool
     is_displacement(const unsigned int c)
     {
-      return c < multiplier;
+      return c < multiplier<dim>;
     }
 
-    /// The displacement components, or one of them.
+    /// The displacement components chosen (z: 3D only, held only when
+    /// named: a 2D pair (x, y) means those two in 3D as well).
+    template <int dim>
     inline ComponentMask
-    displacement_mask(const bool x = true, const bool y = true)
+    displacement_mask(const bool x, const bool y, const bool z = false)
     {
-      return ComponentMask({x, y, false, false});
+      std::vector<bool> mask(n_components<dim>, false);
+      mask[ux] = x;
+      mask[uy] = y;
+      if (dim == 3)
+        mask[uz] = z;
+      return ComponentMask(mask);
     }
 
-    /// The contact pressure.
+    /// Every displacement component.
+    template <int dim>
+    inline ComponentMask
+    displacement_mask()
+    {
+      return displacement_mask<dim>(true, true, true);
+    }
+
+    template <int dim>
     inline ComponentMask
     multiplier_mask()
     {
-      return ComponentMask({false, false, true, false});
+      std::vector<bool> mask(n_components<dim>, false);
+      mask[multiplier<dim>] = true;
+      return ComponentMask(mask);
     }
 
-    /// The contact pressure and the tangential traction: the unknowns of
-    /// the slave surface.
+    template <int dim>
     inline ComponentMask
     contact_mask()
     {
-      return ComponentMask({false, false, true, true});
+      std::vector<bool> mask(n_components<dim>, false);
+      mask[multiplier<dim>] = true;
+      mask[tangential<dim>] = true;
+      return ComponentMask(mask);
     }
   } // namespace Components
 } // namespace RingContact

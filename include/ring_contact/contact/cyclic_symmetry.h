@@ -81,8 +81,8 @@ namespace RingContact
     /// (invalid where the body has none) at both.
     struct NodePair
     {
-      std::array<types::global_dof_index, Components::n_components> end;
-      std::array<types::global_dof_index, Components::n_components> start;
+      std::array<types::global_dof_index, Components::n_components<dim>> end;
+      std::array<types::global_dof_index, Components::n_components<dim>> start;
     };
 
     /// Pair every node of the end side (boundary `end_side`) with its image

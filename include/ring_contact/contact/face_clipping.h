@@ -173,9 +173,17 @@ namespace RingContact
 
     /// The part of `subject` inside the convex polygon `window`, both
     /// counter-clockwise (Sutherland-Hodgman). A vertex counts as inside an
-    /// edge when it lies on its left or on it; consecutive vertices closer
-    /// than `tolerance` are merged, so that a vertex on an edge does not
-    /// become two.
+    /// edge when it lies on its left or on it, within `tolerance`;
+    /// consecutive vertices closer than `tolerance` are merged, so that a
+    /// vertex on an edge does not become two. The tolerance matters for
+    /// the derivatives: an edge of the subject that lies on a window edge
+    /// (the outer edges of two blocks, meshed alike there) has its two
+    /// ends at distances of round-off, one a hair outside, and the
+    /// crossing between them, t = d_p / (d_p - d_q), would have a
+    /// derivative of one over the round-off (measured: tangent entries of
+    /// 1e19 in the 3D patch test in finite strain, whose Newton test then
+    /// saw only noise); on the edge within the tolerance, both ends are
+    /// inside and there is no crossing.
     template <typename Number>
     std::vector<Vector2<Number>>
     clip(const std::vector<Vector2<Number>> &subject,
@@ -193,13 +201,19 @@ namespace RingContact
             return (b[0] - a[0]) * (p[1] - a[1]) -
                    (b[1] - a[1]) * (p[0] - a[0]);
           };
+          // The tolerance as a value of side(): a distance times the
+          // edge's length.
+          const double on_edge =
+            -tolerance *
+            std::hypot(value(b[0]) - value(a[0]), value(b[1]) - value(a[1]));
           std::vector<Vector2<Number>> kept;
           const unsigned int           m = polygon.size();
           for (unsigned int i = 0; i < m; ++i)
             {
               const Vector2<Number> &p = polygon[i], &q = polygon[(i + 1) % m];
               const Number           dp = side(p), dq = side(q);
-              const bool p_in = value(dp) >= 0, q_in = value(dq) >= 0;
+              const bool             p_in = value(dp) >= on_edge,
+                         q_in             = value(dq) >= on_edge;
               if (p_in)
                 kept.push_back(p);
               // The edge p-q crosses the line: the crossing, written in

@@ -150,6 +150,15 @@ namespace RingContact
     double
     gap_at(const types::global_dof_index multiplier_dof) const;
 
+    /// sqrt(int (p_h - p_ref)^2) / sqrt(int p_ref^2) over the slave
+    /// surface at `solution`, p_h the multiplier interpolated on the faces:
+    /// Cauchy (over the current surface) or nominal (lambda dA / dA_0 over
+    /// the reference one), as in 2D.
+    double
+    l2_relative_error(const Vector<double> &solution,
+                      const double          reference_pressure,
+                      const PressureMeasure measure) const;
+
     /// The most negative mean gap over the nodes at the last update() (a
     /// depth >= 0) and that node's reference position.
     std::pair<double, Point<3>>

@@ -80,6 +80,7 @@ namespace RingContact
   /// The equilibrium of every body (cells of one material id) and the
   /// action and reaction of every pair (`pair_bodies`: the slave's and the
   /// master's material ids; `measure_pairs` false for cyclic symmetry).
+  template <int dim>
   Balance
   measure_balance(
     const DoFHandler<dim>                                         &dof_handler,

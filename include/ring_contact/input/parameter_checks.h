@@ -182,6 +182,12 @@ namespace RingContact
                     const std::string &kind_of_name,
                     const bool         leading_letter);
 
+    /// An entry of two or three coordinates 'x, y' or 'x, y, z'.
+    std::vector<double>
+    coordinates_from_text(const std::string &text,
+                          const std::string &subsection,
+                          const std::string &entry);
+
     /// An entry of two coordinates 'x, y'.
     std::array<double, 2>
     point_from_text(const std::string &text,

@@ -267,6 +267,14 @@ namespace RingContact
     virtual unsigned int
     highest_displacement_degree() const = 0;
 
+    /// The space dimension of the problem the entries pose, 2 or 3 (after
+    /// finish()); 2 by default.
+    virtual unsigned int
+    dimension() const
+    {
+      return 2;
+    }
+
     /// The contact pairs after the one of subsection Contact (none by
     /// default): slave and master boundary tags.
     virtual std::vector<std::pair<unsigned int, unsigned int>>
@@ -314,7 +322,10 @@ namespace RingContact
 
     std::string prm_file;
     /// Problem/Scenario: the name of a registered scenario (scenario.h).
-    std::string             scenario;
+    std::string scenario;
+    /// The space dimension of the problem, 2 or 3: the scenario's
+    /// (ScenarioParameters::dimension()).
+    unsigned int            dimension = 2;
     MeshParameters          mesh;
     RefinementParameters    refinement;
     MaterialParameters      materials;
@@ -360,6 +371,11 @@ namespace RingContact
     /// a relative mesh path resolved), the others as comments with their
     /// defaults. Runnable: it reproduces the run.
     std::string used_parameters;
+
+    /// Refuse the entries a 3D problem cannot honour yet (friction,
+    /// adaptive refinement, a plane assumption, a 2D contact rule).
+    void
+    refuse_two_dimensional_entries() const;
 
     /// The message of a ParameterError with the file and line that set
     /// the entry (or the note that it is its default).

@@ -32,6 +32,7 @@ namespace RingContact
   {
     line                   = 3,
     quadrilateral          = 9,
+    hexahedron             = 12,
     lagrange_quadrilateral = 70
   };
 

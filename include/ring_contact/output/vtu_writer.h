@@ -10,7 +10,6 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/output/vtu_format.h>
 
@@ -29,7 +28,10 @@ namespace RingContact
   /// an array is written in double precision where one of its values would
   /// be lost in single (vtu_format.h). Every file is written under a
   /// temporary name and renamed, the VTU files first, then the PVD file
-  /// that lists them: a PVD on disk lists only whole VTU files.
+  /// that lists them: a PVD on disk lists only whole VTU files. In 3D the
+  /// cells are hexahedra (each subdivided into `subdivisions`^3 of them)
+  /// and the slave surface's faces quadrilaterals.
+  template <int dim>
   class VtuWriter
   {
   public:
@@ -58,14 +60,15 @@ namespace RingContact
     /// A face of a slave surface, in the order the file lists them (chain
     /// after chain, along each: ContactProblem::output_results()): whether
     /// it is walked from its second vertex to its first, whether it starts
-    /// a chain, and whether it closes one on itself.
+    /// a chain, and whether it closes one on itself (2D: a 3D surface's
+    /// faces are written each as its own quadrilaterals).
     struct SlaveFace
     {
-      DoFHandler<dim>::active_cell_iterator cell;
-      unsigned int                          face_no      = 0;
-      bool                                  reversed     = false;
-      bool                                  starts_chain = true;
-      bool                                  closes_chain = false;
+      typename DoFHandler<dim>::active_cell_iterator cell;
+      unsigned int                                   face_no      = 0;
+      bool                                           reversed     = false;
+      bool                                           starts_chain = true;
+      bool                                           closes_chain = false;
     };
 
     void

@@ -413,7 +413,7 @@ namespace RingContact
     output_results(const unsigned int step);
     /// The slave faces in the VTU file's order, along each chain of each
     /// slave surface; the arc length made at the first call.
-    std::vector<VtuWriter::SlaveFace>
+    std::vector<typename VtuWriter<dim>::SlaveFace>
     slave_faces_along_chains();
     /// The diagnostics before the first step (diagnostics/): the rigid
     /// motions that only the contact holds, surfaces that interpenetrate.
@@ -567,8 +567,8 @@ namespace RingContact
     Vector<double> previous_solution;
     LoadState      current_load;
 
-    std::vector<HistoryRow>    history_rows;
-    std::unique_ptr<VtuWriter> vtu_writer;
+    std::vector<HistoryRow>         history_rows;
+    std::unique_ptr<VtuWriter<dim>> vtu_writer;
     /// The reference arc length at the slave nodes, for the VTU files
     /// (made at the first output: the reference geometry does not change),
     /// and the same with each closed chain's start at the chain's length.

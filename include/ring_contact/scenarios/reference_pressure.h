@@ -40,12 +40,14 @@ namespace RingContact
 
     /// The lowest and the highest contact pressure over every contact node
     /// of every pair, open nodes included, in the reported measure.
+    template <int dim>
     std::pair<double, double>
     pressure_extremes(const SolutionState<dim> &state);
 
     /// Their values at a state: the pressure at the contact node nearest to
     /// `probe` against `reference` (NaN: none known), reported as
     /// `measure` says.
+    template <int dim>
     void
     report(const SolutionState<dim> &state,
            const Point<dim>         &probe,
@@ -83,11 +85,13 @@ namespace RingContact
     columns();
 
     /// The number of sliding nodes over every pair.
+    template <int dim>
     unsigned int
     n_slipping(const SolutionState<dim> &state);
 
     /// The tangential traction (Cauchy, the multiplier itself) at the
     /// contact node nearest to `probe`, and the number of sliding nodes.
+    template <int dim>
     void
     report(const SolutionState<dim> &state,
            const Point<dim>         &probe,
@@ -104,6 +108,7 @@ namespace RingContact
   /// test's uniform p). What it reports, prints, warns about and checks is
   /// the same for all of them, around the reference each gives: the
   /// functions of ReferencePressure and, with friction, of Friction.
+  template <int dim>
   class ReferencePressureScenario : public Scenario<dim>
   {
   public:

@@ -83,7 +83,14 @@ namespace RingContact
     PressureRamp    ramp;
     CheckParameters checks;
     /// Where the reported pressure is taken (the nearest slave node).
-    Point<dim> probe_point;
+    std::vector<double> probe;
+
+    /// The probe as a point of a `spacedim`-dimensional problem: a
+    /// ParameterError (Contact/Probe point) if the file gave it with
+    /// the other number of coordinates.
+    template <int spacedim>
+    Point<spacedim>
+    probe_point() const;
 
     /// Declare every entry, recorded in `declared`.
     void

@@ -238,6 +238,10 @@ namespace RingContact
     std::string                                          foreign_entry_hint;
     std::function<std::shared_ptr<ScenarioParameters>()> make_parameters;
     std::function<std::unique_ptr<Scenario<dim>>(const Parameters &)> make;
+    /// How it is made in 3D; empty for a scenario that is 2D only (the
+    /// rings, the cyclic sector).
+    std::function<std::unique_ptr<Scenario<3>>(const Parameters &)> make_3d =
+      {};
 
     /// Register a scenario: in its .cc file,
     ///   const ScenarioRegistration::Add registration{...};
@@ -251,8 +255,10 @@ namespace RingContact
   const std::vector<ScenarioRegistration> &
   registered_scenarios();
 
-  /// The scenario of the parameters.
-  std::unique_ptr<Scenario<dim>>
+  /// The scenario of the parameters, in `spacedim` dimensions; a scenario
+  /// that has no 3D form is refused in 3D.
+  template <int spacedim>
+  std::unique_ptr<Scenario<spacedim>>
   make_scenario(const Parameters &parameters);
 } // namespace RingContact
 

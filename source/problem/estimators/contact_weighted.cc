@@ -30,7 +30,7 @@ namespace RingContact
     std::pair<std::vector<Point<dim>>, double>
     faces_in_contact(const EstimatorInput &input)
     {
-      const FEValuesExtractors::Scalar pressure(Components::multiplier);
+      const FEValuesExtractors::Scalar pressure(Components::multiplier<dim>);
       // (centre, length, largest |multiplier|) of each slave face.
       std::vector<std::tuple<Point<dim>, double, double>> slave_faces;
       std::vector<double>                                 lambda;

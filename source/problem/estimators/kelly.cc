@@ -26,7 +26,7 @@ namespace RingContact
                                          {},
                                          input.solution,
                                          indicator,
-                                         Components::displacement_mask());
+                                         Components::displacement_mask<dim>());
     }
 
     // The registration line of the estimator: Mesh refinement/Estimator =

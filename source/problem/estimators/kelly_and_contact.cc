@@ -45,7 +45,7 @@ namespace RingContact
                      const FEFaceValues<dim> &fv)
     {
       const FEValuesExtractors::Vector displacement(0);
-      const FEValuesExtractors::Scalar pressure(Components::multiplier);
+      const FEValuesExtractors::Scalar pressure(Components::multiplier<dim>);
       std::vector<Tensor<2, dim>>      grad_u(fv.n_quadrature_points);
       std::vector<double>              lambda(fv.n_quadrature_points);
       fv[displacement].get_function_gradients(input.solution, grad_u);
@@ -96,7 +96,7 @@ namespace RingContact
           const double         length = along.norm();
           for (unsigned int end = 0; end < 2; ++end)
             slopes[face->vertex_index(end)].push_back(
-              {derivative(values, points, Components::multiplier, end) /
+              {derivative(values, points, Components::multiplier<dim>, end) /
                  (length * length) * along,
                cell->active_cell_index(),
                length,

@@ -83,7 +83,7 @@ namespace RingContact
         ImposedDisplacement(const BoundaryConditionParameters   &condition,
                             const std::map<std::string, double> &constants,
                             const double                         time)
-            : Function<dim>(Components::n_components, time)
+            : Function<dim>(Components::n_components<dim>, time)
             , condition(condition)
             , expression(make_expression(condition.expressions,
                                          constants,
@@ -118,14 +118,14 @@ namespace RingContact
               values(0) = u(0);
               values(1) = u(1);
             }
-          values(Components::multiplier) = 0;
+          values(Components::multiplier<dim>) = 0;
         }
 
         // deal.II's interpolation may ask for one component at a time.
         double
         value(const Point<dim> &X, const unsigned int component) const override
         {
-          Vector<double> values(Components::n_components);
+          Vector<double> values(Components::n_components<dim>);
           vector_value(X, values);
           return values(component);
         }
@@ -586,8 +586,8 @@ namespace RingContact
                   condition.boundary_id,
                   motion,
                   these,
-                  Components::displacement_mask(condition.components[0],
-                                                condition.components[1]));
+                  Components::displacement_mask<dim>(condition.components[0],
+                                                     condition.components[1]));
                 for (const auto &[dof, value] : these)
                   values[dof] = value;
               }

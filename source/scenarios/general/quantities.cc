@@ -355,7 +355,7 @@ namespace RingContact
       // finds the cell that holds the point there, so the value is that of
       // a material point, followed through the whole motion. Its error (a
       // point in no cell) becomes one line that names the check.
-      Vector<double> value(Components::n_components);
+      Vector<double> value(Components::n_components<dim>);
       try
         {
           VectorTools::point_value(state.get_mapping(),

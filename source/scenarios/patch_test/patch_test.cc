@@ -19,12 +19,19 @@
 // the spread of the nodal pressures: in small strain the pressure is p itself,
 // but in any kinematics the exact state is uniform, so the spread is zero
 // whatever the law, and the finite-strain variant of the test checks that too.
+//
+// With Dimension = 3 the blocks are [0, 1] x [-0.5, 0] x [0, 1] and
+// [0, 1] x [0, 0.5] x [0, 1], meshed n x 2 x n with the same n as in 2D,
+// and in uniaxial stress: each block shortens by H p / E (no plane factor).
+// Each block is held horizontally at two vertices of its outer face
+// (u_x = u_z = 0 at x = z = 0, u_z = 0 at x = 1, z = 0), which removes its
+// three rigid motions in the plane of the interface without resisting the
+// Poisson expansion.
 #include <deal.II/base/function.h>
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ring_contact/base/components.h>
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_mesh.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/scenarios/reference_pressure.h>
@@ -69,6 +76,14 @@ namespace RingContact
       double       youngs_modulus_lower, poissons_ratio_lower;
       double       youngs_modulus_upper, poissons_ratio_upper;
       unsigned int degree_lower, degree_upper;
+      /// 2 or 3 (Patch test/Dimension).
+      unsigned int space_dimension;
+
+      unsigned int
+      dimension() const override
+      {
+        return space_dimension;
+      }
 
       unsigned int
       highest_displacement_degree() const override
@@ -132,6 +147,13 @@ namespace RingContact
               1,
               4,
               "Polynomial degree of the displacement in the lower block.");
+        s.add("Dimension",
+              space_dimension,
+              "2",
+              2,
+              3,
+              "The space dimension: 2 (the blocks in the plane) or 3 (the "
+              "blocks as cubes, meshed n x 2 x n, first-order elements).");
         s.add("Displacement degree upper block",
               degree_upper,
               "1",
@@ -159,16 +181,43 @@ namespace RingContact
                 "Multiplier degree",
                 "must not exceed the displacement degree of the upper "
                 "(slave) block");
-        // The probe must be on the interface, 0 <= x <= 1, y = 0, or near. The
-        // default probe, the rings' (0.6, 0), lies on it.
-        const Point<dim> &x         = reference.probe_point;
-        const double      nearest_x = std::min(1.0, std::max(0.0, x[0]));
-        const double      distance  = Point<dim>(nearest_x, 0).distance(x);
+        // In 3D the faces are bilinear (the 3D contact's), and a probe the
+        // file leaves alone is at (0.6, 0, 0.5), on the interface.
+        if (space_dimension == 3)
+          {
+            require(degree_lower == 1 && degree_upper == 1,
+                    "Patch test",
+                    "Displacement degree upper block",
+                    "must be 1 with both blocks' in 3D (the 3D contact "
+                    "takes bilinear faces)");
+            if (parameters.origins.count(entry_key("Contact", "Probe point")) ==
+                0)
+              reference.probe = {0.6, 0, 0.5};
+          }
+        // The probe must be on the interface, 0 <= x (and z) <= 1, y = 0,
+        // or near. The default probe, the rings' (0.6, 0), lies on it.
+        const std::vector<double> x =
+          space_dimension == 2 ?
+            std::vector<double>{reference.probe_point<2>()[0],
+                                reference.probe_point<2>()[1]} :
+            std::vector<double>{reference.probe_point<3>()[0],
+                                reference.probe_point<3>()[1],
+                                reference.probe_point<3>()[2]};
+        double distance2 = x[1] * x[1];
+        for (const unsigned int d : {0u, 2u})
+          if (d < x.size())
+            {
+              const double nearest = std::min(1.0, std::max(0.0, x[d]));
+              distance2 += (x[d] - nearest) * (x[d] - nearest);
+            }
+        const double distance = std::sqrt(distance2);
+        std::string  text     = to_text(x[0]);
+        for (unsigned int d = 1; d < x.size(); ++d)
+          text += ", " + to_text(x[d]);
         require(distance <= 0.05,
                 "Contact",
                 "Probe point",
-                "(" + to_text(x[0]) + ", " + to_text(x[1]) +
-                  ") is not near the slave surface: it is " +
+                "(" + text + ") is not near the slave surface: it is " +
                   to_text(distance) + " m from it (at most 0.05 m accepted)");
         // A checked step beyond the ramp's last is a typo.
         reference.checks.check_steps(reference.ramp.steps);
@@ -196,6 +245,7 @@ namespace RingContact
     // the bottom (200) held vertically, the top (500) moved, the interface 300
     // on the lower block's side and 400 on the upper's, the vertical sides 0,
     // free.
+    template <int dim>
     void
     make_blocks(Triangulation<dim>        &triangulation,
                 const PatchTestParameters &blocks)
@@ -211,24 +261,43 @@ namespace RingContact
         // Vertices row by row, x fastest; each cell's vertices in deal.II's
         // lexicographic order (bottom left, bottom right, top left, top
         // right), which gives every cell a positive measure.
+        // In 3D the layers along z, nx of them, each as the 2D block.
         const unsigned int offset = vertices.size(), ny = 2;
-        for (unsigned int j = 0; j <= ny; ++j)
-          for (unsigned int i = 0; i <= nx; ++i)
-            vertices.emplace_back(1.0 * i / nx, y0 + 0.5 * j / ny);
-        for (unsigned int j = 0; j < ny; ++j)
-          for (unsigned int i = 0; i < nx; ++i)
-            {
-              CellData<dim> cell;
-              const auto v = [&](const unsigned int a, const unsigned int b) {
-                return offset + b * (nx + 1) + a;
-              };
-              cell.vertices    = {v(i, j),
-                                  v(i + 1, j),
-                                  v(i, j + 1),
-                                  v(i + 1, j + 1)};
-              cell.material_id = material_id;
-              cells.push_back(cell);
-            }
+        const unsigned int nz = dim == 3 ? nx : 0;
+        for (unsigned int k = 0; k <= nz; ++k)
+          for (unsigned int j = 0; j <= ny; ++j)
+            for (unsigned int i = 0; i <= nx; ++i)
+              {
+                Point<dim> x;
+                x[0] = 1.0 * i / nx;
+                x[1] = y0 + 0.5 * j / ny;
+                if constexpr (dim == 3)
+                  x[2] = 1.0 * k / nz;
+                vertices.push_back(x);
+              }
+        const auto v = [&](const unsigned int a,
+                           const unsigned int b,
+                           const unsigned int c) {
+          return offset + (c * (ny + 1) + b) * (nx + 1) + a;
+        };
+        for (unsigned int k = 0; k < std::max(nz, 1u); ++k)
+          for (unsigned int j = 0; j < ny; ++j)
+            for (unsigned int i = 0; i < nx; ++i)
+              {
+                CellData<dim> cell;
+                cell.vertices = {v(i, j, k),
+                                 v(i + 1, j, k),
+                                 v(i, j + 1, k),
+                                 v(i + 1, j + 1, k)};
+                if constexpr (dim == 3)
+                  for (const unsigned int top : {v(i, j, k + 1),
+                                                 v(i + 1, j, k + 1),
+                                                 v(i, j + 1, k + 1),
+                                                 v(i + 1, j + 1, k + 1)})
+                    cell.vertices.push_back(top);
+                cell.material_id = material_id;
+                cells.push_back(cell);
+              }
       };
       add_block(-0.5, blocks.elements_lower, Ids::lower_block);
       add_block(0.0, blocks.elements_upper, Ids::upper_block);
@@ -259,7 +328,8 @@ namespace RingContact
     // The blocks pressed together by an imposed shortening, reported and
     // checked as the rings are (reference_pressure.cc) with the uniform p as
     // the reference.
-    class PatchTest : public ReferencePressureScenario
+    template <int dim>
+    class PatchTest : public ReferencePressureScenario<dim>
     {
     public:
       // `blocks` refers to the scenario's entries, which the copy of the
@@ -276,11 +346,15 @@ namespace RingContact
       {
         // The size is checked before the blocks exist: the elements along each
         // block go up to 100000 and each refinement multiplies the cells by 4.
+        const std::size_t layers = dim == 3 ? 1 : 0;
         Geometry::check_size<dim>(
-          2 * (blocks.elements_lower + blocks.elements_upper),
+          2 * (blocks.elements_lower *
+                 (layers * blocks.elements_lower + 1 - layers) +
+               blocks.elements_upper *
+                 (layers * blocks.elements_upper + 1 - layers)),
           std::max(blocks.degree_lower, blocks.degree_upper),
           parameters.mesh.global_refinements);
-        make_blocks(triangulation, blocks);
+        make_blocks<dim>(triangulation, blocks);
         // Refined without a manifold: the blocks' edges stay straight. The size
         // check above assumed the higher degree for both blocks, erring on the
         // safe side.
@@ -331,8 +405,9 @@ namespace RingContact
       {
         const auto &m       = parameters.materials;
         const auto  modulus = [&](const double E, const double nu) {
-          return m.plane == PlaneAssumption::plane_stress ? E :
-                                                             E / (1 - nu * nu);
+          return dim == 3 || m.plane == PlaneAssumption::plane_stress ?
+                    E :
+                    E / (1 - nu * nu);
         };
         // The exact solution is uniaxial: sigma_yy = -p in both blocks and
         // sigma_xx = 0 (free sides), so each block of height H = 0.5 m shortens
@@ -351,22 +426,23 @@ namespace RingContact
         // constraints; only the shortening changes with p.
         std::map<types::global_dof_index, double> values;
         const ComponentMask                       vertical =
-          Components::displacement_mask(false, true);
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 Ids::bottom,
-                                                 Functions::ZeroFunction<dim>(
-                                                   Components::n_components),
-                                                 values,
-                                                 vertical);
+          Components::displacement_mask<dim>(false, true);
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          Ids::bottom,
+          Functions::ZeroFunction<dim>(Components::n_components<dim>),
+          values,
+          vertical);
         // The top's function has as many components as the finite element (u_x,
         // u_y and the two multipliers): deal.II checks the count in Debug mode.
+        std::vector<double> top(Components::n_components<dim>, 0.);
+        top[Components::uy] = -shortening;
         VectorTools::interpolate_boundary_values(
           mapping,
           dof_handler,
           Ids::top,
-          Functions::ConstantFunction<dim>(
-            std::vector<double>{0, -shortening, 0, 0}), // u, the multipliers
+          Functions::ConstantFunction<dim>(top), // u, the multipliers
           values,
           vertical);
         // Horizontally each block is held at one vertex, its outer left corner,
@@ -375,12 +451,28 @@ namespace RingContact
         // remove, and one point removes it without resisting the Poisson
         // expansion: the blocks expand sideways by different amounts when their
         // materials differ, and slide against each other along the interface.
+        // In 3D at two vertices of the block's outer face, (0, +-0.5, 0)
+        // held in x and z, (1, +-0.5, 0) in z: no rigid motion in the
+        // interface's plane, the expansion u_x = e x, u_z = e z free.
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
-            if (std::abs(cell->vertex(v)[0]) < 1e-12 &&
-                std::abs(std::abs(cell->vertex(v)[1]) - 0.5) < 1e-12)
-              values[cell->vertex_dof_index(
-                v, Components::ux, cell->active_fe_index())] = 0;
+            {
+              const Point<dim> &x     = cell->vertex(v);
+              const auto        index = [&](const unsigned int c) {
+                return cell->vertex_dof_index(v, c, cell->active_fe_index());
+              };
+              if (std::abs(std::abs(x[1]) - 0.5) > 1e-12 ||
+                  std::abs(x[dim - 1] * (dim - 2)) > 1e-12)
+                continue;
+              if (std::abs(x[0]) < 1e-12)
+                {
+                  values[index(Components::ux)] = 0;
+                  if constexpr (dim == 3)
+                    values[index(Components::uz)] = 0;
+                }
+              else if (dim == 3 && std::abs(x[0] - 1) < 1e-12)
+                values[index(Components::uz)] = 0;
+            }
         // No normal conditions: every held unknown is fixed whole.
         return {values, {}};
       }
@@ -425,7 +517,10 @@ namespace RingContact
       "",
       []() { return std::make_shared<PatchTestParameters>(); },
       [](const Parameters &parameters) {
-        return std::make_unique<PatchTest>(parameters);
+        return std::make_unique<PatchTest<2>>(parameters);
+      },
+      [](const Parameters &parameters) {
+        return std::make_unique<PatchTest<3>>(parameters);
       }}};
   } // namespace
 } // namespace RingContact

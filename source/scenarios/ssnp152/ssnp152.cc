@@ -277,7 +277,7 @@ namespace RingContact
       // (Before, such a file was refused: the default probe point was no
       // longer near the slave surface.)
       if (parameters.origins.count(entry_key("Contact", "Probe point")) == 0)
-        reference.probe_point = Point<dim>(interface_radius, 0);
+        reference.probe = {interface_radius, 0};
       check_geometry(parameters);
       // The rings' load states carry a pressure and a rotation, which only
       // the ramp and the rotation program give.
@@ -423,9 +423,9 @@ namespace RingContact
       // distance is radial, and 5 % of R2 accepts any point meant to be on
       // the interface, not one meant elsewhere.
       {
-        const Point<dim> &x = reference.probe_point;
-        double            distance;
-        double            scale;
+        const Point<dim> x = reference.probe_point<dim>();
+        double           distance;
+        double           scale;
         distance = std::abs(x.norm() - interface_radius);
         scale    = interface_radius;
         require(distance <= 0.05 * scale,
@@ -487,7 +487,7 @@ namespace RingContact
     // (evaluated at each load state's pressure), and the load program.
     namespace
     {
-      class Rings : public ReferencePressureScenario
+      class Rings : public ReferencePressureScenario<dim>
       {
       public:
         // The closed form is made once: its constants depend on the radii,
@@ -618,10 +618,10 @@ namespace RingContact
           // too; the mask of the interpolation picks the displacement.
           const BoundaryMotion outer(analytic.f_R1(load("pressure")),
                                      0.0,
-                                     Components::n_components);
+                                     Components::n_components<dim>);
           const BoundaryMotion inner(analytic.f_R3(load("pressure")),
                                      angle,
-                                     Components::n_components);
+                                     Components::n_components<dim>);
           const std::map<types::boundary_id, const Function<dim> *> motion = {
             {Ids::outer_boundary, &outer}, {Ids::inner_boundary, &inner}};
           // Interpolated at the support points of the boundaries' unknowns
@@ -632,7 +632,7 @@ namespace RingContact
             dof_handler,
             motion,
             values,
-            Components::displacement_mask());
+            Components::displacement_mask<dim>());
           return {values, {}};
         }
 
