@@ -130,7 +130,7 @@ main()
     check(p.contact.schemes.empty() &&
             printed_default("Contact", "Integration schemes") == "automatic",
           "list default");
-    check(rings(p).reference.probe_point.distance(Point<2>(0.6, 0)) == 0,
+    check(rings(p).reference.probe_point<2>().distance(Point<2>(0.6, 0)) == 0,
           "point default");
     check(rings(p).reference.checks.every_step &&
             rings(p).reference.checks.steps.empty(),
@@ -182,7 +182,7 @@ main()
             p.contact.schemes[1].name() == "Gauss 3",
           "list");
     const ReferencePressureEntries &reference = rings(p).reference;
-    check(reference.probe_point.distance(Point<2>(0.6, 0.01)) == 0, "point");
+    check(reference.probe_point<2>().distance(Point<2>(0.6, 0.01)) == 0, "point");
     check(!reference.checks.every_step && reference.checks.steps.size() == 2 &&
             reference.checks.steps[1] == 3,
           "steps");

@@ -100,11 +100,11 @@ namespace RingContact
         // support acts.
         std::map<types::material_id, Frame>           frames;
         std::map<types::global_dof_index, Point<dim>> support_points;
-        DoFTools::map_dofs_to_support_points(
-          mapping_collection,
-          dof_handler,
-          support_points,
-          Components::displacement_mask<dim>());
+        const ComponentMask u = Components::displacement_mask<dim>();
+        DoFTools::map_dofs_to_support_points(mapping_collection,
+                                             dof_handler,
+                                             support_points,
+                                             u);
         // The unknowns imposed whole, and the nodes (their u_x) of the normal
         // conditions. A normal condition's constrained unknown is in
         // `imposed_dofs` too (constraints.cc), but it fixes N . u only, not
@@ -204,7 +204,6 @@ namespace RingContact
                   held_by_contact.insert(body.material_id);
                 }
           }
-
         return frames;
       }
 

@@ -283,9 +283,8 @@ namespace RingContact
 
   // What a 3D problem does not have yet, each refused with the entry that
   // asks for it: friction (frictionless 3D contact, its friction the next
-  // step), adaptive refinement, the iterative solver (its preconditioner's
-  // blocks and rigid modes are 2D), the plane assumption (a 3D body has
-  // none), and the Newton-Cotes rules of the 2D segments (the 3D schemes are
+  // step), adaptive refinement, the plane assumption (a 3D body has none),
+  // and the Newton-Cotes rules of the 2D segments (the 3D schemes are
   // segment-based, nodal and Gauss n x n).
   void
   Parameters::refuse_two_dimensional_entries() const
@@ -299,11 +298,6 @@ namespace RingContact
             "Mesh refinement",
             "Adaptive cycles",
             "must be 0 in 3D: adaptive refinement is 2D only so far");
-    require(newton.linear_solver != LinearSolverType::iterative,
-            "Newton",
-            "Linear solver",
-            "= iterative is 2D only so far (its preconditioner knows the 2D "
-            "rigid-body modes): in 3D take auto, UMFPACK or MUMPS");
     require(origins.count("Materials/Plane assumption") == 0,
             "Materials",
             "Plane assumption",

@@ -496,6 +496,42 @@ namespace RingContact
       system->add_cell(cell, update_constraints(), matrix, rhs, dofs);
   }
 
+  namespace
+  {
+    // cof(G) = det(G) G^-T, in two dimensions [[G11, -G10], [-G01, G00]]:
+    // linear in G, so that cof(I + Grad u) = I + cof(Grad u) and its
+    // derivative along phi_j is cof(Grad phi_j), exactly. In three it is
+    // quadratic, cof(F + G) = cof(F) + cof'(F)[G] + cof(G), which gives the
+    // derivative exactly from three cofactors (deal.II's).
+    template <int dim>
+    Tensor<2, dim>
+    cof(const Tensor<2, dim> &G)
+    {
+      if constexpr (dim == 2)
+        {
+          Tensor<2, dim> C;
+          C[0][0] = G[1][1];
+          C[0][1] = -G[1][0];
+          C[1][0] = -G[0][1];
+          C[1][1] = G[0][0];
+          return C;
+        }
+      else
+        return cofactor(G);
+    }
+
+    /// The derivative of cof at F along G.
+    template <int dim>
+    Tensor<2, dim>
+    cof_derivative(const Tensor<2, dim> &F, const Tensor<2, dim> &G)
+    {
+      if constexpr (dim == 2)
+        return cof(G);
+      else
+        return Tensor<2, dim>(cof(F + G) - cof(F) - cof(G));
+    }
+  } // namespace
+
   // @sect4{The boundary loads}
   //
   // The scenario's boundary loads.
@@ -516,31 +552,6 @@ namespace RingContact
     applied_resultant.clear();
     if (boundary_loads.empty())
       return;
-    // cof(G) = det(G) G^-T, in two dimensions [[G11, -G10], [-G01, G00]]:
-    // linear in G, so that cof(I + Grad u) = I + cof(Grad u) and its
-    // derivative along phi_j is cof(Grad phi_j), exactly. In three it is
-    // quadratic, cof(F + G) = cof(F) + cof'(F)[G] + cof(G), which gives the
-    // derivative exactly from three cofactors (deal.II's).
-    const auto cof = [](const Tensor<2, dim> &G) {
-      if constexpr (dim == 2)
-        {
-          Tensor<2, dim> C;
-          C[0][0] = G[1][1];
-          C[0][1] = -G[1][0];
-          C[1][0] = -G[0][1];
-          C[1][1] = G[0][0];
-          return C;
-        }
-      else
-        return cofactor(G);
-    };
-    const auto cof_derivative = [&](const Tensor<2, dim> &F,
-                                    const Tensor<2, dim> &G) {
-      if constexpr (dim == 2)
-        return cof(G);
-      else
-        return Tensor<2, dim>(cof(F + G) - cof(F) - cof(G));
-    };
     // p + 1 Gauss points on the faces of an element of degree p (the
     // FESystem's degree is its displacement's, which the multiplier's does
     // not exceed).

@@ -347,12 +347,12 @@ namespace RingContact
         // the multipliers (pressure and tangential traction).
         std::vector<BlockSolver::Kind> kinds(dof_handler.n_dofs(),
                                              BlockSolver::multiplier);
-        for (const auto i : DoFTools::extract_dofs(
-               dof_handler, Components::displacement_mask<dim>(true, false)))
-          kinds[i] = BlockSolver::displacement_x;
-        for (const auto i : DoFTools::extract_dofs(
-               dof_handler, Components::displacement_mask<dim>(false, true)))
-          kinds[i] = BlockSolver::displacement_y;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (const auto i : DoFTools::extract_dofs(
+                 dof_handler,
+                 Components::displacement_mask<dim>(d == 0, d == 1, d == 2)))
+            kinds[i] =
+              static_cast<BlockSolver::Kind>(BlockSolver::displacement_x + d);
         // The reference position of each displacement unknown, through
         // the bodies' mappings; the multipliers keep the origin, which the
         // preconditioner does not read.
