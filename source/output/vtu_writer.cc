@@ -234,23 +234,6 @@ namespace RingContact
 
     // @sect4{The slave surfaces}
     //
-    // The faces of the slave surfaces in the order the problem gives them:
-    // chain after chain, each in the order its arc length runs, so that a
-    // plot over the arc length (ParaView's Plot Data, which joins the
-    // points in the file's order) draws the curve; the faces used to come
-    // in the order of the cells, which on a gmsh mesh is no order along
-    // the surface, and the plot was a zigzag. Consecutive faces of a chain
-    // share their point; the face that closes a chain on itself ends at a
-    // point of its own, where the arc length is the chain's length.
-    //
-    // Each face is n straight segments (a curved face subdivided). On them
-    // the displacement, the contact pressure and the tangential traction
-    // (zero without friction), and the nodal fields the problem hands over
-    // (the gap, the arc length), stored in the multiplier component of a
-    // vector of the unknowns: they belong to the multiplier's nodes and are
-    // interpolated like the pressure. The pressure is written here only: in
-    // the bulk it would be a field falling to zero across the layer of
-    // slave cells.
     // A 3D slave surface: each face as n x n quadrilaterals on its own
     // (n + 1)^2 points (no chains: a surface has no order to plot along),
     // with the displacement, the contact pressure, and the nodal fields the
@@ -316,6 +299,23 @@ namespace RingContact
       return grid;
     }
 
+    // The faces of the slave surfaces in the order the problem gives them:
+    // chain after chain, each in the order its arc length runs, so that a
+    // plot over the arc length (ParaView's Plot Data, which joins the
+    // points in the file's order) draws the curve; the faces used to come
+    // in the order of the cells, which on a gmsh mesh is no order along
+    // the surface, and the plot was a zigzag. Consecutive faces of a chain
+    // share their point; the face that closes a chain on itself ends at a
+    // point of its own, where the arc length is the chain's length.
+    //
+    // Each face is n straight segments (a curved face subdivided). On them
+    // the displacement, the contact pressure and the tangential traction
+    // (zero without friction), and the nodal fields the problem hands over
+    // (the gap, the arc length), stored in the multiplier component of a
+    // vector of the unknowns: they belong to the multiplier's nodes and are
+    // interpolated like the pressure. The pressure is written here only: in
+    // the bulk it would be a field falling to zero across the layer of
+    // slave cells.
     template <int dim>
     VtuGrid
     slave_surface_grid(

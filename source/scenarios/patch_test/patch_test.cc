@@ -188,8 +188,8 @@ namespace RingContact
             require(degree_lower == 1 && degree_upper == 1,
                     "Patch test",
                     "Displacement degree upper block",
-                    "must be 1 with both blocks' in 3D (the 3D contact "
-                    "takes bilinear faces)");
+                    "must be 1 in 3D, as must the lower block's (the 3D "
+                    "contact takes bilinear faces)");
             if (parameters.origins.count(entry_key("Contact", "Probe point")) ==
                 0)
               reference.probe = {0.6, 0, 0.5};
