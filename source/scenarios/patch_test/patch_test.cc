@@ -185,11 +185,14 @@ namespace RingContact
         // file leaves alone is at (0.6, 0, 0.5), on the interface.
         if (space_dimension == 3)
           {
-            require(degree_lower == 1 && degree_upper == 1,
-                    "Patch test",
-                    "Displacement degree upper block",
-                    "must be 1 in 3D, as must the lower block's (the 3D "
-                    "contact takes bilinear faces)");
+            for (const auto &[degree, block] :
+                 {std::make_pair(degree_lower, "lower"),
+                  std::make_pair(degree_upper, "upper")})
+              require(degree == 1,
+                      "Patch test",
+                      std::string("Displacement degree ") + block + " block",
+                      "must be 1 in 3D (the 3D contact takes bilinear "
+                      "faces)");
             if (parameters.origins.count(entry_key("Contact", "Probe point")) ==
                 0)
               reference.probe = {0.6, 0, 0.5};
