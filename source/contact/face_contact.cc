@@ -87,6 +87,7 @@ namespace RingContact
             local.resize(fe.n_dofs_per_cell());
             cell->get_dof_indices(local);
             FaceContact::Face face;
+            face.body = cell->material_id();
             for (unsigned int v = 0; v < 4; ++v)
               {
                 const unsigned int cv =

@@ -2,7 +2,8 @@
 //
 // What is checked and said is in rigid_body_modes.h; here is how. A body's
 // rigid motions are u = a + w e_z x (X - X_c): two translations and a rotation,
-// three numbers. A support fixes one direction e at one point X, the
+// three numbers (in 3D u = a + w x (X - X_c), three translations and three
+// rotations, six). A support fixes one direction e at one point X, the
 // linear condition e . u(X) = 0 on them: one row of a matrix M with three
 // columns per body, whose null space is the motions that no support
 // fixes. A frictionless contact adds, at each slave point, the normal
@@ -25,7 +26,6 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <ring_contact/base/components.h>
-#include <ring_contact/base/dimension.h>
 #include <ring_contact/diagnostics/rigid_body_modes.h>
 
 #include <algorithm>
@@ -43,6 +43,68 @@ namespace RingContact
   {
     namespace
     {
+      /// The number of rigid modes of a body: 3 in 2D, 6 in 3D.
+      template <int dim>
+      constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
+
+      /// The row of the direction e at r = X - X_c in a body's rigid modes:
+      /// e . u(X) = e . a + w . (r x e), so e, then r x e over the body's
+      /// size (the rotation's column a length like the translations'); in
+      /// 2D w = w e_z and r x e its z component, -e_x r_y + e_y r_x.
+      template <int dim>
+      std::array<double, n_modes<dim>>
+      mode_row(const Tensor<1, dim> &e,
+               const Tensor<1, dim> &r,
+               const double          size)
+      {
+        if constexpr (dim == 2)
+          return {{e[0], e[1], (-e[0] * r[1] + e[1] * r[0]) / size}};
+        else
+          {
+            const Tensor<1, 3> t = cross_product_3d(r, e) / size;
+            return {{e[0], e[1], e[2], t[0], t[1], t[2]}};
+          }
+      }
+
+      /// A 3D mode in words: a translation, or a rotation about an axis
+      /// (the point of the axis nearest to the body's centre, P = X_c +
+      /// w x a / |w|^2), its sign chosen so that the first component of
+      /// the direction named that is not zero is positive.
+      std::string
+      describe_mode_3d(const Tensor<1, 6> &mode,
+                       const Point<3>     &centre,
+                       const double        size)
+      {
+        Tensor<1, 3> a, w;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            a[d] = mode[d];
+            w[d] = mode[3 + d] / size;
+          }
+        const bool          rotation  = w.norm() * size >= 1e-6;
+        const Tensor<1, 3> &direction = rotation ? w : a;
+        double              sign      = 1;
+        for (unsigned int d = 0; d < 3; ++d)
+          if (std::abs(direction[d]) > 1e-12)
+            {
+              sign = direction[d] < 0 ? -1 : 1;
+              break;
+            }
+        const auto shown = [&](const Tensor<1, 3> &v, const double scale) {
+          std::ostringstream text;
+          text << std::setprecision(3) << "(";
+          for (unsigned int d = 0; d < 3; ++d)
+            text << (d > 0 ? ", " : "")
+                 << (std::abs(v[d]) < 1e-12 ? 0.0 : scale * v[d]);
+          return text.str() + ")";
+        };
+        if (!rotation)
+          return "the translation along " + shown(a / a.norm(), sign);
+        const Point<3> P = centre + cross_product_3d(w, a) / w.norm_square();
+        return "a rotation about the axis along " + shown(w / w.norm(), sign) +
+               " through " + shown(Tensor<1, 3>(P), 1);
+      }
+
       // A mode (translation x, y, rotation scaled by the size) in words.
       // An eigenvector's sign is arbitrary: the translation is turned to
       // point along +x (or +y when it has no x part), so that the message
@@ -51,7 +113,7 @@ namespace RingContact
       // and w = mode[2] / size, P = X_c + (-a_y, a_x) / w.
       std::string
       describe_mode(const Tensor<1, 3> &mode,
-                    const Point<dim>   &centre,
+                    const Point<2>     &centre,
                     const double        size)
       {
         std::ostringstream what;
@@ -75,18 +137,64 @@ namespace RingContact
 
       // A body's centre and size (the rotation's scale) and the matrix of
       // its supports' constraints on its rigid modes.
+      template <int dim>
       struct Frame
       {
-        Point<dim>            centre;
-        double                size;
-        SymmetricTensor<2, 3> G;
+        Point<dim>                       centre;
+        double                           size;
+        SymmetricTensor<2, n_modes<dim>> G;
       };
+
+      /// The eigenvalues of G, from the largest, with their eigenvectors:
+      /// deal.II's for 3 x 3 (2D), LAPACK's singular value decomposition
+      /// of the symmetric positive semi-definite 6 x 6 (3D).
+      template <int dim>
+      std::vector<std::pair<double, Tensor<1, n_modes<dim>>>>
+      mode_eigenpairs(const SymmetricTensor<2, n_modes<dim>> &G)
+      {
+        if constexpr (dim == 2)
+          {
+            const auto pairs = eigenvectors(G);
+            return {pairs.begin(), pairs.end()};
+          }
+        else
+          {
+            constexpr unsigned int   n = n_modes<dim>;
+            LAPACKFullMatrix<double> M(n, n);
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                M(i, j) = G[i][j];
+            M.compute_svd();
+            std::vector<std::pair<double, Tensor<1, n>>> pairs(n);
+            for (unsigned int m = 0; m < n; ++m)
+              {
+                pairs[m].first = M.singular_value(m);
+                for (unsigned int i = 0; i < n; ++i)
+                  pairs[m].second[i] = M.get_svd_vt()(m, i);
+              }
+            return pairs;
+          }
+      }
+
+      /// A mode of a body in words, in either dimension.
+      template <int dim>
+      std::string
+      describe(const Tensor<1, n_modes<dim>> &mode,
+               const Point<dim>              &centre,
+               const double                   size)
+      {
+        if constexpr (dim == 2)
+          return describe_mode(mode, centre, size);
+        else
+          return describe_mode_3d(mode, centre, size);
+      }
 
       // Per body, G = M^T M, M the rigid modes (translation x, y, rotation
       // scaled by the body's size) along the directions its supports hold:
       // its null space is the free motions, each noted in `log`. The bodies
       // some motion leaves free go into `held_by_contact`.
-      std::map<types::material_id, Frame>
+      template <int dim>
+      std::map<types::material_id, Frame<dim>>
       body_frames(const DoFHandler<dim>            &dof_handler,
                   const hp::MappingCollection<dim> &mapping_collection,
                   const std::vector<Body<dim>>     &bodies,
@@ -98,7 +206,7 @@ namespace RingContact
       {
         // The reference position of each displacement unknown: where its
         // support acts.
-        std::map<types::material_id, Frame>           frames;
+        std::map<types::material_id, Frame<dim>>      frames;
         std::map<types::global_dof_index, Point<dim>> support_points;
         const ComponentMask u = Components::displacement_mask<dim>();
         DoFTools::map_dofs_to_support_points(mapping_collection,
@@ -127,7 +235,7 @@ namespace RingContact
             std::vector<std::pair<Point<dim>, Tensor<1, dim>>> fixed;
             std::vector<types::global_dof_index>               dofs;
             // One pass over the body's cells: its bounding box from the
-            // vertices (`first` stays true until both coordinates of the
+            // vertices (`first` stays true until all coordinates of the
             // first vertex are in), and its supported directions from the
             // unknowns. A vertex shared by cells gives the same row twice,
             // which only weighs it more in G and changes no null space.
@@ -140,7 +248,7 @@ namespace RingContact
                         const double x = cell->vertex(v)[d];
                         lower[d]       = first ? x : std::min(lower[d], x);
                         upper[d]       = first ? x : std::max(upper[d], x);
-                        first          = first && d == 0;
+                        first          = first && d + 1 < dim;
                       }
                   dofs.resize(cell->get_fe().n_dofs_per_cell());
                   cell->get_dof_indices(dofs);
@@ -167,39 +275,32 @@ namespace RingContact
             // measured: near the body, so that its column does not mix a
             // large translation into the rotation.
             const Point<dim> centre = 0.5 * (lower + upper);
-            const double     size =
-              std::max(upper[0] - lower[0], upper[1] - lower[1]);
-            // G = M^T M, M the rigid modes (translation x, y, rotation scaled
+            double           size   = upper[0] - lower[0];
+            for (unsigned int d = 1; d < dim; ++d)
+              size = std::max(size, upper[d] - lower[d]);
+            // G = M^T M, M the rigid modes (translations, rotations scaled
             // by the body's size) along the imposed directions e: its null
-            // space is the free motions. The row of e at X is
-            // e . u(X) = e . a + w e . (e_z x r) with r = X - X_c, and
-            // e . (e_z x r) = -e_x r_y + e_y r_x.
-            SymmetricTensor<2, 3> G;
+            // space is the free motions (mode_row()).
+            SymmetricTensor<2, n_modes<dim>> G;
             for (const auto &[X, e] : fixed)
               {
-                const Tensor<1, dim> r      = X - centre;
-                const double         row[3] = {e[0],
-                                               e[1],
-                                               (-e[0] * r[1] + e[1] * r[0]) / size};
-                for (unsigned int i = 0; i < 3; ++i)
-                  for (unsigned int j = i; j < 3; ++j)
+                const auto row = mode_row<dim>(e, X - centre, size);
+                for (unsigned int i = 0; i < n_modes<dim>; ++i)
+                  for (unsigned int j = i; j < n_modes<dim>; ++j)
                     G[i][j] += row[i] * row[j];
               }
-            const auto describe = [&](const Tensor<1, 3> &mode) {
-              return describe_mode(mode, centre, size);
-            };
             frames[body.material_id] = {centre, size, G};
             // G's eigenvalues come sorted from the largest. A body without
-            // any support (no row: G = 0) has all three motions free, each
+            // any support (no row: G = 0) has all its motions free, each
             // said.
-            const auto   modes   = eigenvectors(G);
+            const auto   modes   = mode_eigenpairs<dim>(G);
             const double largest = std::max(modes[0].first, 1e-300);
             for (const auto &[value, mode] : modes)
               if (value <= 1e-10 * largest || fixed.empty())
                 {
                   log << "Note: " << body.name << " (material "
                       << body.material_id << "): no imposed displacement fixes "
-                      << describe(mode)
+                      << describe<dim>(mode, centre, size)
                       << "; only the contact holds it there\n";
                   held_by_contact.insert(body.material_id);
                 }
@@ -211,20 +312,17 @@ namespace RingContact
       // the relative normal motion of the two bodies' rigid modes, which a
       // frictionless contact resists and nothing else.
       void
-      add_contact_rows(
-        const std::map<types::material_id, Frame>        &frames,
-        std::map<types::material_id, unsigned int>       &column,
-        const std::vector<const ContactInterface<dim> *> &contacts,
-        LAPACKFullMatrix<double>                         &H)
+      add_contact_rows(const std::map<types::material_id, Frame<2>>   &frames,
+                       std::map<types::material_id, unsigned int>     &column,
+                       const std::vector<const ContactInterface<2> *> &contacts,
+                       LAPACKFullMatrix<double>                       &H)
       {
         // n . u(x) of a body's rigid modes, as the row of a support above.
-        const auto mode_row = [&](const types::material_id id,
-                                  const Point<dim>        &x,
-                                  const Tensor<1, dim>    &n) {
-          const Frame         &frame = frames.at(id);
-          const Tensor<1, dim> r     = x - frame.centre;
-          return std::array<double, 3>{
-            {n[0], n[1], (-n[0] * r[1] + n[1] * r[0]) / frame.size}};
+        const auto row_of = [&](const types::material_id id,
+                                const Point<2>          &x,
+                                const Tensor<1, 2>      &n) {
+          const Frame<2> &frame = frames.at(id);
+          return mode_row<2>(n, x - frame.centre, frame.size);
         };
         for (const auto &contact : contacts)
           {
@@ -261,11 +359,10 @@ namespace RingContact
                     // matter, the row enters H squared. The row is the
                     // relative normal motion: the slave's modes minus the
                     // master's, both evaluated at the same point.
-                    const Tensor<1, dim> n(
-                      {p.dx[1] / length, -p.dx[0] / length});
+                    const Tensor<1, 2> n({p.dx[1] / length, -p.dx[0] / length});
                     std::vector<std::pair<unsigned int, double>> row;
-                    const auto a = mode_row(s_id, p.x, n);
-                    const auto b = mode_row(m_id, p.x, n);
+                    const auto a = row_of(s_id, p.x, n);
+                    const auto b = row_of(m_id, p.x, n);
                     for (unsigned int i = 0; i < 3; ++i)
                       {
                         row.emplace_back(column[s_id] + i, a[i]);
@@ -279,6 +376,78 @@ namespace RingContact
           }
       }
 
+      // The same in 3D: at the vertices and the centre of every slave
+      // face (on a bilinear face the normal turns between them), the
+      // relative normal motion of the slave face's body and of the body of
+      // the master face nearest to the point, both in the reference
+      // configuration.
+      void
+      add_contact_rows(const std::map<types::material_id, Frame<3>>   &frames,
+                       std::map<types::material_id, unsigned int>     &column,
+                       const std::vector<const ContactInterface<3> *> &contacts,
+                       LAPACKFullMatrix<double>                       &H)
+      {
+        const auto point = [](const FaceContact::Face &face,
+                              const unsigned int       v) {
+          return Point<3>(face.reference[v][0],
+                          face.reference[v][1],
+                          face.reference[v][2]);
+        };
+        for (const auto &contact : contacts)
+          {
+            const auto           &faces = contact->faces();
+            std::vector<Point<3>> centres;
+            for (const auto &face : faces.master_faces())
+              centres.push_back((point(face, 0) + point(face, 1) +
+                                 point(face, 2) + point(face, 3)) /
+                                4.);
+            for (const auto &face : faces.slave_faces())
+              for (const auto &[xi, eta] :
+                   std::vector<std::pair<double, double>>{
+                     {0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.5, 0.5}})
+                {
+                  // The bilinear face (lexicographic vertices) and its
+                  // tangents at (xi, eta).
+                  const Point<3> x0 = point(face, 0), x1 = point(face, 1),
+                                 x2 = point(face, 2), x3 = point(face, 3);
+                  const Point<3> x =
+                    Point<3>((1 - xi) * (1 - eta) * x0 + xi * (1 - eta) * x1 +
+                             (1 - xi) * eta * x2 + xi * eta * x3);
+                  const Tensor<1, 3> a1 =
+                    (1 - eta) * (x1 - x0) + eta * (x3 - x2);
+                  const Tensor<1, 3> a2 = (1 - xi) * (x2 - x0) + xi * (x3 - x1);
+                  const Tensor<1, 3> normal = cross_product_3d(a1, a2);
+                  if (!(normal.norm() > 0) || centres.empty())
+                    continue;
+                  unsigned int nearest = 0;
+                  for (unsigned int m = 1; m < centres.size(); ++m)
+                    if (x.distance(centres[m]) < x.distance(centres[nearest]))
+                      nearest = m;
+                  const auto s_id = face.body;
+                  const auto m_id = faces.master_faces()[nearest].body;
+                  if (s_id == m_id || !frames.count(s_id) ||
+                      !frames.count(m_id))
+                    continue;
+                  const Tensor<1, 3> n = normal / normal.norm();
+                  const auto         a = mode_row<3>(n,
+                                             x - frames.at(s_id).centre,
+                                             frames.at(s_id).size);
+                  const auto         b = mode_row<3>(n,
+                                             x - frames.at(m_id).centre,
+                                             frames.at(m_id).size);
+                  std::vector<std::pair<unsigned int, double>> row;
+                  for (unsigned int i = 0; i < n_modes<3>; ++i)
+                    {
+                      row.emplace_back(column[s_id] + i, a[i]);
+                      row.emplace_back(column[m_id] + i, -b[i]);
+                    }
+                  for (const auto &[i, v] : row)
+                    for (const auto &[j, w] : row)
+                      H(i, j) += v * w;
+                }
+          }
+      }
+
       // A frictionless contact pushes along its normals only: a motion of
       // one body, or of several together, that changes no gap (a block
       // sliding along a flat interface, a disc turning in a ring, two blocks
@@ -287,26 +456,29 @@ namespace RingContact
       // finds one, is arbitrary along that motion. The rigid modes of all
       // bodies, the supports' constraints of each, and per slave point the
       // normal relative motion n . (r_slave - r_master): their null space.
+      template <int dim>
       void
       refuse_free_motions(
-        const std::map<types::material_id, Frame>        &frames,
+        const std::map<types::material_id, Frame<dim>>   &frames,
         const std::vector<Body<dim>>                     &bodies,
         const std::vector<const ContactInterface<dim> *> &contacts)
       {
-        // The bodies' three columns side by side; H = M^T M of the whole
-        // matrix M, starting from each body's supports (G, block-diagonal).
+        // The bodies' columns (3 or 6 each) side by side; H = M^T M of the
+        // whole matrix M, starting from each body's supports (G,
+        // block-diagonal).
         std::map<types::material_id, unsigned int> column;
         std::vector<types::material_id>            ids;
         for (const auto &[id, frame] : frames)
           {
-            column[id] = 3 * ids.size();
+            column[id] = n_modes<dim> * ids.size();
             ids.push_back(id);
           }
-        const unsigned int       n_modes = 3 * ids.size();
-        LAPACKFullMatrix<double> H(n_modes, n_modes);
+        constexpr unsigned int   n   = n_modes<dim>;
+        const unsigned int       all = n * ids.size();
+        LAPACKFullMatrix<double> H(all, all);
         for (const auto &[id, frame] : frames)
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
               H(column[id] + i, column[id] + j) += frame.G[i][j];
         add_contact_rows(frames, column, contacts, H);
         // H is symmetric and positive semi-definite: its singular values
@@ -316,16 +488,16 @@ namespace RingContact
         H.compute_svd();
         const double largest = std::max(H.singular_value(0), 1e-300);
         const auto  &vt      = H.get_svd_vt();
-        for (unsigned int m = 0; m < n_modes; ++m)
+        for (unsigned int m = 0; m < all; ++m)
           if (H.singular_value(m) <= 1e-10 * largest)
             {
               std::string  what, alone;
               unsigned int n_moving = 0;
               for (unsigned int b = 0; b < ids.size(); ++b)
                 {
-                  Tensor<1, 3> mode;
-                  for (unsigned int i = 0; i < 3; ++i)
-                    mode[i] = vt(m, 3 * b + i);
+                  Tensor<1, n> mode;
+                  for (unsigned int i = 0; i < n; ++i)
+                    mode[i] = vt(m, n * b + i);
                   if (mode.norm() < 1e-6)
                     continue;
                   const auto body =
@@ -335,7 +507,7 @@ namespace RingContact
                                    return x.material_id == ids[b];
                                  });
                   const std::string motion =
-                    describe_mode(mode / mode.norm(),
+                    describe<dim>(mode / mode.norm(),
                                   frames.at(ids[b]).centre,
                                   frames.at(ids[b]).size);
                   what +=
@@ -365,6 +537,7 @@ namespace RingContact
       }
     } // namespace
 
+    template <int dim>
     std::set<types::material_id>
     rigid_body_modes(const DoFHandler<dim>                      &dof_handler,
                      const hp::MappingCollection<dim>           &mapping,
@@ -377,14 +550,14 @@ namespace RingContact
                      std::ostream                                     &log)
     {
       std::set<types::material_id> held_by_contact;
-      const auto                   frames = body_frames(dof_handler,
-                                      mapping,
-                                      bodies,
-                                      imposed_dofs,
-                                      normal,
-                                      normal_component,
-                                      held_by_contact,
-                                      log);
+      const auto                   frames = body_frames<dim>(dof_handler,
+                                           mapping,
+                                           bodies,
+                                           imposed_dofs,
+                                           normal,
+                                           normal_component,
+                                           held_by_contact,
+                                           log);
       // With friction, sticking may hold a motion the normals do not. The
       // whole analysis is needed only when some body is held by the
       // contact alone: otherwise the supports fix every body on their own.
@@ -392,5 +565,26 @@ namespace RingContact
         refuse_free_motions(frames, bodies, contacts);
       return held_by_contact;
     }
+
+    template std::set<types::material_id>
+    rigid_body_modes(const DoFHandler<2> &,
+                     const hp::MappingCollection<2> &,
+                     const std::vector<Body<2>> &,
+                     const std::vector<types::global_dof_index> &,
+                     const std::vector<NormalDisplacement<2>> &,
+                     const std::vector<unsigned int> &,
+                     const std::vector<const ContactInterface<2> *> &,
+                     const bool,
+                     std::ostream &);
+    template std::set<types::material_id>
+    rigid_body_modes(const DoFHandler<3> &,
+                     const hp::MappingCollection<3> &,
+                     const std::vector<Body<3>> &,
+                     const std::vector<types::global_dof_index> &,
+                     const std::vector<NormalDisplacement<3>> &,
+                     const std::vector<unsigned int> &,
+                     const std::vector<const ContactInterface<3> *> &,
+                     const bool,
+                     std::ostream &);
   } // namespace Diagnostics
 } // namespace RingContact

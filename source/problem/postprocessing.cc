@@ -52,20 +52,19 @@ namespace RingContact
       scenario->check_boundary_data(dof_handler, mapping_collection, times);
     }
     // Notes the bodies that only the contact holds, and throws if a motion
-    // is held by nothing: the tangent would be singular along it. (These
-    // diagnostics, the stiffness spread and the surfaces' report below are
-    // 2D so far: a 3D run goes without them.)
-    if constexpr (dim == 2)
-      held_by_contact =
-        Diagnostics::rigid_body_modes(dof_handler,
-                                      mapping_collection,
-                                      bodies,
-                                      imposed_dofs,
-                                      normal_target,
-                                      normal_component,
-                                      contact_interfaces(),
-                                      parameters.contact.frictional(),
-                                      log);
+    // is held by nothing: the tangent would be singular along it (in 3D
+    // the six modes of each body). The stiffness spread and the surfaces'
+    // interpenetration and coarse geometry below are 2D so far.
+    held_by_contact =
+      Diagnostics::rigid_body_modes(dof_handler,
+                                    mapping_collection,
+                                    bodies,
+                                    imposed_dofs,
+                                    normal_target,
+                                    normal_component,
+                                    contact_interfaces(),
+                                    parameters.contact.frictional(),
+                                    log);
     // Coulomb friction's discrete problem is proved to have one solution
     // only for small coefficients; past about 1 a second one can appear, as
     // it does in the frictional patch test (tests/friction_two_solutions:

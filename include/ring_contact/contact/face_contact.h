@@ -75,6 +75,8 @@ namespace RingContact
       std::array<std::array<types::global_dof_index, 3>, 4> u_dofs;
       std::vector<FaceClipping::Vector3<double>>            reference;
       std::array<unsigned int, 4>                           node;
+      /// The body (material id) of the face's cell.
+      types::material_id body = numbers::invalid_material_id;
     };
 
     /// The surfaces are the faces of `slave` and `master` boundary tags
