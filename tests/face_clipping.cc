@@ -9,7 +9,9 @@
 //   the faces, from any first vertex and in either order of the vertices;
 // - a warped slave face clipped against itself gives the area of its
 //   projection, |(x2 - x0) x (x3 - x1)| / 2;
-// - a master face at right angles to the slave gives nothing.
+// - a master face at right angles to the slave gives nothing;
+// - edges that nearly coincide (a refined gmsh mesh): the clips over a
+//   slave face sum to its area.
 // Then the derivatives that the AD numbers carry through the clip (of the
 // area and of its first moment, which moves with the clip vertices) against
 // central finite differences of the double version, on a generic pair:
@@ -219,6 +221,77 @@ main()
     check(clip_faces(slave, upright).triangles.empty(),
           "a master face at right angles gives no cell");
     out << "master face at right angles: no cell" << std::endl;
+  }
+
+  // Edges that nearly coincide: a slave face of a gmsh mesh refined once
+  // (prm/two_blocks_3d.prm) and the master faces under it, their vertices
+  // as gmsh's transfinite meshing and deal.II's refinement left them, up
+  // to 1e-12 off the lines x = 0.5, y = 0.2 .... The slave face's edge
+  // x = 0.5 lies 1e-13 beside the master faces' and crosses it at a tiny
+  // angle: a crossing taken where both ends lie outside the edge's line
+  // (one within the tolerance) fell far beyond the edge, and the four
+  // clips summed to 1.17 times the slave face (the pressure 40 % off at a
+  // node). The clips now sum to the slave face to 1e-10.
+  {
+    const auto corners = [](const std::array<double, 8> &xy) {
+      // Given in deal.II's lexicographic order; the clip takes a cycle.
+      Face face;
+      for (const unsigned int v : {0u, 1u, 3u, 2u})
+        face.push_back({{xy[2 * v], xy[2 * v + 1], 0}});
+      return face;
+    };
+    const Face              slave_face = corners({{0.49999999999911304,
+                                                   0.12500000000011285,
+                                                   0.49999999999953398,
+                                                   0.25000000000022571,
+                                                   0.62499999999928979,
+                                                   0.12500000000001102,
+                                                   0.62499999999956313,
+                                                   0.25000000000002204}});
+    const std::vector<Face> masters    = {corners({{0.49999999999921585,
+                                                    0.10000000000009736,
+                                                    0.5999999999991894,
+                                                    0.10000000000003359,
+                                                    0.49999999999947259,
+                                                    0.20000000000019472,
+                                                    0.59999999999943365,
+                                                    0.20000000000006718}}),
+                                          corners({{0.49999999999947259,
+                                                    0.20000000000019472,
+                                                    0.59999999999943365,
+                                                    0.20000000000006718,
+                                                    0.49999999999972933,
+                                                    0.30000000000025689,
+                                                    0.5999999999996779,
+                                                    0.30000000000005855}}),
+                                          corners({{0.5999999999991894,
+                                                    0.10000000000003359,
+                                                    0.69999999999935725,
+                                                    0.099999999999969807,
+                                                    0.59999999999943365,
+                                                    0.20000000000006718,
+                                                    0.6999999999995058,
+                                                    0.19999999999993961}}),
+                                          corners({{0.59999999999943365,
+                                                    0.20000000000006718,
+                                                    0.6999999999995058,
+                                                    0.19999999999993961,
+                                                    0.5999999999996779,
+                                                    0.30000000000005855,
+                                                    0.69999999999965434,
+                                                    0.29999999999986016}})};
+    double                  total      = 0;
+    for (const Face &master : masters)
+      total += clip_area(slave_face, master);
+    const double area = 0.125 * 0.125;
+    out << "nearly coincident edges: the four clips over the slave face "
+        << total / area << std::endl;
+    check(std::abs(total - area) <= 1e-10 * area,
+          "the clips of nearly coincident edges sum to the slave face");
+    // The first clip alone: x in [0.5, 0.6], y in [0.125, 0.2].
+    check(std::abs(clip_area(slave_face, masters[0]) - 0.1 * 0.075) <=
+            1e-10 * area,
+          "the clip along the nearly coincident edge is its rectangle");
   }
 
   // The derivatives: every coordinate of both faces an independent
