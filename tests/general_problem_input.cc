@@ -216,8 +216,17 @@ main()
                "subsection Boundary condition 2\n set Components = r\nend\n",
                "a polar condition imposes both");
   expect_error("unknown_component",
-               "subsection Boundary condition 2\n set Components = z\nend\n",
+               "subsection Boundary condition 2\n set Components = w\nend\n",
                "the components are x, y");
+  expect_error("z_in_two_dimensions",
+               "subsection Boundary condition 2\n set Components = z\nend\n",
+               "names z, but the model is two-dimensional");
+  expect_error("three_coordinates_in_two_dimensions",
+               "subsection Check 1\n set Point = 0.3, 0, 0\nend\n",
+               "has 3 coordinates, but the model is two-dimensional");
+  expect_error("quantity_along_z_in_two_dimensions",
+               "subsection Check 1\n set Quantity = displacement z\nend\n",
+               "is along z, but the model is two-dimensional");
   expect_error("normal_with_another_component",
                "subsection Boundary condition 2\n set Components = n, x\nend\n",
                "the normal component n is imposed alone");

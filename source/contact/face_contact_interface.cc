@@ -289,6 +289,24 @@ namespace RingContact
     return std::sqrt(error) / std::sqrt(norm);
   }
 
+  std::vector<ContactInterface<3>::SlaveFace>
+  ContactInterface<3>::slave_faces() const
+  {
+    std::vector<SlaveFace> faces;
+    for (const auto &face : face_contact.slave_faces())
+      {
+        SlaveFace f;
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            f.multipliers[v] = face_contact.multiplier_dof(face.node[v]);
+            for (unsigned int d = 0; d < 3; ++d)
+              f.X[v][d] = face.reference[v][d];
+          }
+        faces.push_back(f);
+      }
+    return faces;
+  }
+
   double
   ContactInterface<3>::gap_at(
     const types::global_dof_index multiplier_dof) const

@@ -486,6 +486,27 @@ namespace RingContact
         DeclaredCounts{geo, declared.nodes, declared.elements});
     }
 
+    // The model opened (a script not meshed): its highest entity dimension,
+    // with the same light check of a mesh file first.
+    unsigned int
+    model_dimension(const std::string &filename, const GeoNumbers &geo_numbers)
+    {
+      const std::string text =
+        read_text_file(filename, "mesh file", max_mesh_file_bytes);
+      const Declared  declared = check_file(filename, text);
+      const bool      geo      = declared.format == Format::geo;
+      const GmshModel model =
+        run_gmsh(filename,
+                 false,
+                 geo_numbers,
+                 1,
+                 geo ? 0 : 60 + static_cast<double>(text.size()) / (1 << 20));
+      int highest = 2;
+      for (const auto &entity : model.entities)
+        highest = std::max(highest, entity.dim);
+      return static_cast<unsigned int>(highest);
+    }
+
     // The two dimensions of the program (issue 48).
     template GmshMesh<2>
     read_gmsh_file<2>(const std::string &, const GeoNumbers &, unsigned int);

@@ -164,6 +164,18 @@ namespace RingContact
     std::pair<double, Point<3>>
     deepest_interpenetration() const;
 
+    /// A slave face as the postprocessing sees it: the multiplier dofs and
+    /// the reference positions of its four vertices, in deal.II's
+    /// lexicographic order (its edges 0-1, 2-3, 0-2 and 1-3).
+    struct SlaveFace
+    {
+      std::array<types::global_dof_index, 4> multipliers;
+      std::array<Point<3>, 4>                X;
+    };
+    /// Every slave face of the pair.
+    std::vector<SlaveFace>
+    slave_faces() const;
+
     /// The reference position of multiplier node k.
     const Point<3> &
     node_position(const unsigned int k) const

@@ -103,6 +103,13 @@ namespace RingContact
                    const GeoNumbers  &geo_numbers   = {},
                    unsigned int       element_order = 1);
 
+    /// The dimension of the model of a gmsh file, 2 or 3 (a model with a
+    /// volume is three-dimensional): a script is opened without being
+    /// meshed. Throws the one-line std::runtime_error of read_gmsh_file().
+    unsigned int
+    model_dimension(const std::string &filename,
+                    const GeoNumbers  &geo_numbers = {});
+
     /// Whether `filename` names a gmsh script (ends in ".geo").
     bool
     is_geo_file(const std::string &filename);

@@ -34,6 +34,7 @@ namespace RingContact
   // axes it imposes, e_r and e_theta at the point's angle about the origin,
   // or the outward normal. A support's reaction acts along these and no
   // other: the remaining direction of the node is free, its row balanced.
+  template <int dim>
   std::vector<Tensor<1, dim>>
   SupportCondition::directions(const Point<dim>     &X,
                                const Tensor<1, dim> &N) const
@@ -48,13 +49,19 @@ namespace RingContact
           break;
         case Kind::polar:
           {
-            const double         theta = std::atan2(X[1], X[0]);
-            const Tensor<1, dim> e_r({std::cos(theta), std::sin(theta)});
-            const Tensor<1, dim> e_theta({-std::sin(theta), std::cos(theta)});
+            // About the origin; in 3D about the z axis, with z Cartesian.
+            const double   theta = std::atan2(X[1], X[0]);
+            Tensor<1, dim> e_r, e_theta;
+            e_r[0]     = std::cos(theta);
+            e_r[1]     = std::sin(theta);
+            e_theta[0] = -std::sin(theta);
+            e_theta[1] = std::cos(theta);
             if (components[0])
               held.push_back(e_r);
             if (components[1])
               held.push_back(e_theta);
+            if (dim == 3 && components[2])
+              held.push_back(Point<dim>::unit_vector(dim - 1));
             break;
           }
         case Kind::normal:
@@ -64,16 +71,67 @@ namespace RingContact
     return held;
   }
 
+  // The displacement nodes of face f: the face unknowns u_x, u_y (, u_z) at
+  // one support point, each with the index of its u_x unknown on the face.
+  // The points are compared exactly: all come from one unit point through
+  // one mapping. The multiplier's unknowns (on a layer cell) are none of
+  // them, and are skipped.
+  template <int dim>
+  std::vector<std::pair<unsigned int, std::array<types::global_dof_index, dim>>>
+  face_nodes(const FiniteElement<dim>                   &fe,
+             const unsigned int                          f,
+             const FEFaceValues<dim>                    &fv,
+             const std::vector<types::global_dof_index> &face_dofs)
+  {
+    std::vector<
+      std::pair<unsigned int, std::array<types::global_dof_index, dim>>>
+      nodes;
+    for (unsigned int i = 0; i < face_dofs.size(); ++i)
+      if (fe.face_system_to_component_index(i, f).first == Components::ux)
+        {
+          std::array<types::global_dof_index, dim> dofs;
+          dofs.fill(numbers::invalid_dof_index);
+          dofs[0] = face_dofs[i];
+          for (unsigned int j = 0; j < face_dofs.size(); ++j)
+            {
+              const unsigned int c =
+                fe.face_system_to_component_index(j, f).first;
+              if (c > 0 && c < dim &&
+                  fv.quadrature_point(j) == fv.quadrature_point(i))
+                dofs[c] = face_dofs[j];
+            }
+          if (std::find(dofs.begin(), dofs.end(), numbers::invalid_dof_index) ==
+              dofs.end())
+            nodes.emplace_back(i, dofs);
+        }
+    return nodes;
+  }
+
+  template std::vector<
+    std::pair<unsigned int, std::array<types::global_dof_index, 2>>>
+  face_nodes<2>(const FiniteElement<2> &,
+                const unsigned int,
+                const FEFaceValues<2> &,
+                const std::vector<types::global_dof_index> &);
+  template std::vector<
+    std::pair<unsigned int, std::array<types::global_dof_index, 3>>>
+  face_nodes<3>(const FiniteElement<3> &,
+                const unsigned int,
+                const FEFaceValues<3> &,
+                const std::vector<types::global_dof_index> &);
+
   // Every boundary face with its displacement nodes, in the reference
   // configuration (a support's directions and a check's boundary are
   // those of the undeformed mesh).
+  template <int dim>
   void
   for_each_boundary_face(
-    const DoFHandler<dim>                                        &dof_handler,
-    const hp::MappingCollection<dim>                             &mapping,
-    const std::function<void(const DoFHandler<dim>::active_cell_iterator &,
-                             const unsigned int,
-                             const std::vector<BoundaryNode> &)> &visit)
+    const DoFHandler<dim>            &dof_handler,
+    const hp::MappingCollection<dim> &mapping,
+    const std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &,
+           const unsigned int,
+           const std::vector<BoundaryNode<dim>> &)> &visit)
   {
     // The support points of each element's faces as a face quadrature, so
     // that FEFaceValues gives their positions and the normals there; and a
@@ -82,13 +140,13 @@ namespace RingContact
     // face. That integral, int phi ds, is the node's share of a uniform
     // traction t (its nodal force is t int phi ds): a reaction over it is
     // the traction density at the node, which resultant() relies on.
-    const auto        &fe_collection = dof_handler.get_fe_collection();
-    hp::QCollection<1> support_points, gauss;
+    const auto              &fe_collection = dof_handler.get_fe_collection();
+    hp::QCollection<dim - 1> support_points, gauss;
     for (unsigned int i = 0; i < fe_collection.size(); ++i)
       {
-        support_points.push_back(
-          Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
-        gauss.push_back(QGauss<1>(fe_collection[i].degree + 1));
+        support_points.push_back(Quadrature<dim - 1>(
+          fe_collection[i].get_unit_face_support_points(0)));
+        gauss.push_back(QGauss<dim - 1>(fe_collection[i].degree + 1));
       }
     hp::FEFaceValues<dim>                at_nodes(mapping,
                                    fe_collection,
@@ -100,7 +158,7 @@ namespace RingContact
                                     gauss,
                                     update_values | update_JxW_values);
     std::vector<types::global_dof_index> face_dofs;
-    std::vector<BoundaryNode>            nodes;
+    std::vector<BoundaryNode<dim>>       nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
@@ -112,34 +170,23 @@ namespace RingContact
             const FiniteElement<dim> &fe = cell->get_fe();
             face_dofs.resize(fe.n_dofs_per_face(f));
             cell->face(f)->get_dof_indices(face_dofs, cell->active_fe_index());
-            // A node is a pair of face unknowns u_x, u_y at one support
-            // point. The points are compared exactly: both come from one
-            // unit point through one mapping. The multiplier's unknowns
-            // (on a layer cell) are neither, and are skipped.
             nodes.clear();
-            for (unsigned int i = 0; i < face_dofs.size(); ++i)
-              if (fe.face_system_to_component_index(i, f).first ==
-                  Components::ux)
-                for (unsigned int j = 0; j < face_dofs.size(); ++j)
-                  if (fe.face_system_to_component_index(j, f).first ==
-                        Components::uy &&
-                      fv.quadrature_point(j) == fv.quadrature_point(i))
-                    {
-                      // int phi ds of the node's shape function on the face.
-                      const unsigned int cell_i = fe.face_to_cell_index(i, f);
-                      double             weight = 0;
-                      for (unsigned int q = 0; q < iv.n_quadrature_points; ++q)
-                        weight += iv.shape_value(cell_i, q) * iv.JxW(q);
-                      nodes.push_back({fv.quadrature_point(i),
-                                       fv.normal_vector(i),
-                                       {{face_dofs[i], face_dofs[j]}},
-                                       weight});
-                    }
+            for (const auto &[i, dofs] : face_nodes(fe, f, fv, face_dofs))
+              {
+                // int phi ds of the node's shape function on the face.
+                const unsigned int cell_i = fe.face_to_cell_index(i, f);
+                double             weight = 0;
+                for (unsigned int q = 0; q < iv.n_quadrature_points; ++q)
+                  weight += iv.shape_value(cell_i, q) * iv.JxW(q);
+                nodes.push_back(
+                  {fv.quadrature_point(i), fv.normal_vector(i), dofs, weight});
+              }
             visit(cell, f, nodes);
           }
   }
 
-  BoundaryResultants::BoundaryResultants(
+  template <int dim>
+  BoundaryResultants<dim>::BoundaryResultants(
     const DoFHandler<dim>               &dof_handler,
     const hp::MappingCollection<dim>    &mapping,
     const std::vector<SupportCondition> &supports)
@@ -174,17 +221,17 @@ namespace RingContact
     // Loaded and free boundaries hold nothing and are skipped.
     Holders holders;
     Weights weight_on;
-    for_each_boundary_face(
+    for_each_boundary_face<dim>(
       dof_handler,
       mapping,
-      [&](const auto                      &cell,
-          const unsigned int               f,
-          const std::vector<BoundaryNode> &nodes) {
+      [&](const auto                           &cell,
+          const unsigned int                    f,
+          const std::vector<BoundaryNode<dim>> &nodes) {
         const auto id      = cell->face(f)->boundary_id();
         const auto support = support_of.find(id);
         if (support == support_of.end())
           return;
-        for (const BoundaryNode &node : nodes)
+        for (const BoundaryNode<dim> &node : nodes)
           {
             auto &list = holders[node.dofs];
             auto  it =
@@ -194,7 +241,10 @@ namespace RingContact
             if (it == list.end())
               {
                 list.push_back(
-                  {id, support->second.directions(node.X, node.N), 0.0, {}});
+                  {id,
+                   support->second.template directions<dim>(node.X, node.N),
+                   0.0,
+                   {}});
                 it = list.end() - 1;
               }
             else if (support->second.kind == SupportCondition::Kind::normal)
@@ -206,7 +256,7 @@ namespace RingContact
               }
             it->weight += node.weight;
             weight_on[{id, node.dofs}] += node.weight;
-            for (const BoundaryNode &other : nodes)
+            for (const BoundaryNode<dim> &other : nodes)
               if (other.dofs != node.dofs)
                 it->neighbours.insert(other.dofs);
           }
@@ -220,11 +270,12 @@ namespace RingContact
   // Per node: the directions held, grouped where parallel; the reaction s
   // split as s = sum_g c_g d_g with the least c (exactly when two
   // independent directions are held), c_g = d_g . (D D^T)^+ s.
+  template <int dim>
   void
-  BoundaryResultants::split_reaction(const Node                &node,
-                                     const std::vector<Holder> &list,
-                                     const Holders             &holders,
-                                     const Weights             &weight_on)
+  BoundaryResultants<dim>::split_reaction(const Node                &node,
+                                          const std::vector<Holder> &list,
+                                          const Holders             &holders,
+                                          const Weights             &weight_on)
   {
     // Directions of different holders within 1e-9 of parallel are one
     // group: the two x-supports that meet at a corner hold one direction,
@@ -250,7 +301,7 @@ namespace RingContact
             }
           group->members.push_back(h);
         }
-    // (D D^T)^+ by its eigen decomposition (2 x 2, symmetric). A pseudo-
+    // (D D^T)^+ by its eigen decomposition (dim x dim, symmetric). A pseudo-
     // inverse, because a node held along one direction only has a D D^T
     // of rank one; the reaction s is zero at the unknowns no support holds
     // (NodalForces::reactions()), and any part of s along no held direction
@@ -299,15 +350,19 @@ namespace RingContact
       }
   }
 
+  template <int dim>
   Tensor<1, dim>
-  BoundaryResultants::resultant(
+  BoundaryResultants<dim>::resultant(
     const types::boundary_id                            boundary_id,
     const Vector<double>                               &reactions,
     const std::map<types::boundary_id, Tensor<1, dim>> &applied) const
   {
-    // A node's reaction as a vector: its u_x and u_y rows.
+    // A node's reaction as a vector: its displacement rows.
     const auto reaction_at = [&](const Node &node) {
-      return Tensor<1, dim>({reactions(node[0]), reactions(node[1])});
+      Tensor<1, dim> s;
+      for (unsigned int d = 0; d < dim; ++d)
+        s[d] = reactions(node[d]);
+      return s;
     };
     // The applied load is integrated by the assembly over the boundary's
     // own faces: no corner question arises for it.
@@ -368,4 +423,26 @@ namespace RingContact
       }
     return result;
   }
+
+  // The two dimensions of the program (issue 48).
+  template std::vector<Tensor<1, 2>>
+  SupportCondition::directions<2>(const Point<2> &, const Tensor<1, 2> &) const;
+  template std::vector<Tensor<1, 3>>
+  SupportCondition::directions<3>(const Point<3> &, const Tensor<1, 3> &) const;
+  template void
+  for_each_boundary_face<2>(
+    const DoFHandler<2> &,
+    const hp::MappingCollection<2> &,
+    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                             const unsigned int,
+                             const std::vector<BoundaryNode<2>> &)> &);
+  template void
+  for_each_boundary_face<3>(
+    const DoFHandler<3> &,
+    const hp::MappingCollection<3> &,
+    const std::function<void(const DoFHandler<3>::active_cell_iterator &,
+                             const unsigned int,
+                             const std::vector<BoundaryNode<3>> &)> &);
+  template class BoundaryResultants<2>;
+  template class BoundaryResultants<3>;
 } // namespace RingContact

@@ -2,7 +2,8 @@
 //
 // A general problem as a scenario (general.h): the bodies of a gmsh model,
 // the boundary conditions, loads and checks of the parameter file as
-// expressions of x, y and t. The description itself is read and checked
+// expressions of x, y (, z) and t, in the model's dimension: one class
+// for 2D and 3D. The description itself is read and checked
 // by problem_description.cc; this file answers the problem class's
 // questions with it (scenario.h): the mesh, the bodies, the imposed
 // displacements of a load state (normal conditions resolved node by
@@ -25,6 +26,7 @@
 #include <ring_contact/input/model_curves.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/scenarios/general/general.h>
+#include <ring_contact/scenarios/general/normal_conditions.h>
 #include <ring_contact/scenarios/reference_pressure.h>
 #include <ring_contact/scenarios/scenario.h>
 
@@ -39,6 +41,17 @@ namespace RingContact
   {
     namespace
     {
+      // "0, 0.25" or "0, 0.25, 1": a point or a direction in the messages.
+      template <int dim>
+      std::string
+      components_text(const Tensor<1, dim> &v)
+      {
+        std::ostringstream out;
+        for (unsigned int d = 0; d < dim; ++d)
+          out << (d > 0 ? ", " : "") << v[d];
+        return out.str();
+      }
+
       // A value of a boundary condition, checked: "Boundary condition 2
       // (displacement on boundary 12): not a finite number (nan) at (0,
       // 0.25), t = 0.5". Checked where it is evaluated, because only there
@@ -47,6 +60,7 @@ namespace RingContact
       // steps stay). Before, Value = sqrt(-1); 0 was reported as 'inverted
       // elements: det F = 1 <= 0' (a NaN det F counted as inverted), and a
       // traction sqrt(0.6 - t) only as 'the residual is not finite'.
+      template <int dim>
       double
       finite_value(const double                       value,
                    const BoundaryConditionParameters &condition,
@@ -67,14 +81,15 @@ namespace RingContact
                 << (std::isnan(value) ? "nan" :
                     value > 0         ? "inf" :
                                         "-inf")
-                << ") at (" << X[0] << ", " << X[1] << "), t = " << time;
+                << ") at (" << components_text(X) << "), t = " << time;
         throw BoundaryDataError(message.str());
       }
 
       // An expression of the parameter file as a deal.II Function of the
       // reference position at the load state's time, with the layout of the
-      // unknowns (u_x, u_y, multiplier): a polar displacement (u_r, u_theta)
-      // is turned into Cartesian components.
+      // unknowns (u_x, u_y (, u_z), multiplier): a polar displacement (u_r,
+      // u_theta (, u_z)) is turned into Cartesian components.
+      template <int dim>
       class ImposedDisplacement : public Function<dim>
       {
       public:
@@ -85,9 +100,9 @@ namespace RingContact
                             const double                         time)
             : Function<dim>(Components::n_components<dim>, time)
             , condition(condition)
-            , expression(make_expression(condition.expressions,
-                                         constants,
-                                         condition.name))
+            , expression(make_expression<dim>(condition.expressions,
+                                              constants,
+                                              condition.name))
         {
           expression->set_time(time);
         }
@@ -99,24 +114,21 @@ namespace RingContact
         void
         vector_value(const Point<dim> &X, Vector<double> &values) const override
         {
-          Vector<double> u(2);
+          Vector<double> u(dim);
           expression->vector_value(X, u);
           for (unsigned int c = 0; c < dim; ++c)
             if (condition.components[c])
               finite_value(u(c), condition, X, this->get_time());
-          // u = u_r e_r + u_theta e_theta, with the angle of the reference
-          // position about the origin.
+          for (unsigned int c = 0; c < dim; ++c)
+            values(c) = u(c);
+          // u = u_r e_r + u_theta e_theta (+ u_z e_z), with the angle of the
+          // reference position about the origin (the z axis).
           if (condition.polar)
             {
               const double theta = std::atan2(X[1], X[0]);
               const double c = std::cos(theta), s = std::sin(theta);
               values(0) = c * u(0) - s * u(1);
               values(1) = s * u(0) + c * u(1);
-            }
-          else
-            {
-              values(0) = u(0);
-              values(1) = u(1);
             }
           values(Components::multiplier<dim>) = 0;
         }
@@ -138,6 +150,7 @@ namespace RingContact
       };
 
       // A problem written in the parameter file.
+      template <int dim>
       class GeneralProblem : public Scenario<dim>
       {
       public:
@@ -151,21 +164,21 @@ namespace RingContact
             , quantities(problem)
         {}
 
-        // The bodies of a gmsh model, on the model's curves, meshed from a
-        // script with linear elements (the cells take the vertices only);
-        // the audit of its tags first (a line it drops leaves a
+        // The bodies of a gmsh model, on the model's curves (in 2D), meshed
+        // from a script with linear elements (the cells take the vertices
+        // only); the audit of its tags first (a line it drops leaves a
         // boundary without faces, which check_bodies() would report).
         void
         create_mesh(Triangulation<dim> &triangulation) const override
         {
           const Geometry::GmshMesh<dim> mesh =
-            Geometry::read_gmsh(triangulation,
-                                parameters.mesh.mesh_file,
-                                parameters.mesh.geo_numbers,
-                                1,
-                                false);
+            Geometry::read_gmsh<dim>(triangulation,
+                                     parameters.mesh.mesh_file,
+                                     parameters.mesh.geo_numbers,
+                                     1,
+                                     false);
           Geometry::check_boundary_tags(triangulation, mesh);
-          check_bodies(triangulation, parameters);
+          check_bodies<dim>(triangulation, parameters);
           // The size estimate takes the highest degree of the bodies: the
           // estimate errs on the large side, as a refusal should.
           unsigned int degree = 1;
@@ -176,8 +189,11 @@ namespace RingContact
                                     parameters.mesh.global_refinements);
           // A script's curves are the geometry (model_curves.h): refined
           // vertices go onto them, and a Mapping degree >= 2 curves the
-          // cells and the contact surfaces. A mesh file has straight sides.
-          Geometry::attach_model_curves(triangulation, mesh);
+          // cells and the contact surfaces. A mesh file has straight sides,
+          // and so, for now, has a 3D model (its surfaces are not yet
+          // manifolds: issue 48).
+          if constexpr (dim == 2)
+            Geometry::attach_model_curves(triangulation, mesh);
           triangulation.refine_global(parameters.mesh.global_refinements);
         }
 
@@ -226,10 +242,10 @@ namespace RingContact
                 // of the loaded faces. Setting its time from a const lambda
                 // is safe because the program runs one thread.
                 std::shared_ptr<FunctionParser<dim>> expression =
-                  make_expression(condition.expressions,
-                                  problem.constants,
-                                  condition.name);
-                // Two components for a traction, one for a pressure: the
+                  make_expression<dim>(condition.expressions,
+                                       problem.constants,
+                                       condition.name);
+                // dim components for a traction, one for a pressure: the
                 // pressure is the load's first component (BoundaryLoad).
                 const unsigned int n = condition.expressions.size();
                 loads.push_back(BoundaryLoad<dim>{
@@ -288,19 +304,19 @@ namespace RingContact
                   if (other.boundary_id == load.boundary_id &&
                       other.type != BoundaryConditionType::displacement)
                     loaded = &other;
-                for_each_boundary_face(
+                for_each_boundary_face<dim>(
                   dof_handler,
                   mapping,
-                  [&](const auto                      &cell,
-                      const unsigned int               f,
-                      const std::vector<BoundaryNode> &nodes) {
+                  [&](const auto                           &cell,
+                      const unsigned int                    f,
+                      const std::vector<BoundaryNode<dim>> &nodes) {
                     if (cell->face(f)->boundary_id() != load.boundary_id)
                       return;
                     // At every pseudo-time of the program: a load that turns
                     // into a held direction only later (a traction written
                     // with sin t) is found too. A general problem's load
                     // states carry no parameters, only t.
-                    for (const BoundaryNode &node : nodes)
+                    for (const BoundaryNode<dim> &node : nodes)
                       for (const double t : times)
                         {
                           const LoadState      state{t, {}};
@@ -315,16 +331,17 @@ namespace RingContact
                           // Relative to the force: a component that is zero
                           // up to round-off (cos(pi / 2) = 6e-17) passes.
                           for (const auto &d :
-                               support.directions(node.X, node.N))
+                               support.template directions<dim>(node.X, node.N))
                             if (std::abs(force * d) > 1e-12 * force.norm())
                               {
                                 std::ostringstream what;
                                 what << "= " << load.boundary_id
                                      << " is loaded by " << loaded->name
-                                     << " along a direction (" << d[0] << ", "
-                                     << d[1] << ") that " << condition.name
-                                     << " holds (at (" << node.X[0] << ", "
-                                     << node.X[1] << "), t = " << t
+                                     << " along a direction ("
+                                     << components_text(d) << ") that "
+                                     << condition.name << " holds (at ("
+                                     << components_text(node.X)
+                                     << "), t = " << t
                                      << "): the support would take that part "
                                         "of the load, which would never reach "
                                         "the body; impose the displacement "
@@ -381,10 +398,12 @@ namespace RingContact
           for (const auto &check : problem.checks)
             row.trailing.emplace_back(check.column(),
                                       quantities.value(check, state));
-          if (parameters.contact.frictional())
-            row.trailing.emplace_back("slipping_nodes",
-                                      static_cast<double>(
-                                        Friction::n_slipping(state)));
+          // (Friction is refused in 3D.)
+          if constexpr (dim == 2)
+            if (parameters.contact.frictional())
+              row.trailing.emplace_back("slipping_nodes",
+                                        static_cast<double>(
+                                          Friction::n_slipping(state)));
         }
 
         // The step's line: the active nodes and the largest pressure, then
@@ -431,9 +450,10 @@ namespace RingContact
             {
               // Parsed once per check; evaluated at the check's point and at
               // each checked row's pseudo-time.
-              const auto reference = make_expression({check.reference},
-                                                     problem.constants,
-                                                     check.name + "/Reference");
+              const auto reference =
+                make_expression<dim>({check.reference},
+                                     problem.constants,
+                                     check.name + "/Reference");
               const auto check_row = [&](const HistoryRow &row) {
                 Verdict v;
                 v.scheme    = row.scheme;
@@ -446,8 +466,9 @@ namespace RingContact
                 // the pressure it was measured against.
                 const bool is_error =
                   check.quantity == ProblemQuantity::contact_pressure_l2_error;
-                v.reference = is_error ? 0 : reference->value(check.point);
-                v.error     = v.value - v.reference;
+                v.reference =
+                  is_error ? 0 : reference->value(check.template point<dim>());
+                v.error = v.value - v.reference;
                 if (check.relative && !is_error)
                   v.error /= std::abs(v.reference);
                 v.relative = check.relative && !is_error;
@@ -476,6 +497,11 @@ namespace RingContact
         }
 
       private:
+        // Per node (its displacement unknowns): the faces of a normal
+        // condition at the node (normal_faces()).
+        using Node        = std::array<types::global_dof_index, dim>;
+        using NormalFaces = std::map<Node, std::vector<NormalFace<dim>>>;
+
         // The displacement conditions at a load state, in the order of the
         // file: at a node on two boundaries with Cartesian or polar
         // conditions, the later one decides the components both impose.
@@ -495,66 +521,9 @@ namespace RingContact
             cartesian_displacements(dof_handler, mapping, load);
           const NormalFaces faces = normal_faces(dof_handler, mapping, load);
 
-          // Normals more than 60 degrees apart are two directions: at a
-          // corner of a rectangle (90 degrees) both are imposed, while the
-          // facets of a curve meshed with a few dozen segments around are
-          // averaged.
           std::vector<NormalDisplacement<dim>> normal;
-          const double                         corner = 0.5; // cos 60 degrees
           for (const auto &[node, list] : faces)
-            {
-              // Two groups: the normals near the first one, and the others.
-              // Within a group the faces' normals are averaged: on a faceted
-              // curve the bisector, on a straight boundary the exact normal.
-              std::array<Tensor<1, dim>, 2> sum;
-              std::array<double, 2>         value = {{0, 0}};
-              for (const auto &[n, g] : list)
-                {
-                  const unsigned int group =
-                    n * list[0].first >= corner ? 0 : 1;
-                  sum[group] += n;
-                  value[group] = g; // the later condition decides
-                }
-              std::array<Tensor<1, dim>, 2> N;
-              for (unsigned int k = 0; k < 2; ++k)
-                if (sum[k].norm() > 0)
-                  N[k] = sum[k] / sum[k].norm();
-              // A Cartesian or polar condition at the node comes first: with
-              // both components imposed, the normal condition adds nothing.
-              const bool has_x = values.count(node[0]) > 0,
-                         has_y = values.count(node[1]) > 0;
-              if (has_x && has_y)
-                continue;
-              if (has_x || has_y)
-                {
-                  // The other component from the group most across the
-                  // imposed one (none if the normal is along it: the
-                  // Cartesian condition then decides).
-                  // u_b = (g - N_a u_a) / N_b; below |N_b| = 0.1 the division
-                  // would magnify the imposed u_a and g tenfold or more.
-                  const unsigned int a = has_x ? 0 : 1, b = 1 - a;
-                  const unsigned int k =
-                    std::abs(N[1][b]) > std::abs(N[0][b]) ? 1 : 0;
-                  if (std::abs(N[k][b]) >= 0.1)
-                    values[node[b]] =
-                      (value[k] - N[k][a] * values.at(node[a])) / N[k][b];
-                  continue;
-                }
-              // One direction only: the single linear condition, which the
-              // problem class makes a constraint on the component with the
-              // larger |N_a|.
-              if (N[1].norm() == 0)
-                {
-                  normal.push_back(
-                    NormalDisplacement<dim>{node, N[0], value[0]});
-                  continue;
-                }
-              // A corner: N1 . u = g1, N2 . u = g2, solved for u by Cramer's
-              // rule.
-              const double det = N[0][0] * N[1][1] - N[0][1] * N[1][0];
-              values[node[0]] = (value[0] * N[1][1] - value[1] * N[0][1]) / det;
-              values[node[1]] = (N[0][0] * value[1] - N[1][0] * value[0]) / det;
-            }
+            resolve_normal_conditions<dim>(node, list, values, normal);
           return {values, normal};
         }
 
@@ -572,9 +541,9 @@ namespace RingContact
             if (condition.type == BoundaryConditionType::displacement &&
                 !condition.normal)
               {
-                const ImposedDisplacement motion(condition,
-                                                 problem.constants,
-                                                 load.time);
+                const ImposedDisplacement<dim> motion(condition,
+                                                      problem.constants,
+                                                      load.time);
                 // The mask selects Cartesian components: a roller in y leaves
                 // u_x free. A polar condition imposes both components, which
                 // is why problem_description.cc refuses u_r or u_theta alone:
@@ -587,19 +556,16 @@ namespace RingContact
                   motion,
                   these,
                   Components::displacement_mask<dim>(condition.components[0],
-                                                     condition.components[1]));
+                                                     condition.components[1],
+                                                     condition.components[2]));
                 for (const auto &[dof, value] : these)
                   values[dof] = value;
               }
           return values;
         }
 
-        // Per node (its u_x and u_y unknowns): the outward normal and the
+        // Per node (its displacement unknowns): the outward normal and the
         // imposed value g of each face of a normal condition at the node.
-        using Node = std::array<types::global_dof_index, 2>;
-        using NormalFaces =
-          std::map<Node, std::vector<std::pair<Tensor<1, dim>, double>>>;
-
         NormalFaces
         normal_faces(const DoFHandler<dim>            &dof_handler,
                      const hp::MappingCollection<dim> &mapping,
@@ -609,12 +575,12 @@ namespace RingContact
           // unknown: quadrature point i is then where face unknown i sits, and
           // the normal there is the face's outward normal at that node, in the
           // reference configuration.
-          NormalFaces        faces;
-          const auto        &fe_collection = dof_handler.get_fe_collection();
-          hp::QCollection<1> support_points;
+          NormalFaces faces;
+          const auto &fe_collection = dof_handler.get_fe_collection();
+          hp::QCollection<dim - 1> support_points;
           for (unsigned int i = 0; i < fe_collection.size(); ++i)
-            support_points.push_back(
-              Quadrature<1>(fe_collection[i].get_unit_face_support_points(0)));
+            support_points.push_back(Quadrature<dim - 1>(
+              fe_collection[i].get_unit_face_support_points(0)));
           hp::FEFaceValues<dim>                face_values(mapping,
                                             fe_collection,
                                             support_points,
@@ -625,9 +591,9 @@ namespace RingContact
             if (condition.type == BoundaryConditionType::displacement &&
                 condition.normal)
               {
-                auto expression = make_expression(condition.expressions,
-                                                  problem.constants,
-                                                  condition.name);
+                auto expression = make_expression<dim>(condition.expressions,
+                                                       problem.constants,
+                                                       condition.name);
                 expression->set_time(load.time);
                 for (const auto &cell : dof_handler.active_cell_iterators())
                   for (const unsigned int f : cell->face_indices())
@@ -641,37 +607,32 @@ namespace RingContact
                         face_dofs.resize(fe.n_dofs_per_face(f));
                         cell->face(f)->get_dof_indices(face_dofs,
                                                        cell->active_fe_index());
-                        // The support points of the face, each with its u_x
-                        // and u_y unknowns. The positions are compared
-                        // exactly: both come from one unit point through one
-                        // mapping, so a node's two unknowns give the same
-                        // bits. Each face adds its normal to the node's list,
-                        // which boundary_motion() then averages.
-                        for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                          if (fe.face_system_to_component_index(i, f).first ==
-                              Components::ux)
-                            for (unsigned int j = 0; j < face_dofs.size(); ++j)
-                              if (fe.face_system_to_component_index(j, f)
-                                      .first == Components::uy &&
-                                  fv.quadrature_point(j) ==
-                                    fv.quadrature_point(i))
-                                faces[Node{{face_dofs[i], face_dofs[j]}}]
-                                  .emplace_back(
-                                    fv.normal_vector(i),
-                                    finite_value(expression->value(
-                                                   fv.quadrature_point(i)),
-                                                 condition,
-                                                 fv.quadrature_point(i),
-                                                 load.time));
+                        // The support points of the face, each with its
+                        // displacement unknowns (face_nodes()). Each face adds
+                        // its normal to the node's list, which
+                        // boundary_motion() then averages.
+                        for (const auto &[i, node] :
+                             face_nodes(fe, f, fv, face_dofs))
+                          {
+                            const Point<dim> &X = fv.quadrature_point(i);
+                            faces[node].push_back(
+                              NormalFace<dim>{fv.normal_vector(i),
+                                              finite_value(expression->value(X),
+                                                           condition,
+                                                           X,
+                                                           load.time),
+                                              X,
+                                              &condition});
+                          }
                       }
               }
           return faces;
         }
 
-        const Parameters         parameters;
-        const ProblemParameters &problem;
-        const LoadProgram        program;
-        const CheckedQuantities  quantities;
+        const Parameters             parameters;
+        const ProblemParameters     &problem;
+        const LoadProgram            program;
+        const CheckedQuantities<dim> quantities;
       };
 
       // The registration line: Problem/Scenario = general. Not the default
@@ -689,7 +650,10 @@ namespace RingContact
         "the subsections Body, Boundary condition and Check)",
         []() { return std::make_shared<ProblemParameters>(); },
         [](const Parameters &parameters) {
-          return std::make_unique<GeneralProblem>(parameters);
+          return std::make_unique<GeneralProblem<2>>(parameters);
+        },
+        [](const Parameters &parameters) {
+          return std::make_unique<GeneralProblem<3>>(parameters);
         }}};
     } // namespace
   }   // namespace General

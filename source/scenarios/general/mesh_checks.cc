@@ -30,6 +30,7 @@ namespace RingContact
       // as the contact problem requires (it refuses the others after this), the
       // slave surfaces of two pairs meet only on one body, where two of its
       // boundaries join.
+      template <int dim>
       void
       check_slave_surfaces_apart(
         const Triangulation<dim>                                 &triangulation,
@@ -47,18 +48,23 @@ namespace RingContact
                       const auto [at, inserted] =
                         pair_of_vertex.emplace(face->vertex_index(v), k);
                       if (!inserted && at->second != k)
-                        throw std::runtime_error(
-                          name + ": the slave surfaces " +
-                          std::to_string(pairs[at->second].first) + " and " +
-                          std::to_string(pairs[k].first) +
-                          " of two contact pairs share the vertex (" +
-                          std::to_string(face->vertex(v)[0]) + ", " +
-                          std::to_string(face->vertex(v)[1]) +
-                          "); a pressure node belongs to one pair");
+                        {
+                          std::string where;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            where += (d > 0 ? ", " : "") +
+                                     std::to_string(face->vertex(v)[d]);
+                          throw std::runtime_error(
+                            name + ": the slave surfaces " +
+                            std::to_string(pairs[at->second].first) + " and " +
+                            std::to_string(pairs[k].first) +
+                            " of two contact pairs share the vertex (" + where +
+                            "); a pressure node belongs to one pair");
+                        }
                     }
       }
     } // namespace
 
+    template <int dim>
     void
     check_bodies(const Triangulation<dim> &triangulation,
                  const Parameters         &parameters)
@@ -159,6 +165,12 @@ namespace RingContact
         }
       check_slave_surfaces_apart(triangulation, pairs, name);
     }
+
+    // The two dimensions of the program (issue 48).
+    template void
+    check_bodies<2>(const Triangulation<2> &, const Parameters &);
+    template void
+    check_bodies<3>(const Triangulation<3> &, const Parameters &);
 
   } // namespace General
 } // namespace RingContact

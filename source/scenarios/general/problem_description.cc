@@ -2,10 +2,10 @@
 //
 // `Problem/Scenario = general` poses a contact problem without a line of
 // C++: the bodies are physical groups of a gmsh mesh, the boundary
-// conditions and the checks are expressions of x, y and the pseudo-time t
-// (deal.II's FunctionParser, muparser's syntax) with the file's named
-// constants. This file reads that description: it declares the entries,
-// parses and evaluates each expression once when the file is read, and
+// conditions and the checks are expressions of x, y (and z in 3D) and the
+// pseudo-time t (deal.II's FunctionParser, muparser's syntax) with the
+// file's named constants. This file reads that description: it declares the
+// entries, parses and evaluates each expression once when the file is read, and
 // checks everything that can be checked without the mesh, each refusal a
 // ParameterError that names its entry (and so, through the reader, its
 // file and line). What needs the mesh (boundary tags that exist, a load
@@ -91,19 +91,24 @@ namespace RingContact
     }
 
 
-    // "x, y", "r, theta", "y" ... of a displacement condition. Called by
-    // the entry's action, so that a wrong list is refused at its own line.
-    // The normal component n comes alone: it fixes the direction of the
-    // condition at every node (the boundary's normal), and both unknowns
-    // of a node take part in it (components = both).
+    // "x, y", "r, theta", "y", "all" ... of a displacement condition.
+    // Called by the entry's action, so that a wrong list is refused at its
+    // own line (z in a 2D model is refused in finish(), when the model's
+    // dimension is known). The normal component n comes alone: it fixes
+    // the direction of the condition at every node (the boundary's
+    // normal), and every unknown of a node takes part in it (components =
+    // all). In 3D, r and theta are cylindrical about the z axis, and z may
+    // join them.
     void
     parse_components(const std::string   &text,
                      const std::string   &subsection,
                      bool                &polar,
                      bool                &normal,
-                     std::array<bool, 2> &components)
+                     std::array<bool, 3> &components,
+                     bool                &names_z)
     {
-      components     = {{false, false}};
+      components     = {{false, false, false}};
+      names_z        = false;
       bool cartesian = false;
       polar          = false;
       normal         = false;
@@ -120,12 +125,19 @@ namespace RingContact
                       ": the normal component n is imposed alone (the "
                       "tangential one is then free)");
             normal     = true;
-            components = {{true, true}};
+            components = {{true, true, true}};
             return;
           }
       for (const auto &word : words)
         {
-          if (word == "x" || word == "y")
+          if (word == "all")
+            {
+              cartesian  = true;
+              components = {{true, true, true}};
+            }
+          else if (word == "z")
+            components[2] = names_z = true;
+          else if (word == "x" || word == "y")
             {
               cartesian                       = true;
               components[word == "x" ? 0 : 1] = true;
@@ -140,13 +152,14 @@ namespace RingContact
                     subsection,
                     "Components",
                     "holds '" + printable(word) +
-                      "': the components are x, y (Cartesian), r, theta "
-                      "(polar, about the origin), or n (normal)");
+                      "': the components are x, y, z (Cartesian), all, r, "
+                      "theta (polar, about the origin or the z axis), or n "
+                      "(normal)");
         }
-      require(components[0] || components[1],
+      require(components[0] || components[1] || components[2],
               subsection,
               "Components",
-              "names no component (x, y, r, theta, or n)");
+              "names no component (x, y, z, all, r, theta, or n)");
       require(!(cartesian && polar),
               subsection,
               "Components",
@@ -181,6 +194,8 @@ namespace RingContact
         // x, y and t are the variables of every expression, pi its
         // constant, and 'unused' the variable of the parser below that
         // evaluates a constant: a constant of that name would shadow it.
+        // (z, the third variable in 3D, is refused there by
+        // ProblemParameters::finish(), once the model's dimension is known.)
         require(name != "x" && name != "y" && name != "t" && name != "pi" &&
                   name != "unused",
                 "Problem",
@@ -225,7 +240,7 @@ namespace RingContact
   // @sect4{Expressions}
   //
   // Every expression of the file goes through here: a condition's value, a
-  // check's reference. It is made into a FunctionParser of (x, y; t) with
+  // check's reference. It is made into a FunctionParser of (x, y[, z]; t) with
   // the constants, and evaluated once at the origin and t = 0, so that an
   // expression that does not parse or cannot be evaluated is refused while
   // the file is read, with muparser's reason, rather than at the first load
@@ -233,7 +248,8 @@ namespace RingContact
   // origin but may be on its boundary; whether a value is finite is checked
   // where and when it is used (a BoundaryDataError that names the
   // condition, the point and the time).
-  std::unique_ptr<FunctionParser<dim>>
+  template <int spacedim>
+  std::unique_ptr<FunctionParser<spacedim>>
   make_expression(const std::vector<std::string>      &expressions,
                   const std::map<std::string, double> &constants,
                   const std::string                   &what)
@@ -243,15 +259,20 @@ namespace RingContact
     // variables are the reference coordinates: a condition is written on
     // the undeformed mesh, whatever the body's motion.
     auto function =
-      std::make_unique<FunctionParser<dim>>(expressions.size(), 0.0);
-    std::string problem;
+      std::make_unique<FunctionParser<spacedim>>(expressions.size(), 0.0);
+    const std::string variables = spacedim == 2 ? "x,y" : "x,y,z";
+    const std::string named     = spacedim == 2 ? "x, y" : "x, y, z";
+    std::string       problem;
     {
       CaptureStandardError capture;
       try
         {
-          function->initialize("x,y,t", expressions, with_pi(constants), true);
+          function->initialize(variables + ",t",
+                               expressions,
+                               with_pi(constants),
+                               true);
           Vector<double> values(expressions.size());
-          function->vector_value(Point<dim>(), values);
+          function->vector_value(Point<spacedim>(), values);
         }
       catch (...)
         {
@@ -268,12 +289,22 @@ namespace RingContact
         for (const auto &e : expressions)
           text += (text.empty() ? "" : "; ") + e;
         throw std::runtime_error(what + ": the expression '" + printable(text) +
-                                 "' is not a usable function of x, y, t and "
+                                 "' is not a usable function of " + named +
+                                 ", t and "
                                  "the constants of Problem/Constants (" +
                                  printable(problem, 200) + ")");
       }
     return function;
   }
+
+  template std::unique_ptr<FunctionParser<2>>
+  make_expression<2>(const std::vector<std::string> &,
+                     const std::map<std::string, double> &,
+                     const std::string &);
+  template std::unique_ptr<FunctionParser<3>>
+  make_expression<3>(const std::vector<std::string> &,
+                     const std::map<std::string, double> &,
+                     const std::string &);
 
   // @sect4{Bodies}
   //
@@ -378,10 +409,12 @@ namespace RingContact
     // message then says which components exist and which combinations
     // are allowed.
     s.add("Components",
-          "x, y",
+          "all",
           Patterns::Anything(),
-          "Displacement: which components are imposed: x, y, "
-          "'x, y', 'r, theta' (polar about the origin: u = "
+          "Displacement: which components are imposed: all (x, y "
+          "and in 3D z), or a list of x, y, z, "
+          "or 'r, theta' (polar about the origin, in 3D about the z "
+          "axis, with z or not: u = "
           "u_r e_r + u_theta e_theta), or n: the normal "
           "displacement u . N, N the outward unit normal of "
           "the reference boundary, the tangential displacement "
@@ -392,17 +425,18 @@ namespace RingContact
           "or polar condition imposes a component the normal "
           "condition sets the other).",
           [this](const std::string &text) {
-            parse_components(text, name, polar, normal, components);
+            parse_components(text, name, polar, normal, components, names_z);
           });
     s.add("Value",
           "0; 0",
           Patterns::Anything(),
-          "Expressions of x, y (reference position [m]), t "
-          "(pseudo-time) and the constants, separated by ';': "
-          "displacement: two, in the order x; y or r; theta "
+          "Expressions of x, y, z (reference position [m]; z in 3D "
+          "only), t (pseudo-time) and the constants, separated by ';': "
+          "displacement: one per dimension, in the order x; y (; z) or "
+          "r; theta (; z) "
           "(a component not imposed is not used), or one, u . N, "
           "for Components = n [m]; traction: "
-          "tx; ty [Pa]; pressure: p [Pa]. A value that is not "
+          "tx; ty (; tz) [Pa]; pressure: p [Pa]. A value that is not "
           "a finite number where and when it is used (an "
           "imposed displacement at t = 0 too) stops the load "
           "step, the condition, point and time named.",
@@ -414,16 +448,21 @@ namespace RingContact
   }
 
   // Once the whole file is read: as many expressions as the condition has
-  // components (a displacement two even when one is imposed: the order x; y
-  // is then unambiguous), and each usable with the constants. An error of
-  // make_expression() becomes a ParameterError of the entry Value, which
-  // the reader locates at its line.
+  // components (a displacement one per dimension even when fewer are
+  // imposed: the order x; y; z is then unambiguous), and each usable with
+  // the constants. An error of make_expression() becomes a ParameterError
+  // of the entry Value, which the reader locates at its line.
   void
   BoundaryConditionParameters::finish(
-    const std::map<std::string, double> &constants) const
+    const std::map<std::string, double> &constants,
+    const unsigned int                   dimension) const
   {
+    require(dimension == 3 || !names_z,
+            name,
+            "Components",
+            "names z, but the model is two-dimensional (x, y)");
     const unsigned int expected =
-      type == BoundaryConditionType::pressure || normal ? 1 : 2;
+      type == BoundaryConditionType::pressure || normal ? 1 : dimension;
     require(expressions.size() == expected,
             name,
             "Value",
@@ -438,7 +477,10 @@ namespace RingContact
               " needs " + std::to_string(expected));
     try
       {
-        make_expression(expressions, constants, "the value");
+        if (dimension == 3)
+          make_expression<3>(expressions, constants, "the value");
+        else
+          make_expression<2>(expressions, constants, "the value");
       }
     catch (const std::exception &e)
       {
@@ -453,19 +495,24 @@ namespace RingContact
   // verdicts.csv. What the quantities are and how they are computed is in
   // quantities.cc and boundary_resultants.cc.
 
+  // "(0, 0.5)" or "(0, 0.5, 1)". Six digits name a point well enough to
+  // find it.
+  std::string
+  ProblemCheckParameters::point_text() const
+  {
+    std::ostringstream where;
+    where << std::setprecision(6) << "(";
+    for (unsigned int d = 0; d < coordinates.size(); ++d)
+      where << (d > 0 ? ", " : "") << coordinates[d];
+    return where.str() + ")";
+  }
+
   // The quantity in words, for the verdict table: "pressure at (0, 0)",
-  // "force y on 3". Six digits name a point well enough to find it.
+  // "force y on 3".
   std::string
   ProblemCheckParameters::description() const
   {
-    std::ostringstream out;
-    out << std::setprecision(6);
-    const auto at = [&]() {
-      std::ostringstream where;
-      where << std::setprecision(6) << " at (" << point[0] << ", " << point[1]
-            << ")";
-      return where.str();
-    };
+    const auto at = [&]() { return " at " + point_text(); };
     switch (quantity)
       {
         case ProblemQuantity::contact_pressure:
@@ -486,10 +533,14 @@ namespace RingContact
           return "force x on " + std::to_string(boundary_id);
         case ProblemQuantity::resultant_force_y:
           return "force y on " + std::to_string(boundary_id);
+        case ProblemQuantity::resultant_force_z:
+          return "force z on " + std::to_string(boundary_id);
         case ProblemQuantity::displacement_x:
           return "ux" + at();
         case ProblemQuantity::displacement_y:
           return "uy" + at();
+        case ProblemQuantity::displacement_z:
+          return "uz" + at();
         case ProblemQuantity::none:
           break;
       }
@@ -529,10 +580,14 @@ namespace RingContact
           return prefix + "_force_x";
         case ProblemQuantity::resultant_force_y:
           return prefix + "_force_y";
+        case ProblemQuantity::resultant_force_z:
+          return prefix + "_force_z";
         case ProblemQuantity::displacement_x:
           return prefix + "_ux";
         case ProblemQuantity::displacement_y:
           return prefix + "_uy";
+        case ProblemQuantity::displacement_z:
+          return prefix + "_uz";
         case ProblemQuantity::none:
           break;
       }
@@ -566,8 +621,10 @@ namespace RingContact
         ProblemQuantity::contact_pressure_l2_error},
        {"resultant force x", ProblemQuantity::resultant_force_x},
        {"resultant force y", ProblemQuantity::resultant_force_y},
+       {"resultant force z", ProblemQuantity::resultant_force_z},
        {"displacement x", ProblemQuantity::displacement_x},
-       {"displacement y", ProblemQuantity::displacement_y}},
+       {"displacement y", ProblemQuantity::displacement_y},
+       {"displacement z", ProblemQuantity::displacement_z}},
       "Scenario = general: none (slot not used); contact pressure at the "
       "slave node nearest to 'Point' (as Contact/Reported pressure) [Pa]; "
       "tangential traction there (friction: Cauchy, on the tangent e_z x n "
@@ -584,23 +641,22 @@ namespace RingContact
       "||p_h - p_ref|| / ||p_ref|| with p_ref the 'Reference' expression "
       "as a function of x, y (reference position) and t; the check "
       "passes when it is at most 'Tolerance' [-]; "
-      "resultant force x or y: the resultant of the traction on "
+      "resultant force x, y or z (3D): the resultant of the traction on "
       "'Boundary id', its load where it is loaded and, where its "
       "displacement is imposed, the reactions of its nodes (contact "
       "forces left out), a node shared with another boundary split "
       "between them along the directions each holds [N per unit "
-      "thickness]; displacement x or y at 'Point' (reference position) "
-      "[m].");
+      "thickness in 2D]; displacement x, y or z (3D) at 'Point' (reference "
+      "position) [m].");
     // In the reference configuration, as the boundary conditions' x and
     // y: a point on a body stays the same material point at every step.
     s.add("Point",
           "0, 0",
           Patterns::Anything(),
-          "x, y [m]: where a pressure or displacement is taken, "
-          "from where a contact width is measured.",
+          "x, y [m] (x, y, z in 3D): where a pressure or displacement is "
+          "taken, from where a contact width is measured.",
           [this](const std::string &text) {
-            const auto xy = point_from_text(text, name, "Point");
-            point         = Point<dim>(xy[0], xy[1]);
+            coordinates = coordinates_from_text(text, name, "Point");
           });
     s.add("Boundary id",
           boundary_id,
@@ -615,7 +671,7 @@ namespace RingContact
           reference,
           "0",
           "The expected value: an expression of t (the step's "
-          "pseudo-time), x, y (the point) and the constants.");
+          "pseudo-time), x, y (, z: the point) and the constants.");
     // Relative by default: a reference of the size of the answer is the
     // usual case; an absolute error is for a reference that is zero (a
     // resultant that must vanish, a displacement held at rest).
@@ -652,15 +708,36 @@ namespace RingContact
           });
   }
 
-  // The reference parsed with the constants, once the file is read (as a
-  // condition's value: the constants may come after it).
+  // The quantity and the point against the model's dimension, and the
+  // reference parsed with the constants, once the file is read (as a
+  // condition's value: the constants may come after it). A resultant does
+  // not use the point: its default "0, 0" is not refused in 3D.
   void
-  ProblemCheckParameters::finish(
-    const std::map<std::string, double> &constants) const
+  ProblemCheckParameters::finish(const std::map<std::string, double> &constants,
+                                 const unsigned int dimension) const
   {
+    const bool along_z = quantity == ProblemQuantity::resultant_force_z ||
+                         quantity == ProblemQuantity::displacement_z;
+    require(dimension == 3 || !along_z,
+            name,
+            "Quantity",
+            "is along z, but the model is two-dimensional (x, y)");
+    const bool resultant = quantity == ProblemQuantity::resultant_force_x ||
+                           quantity == ProblemQuantity::resultant_force_y ||
+                           quantity == ProblemQuantity::resultant_force_z;
+    require(resultant || coordinates.size() == dimension,
+            name,
+            "Point",
+            "has " + std::to_string(coordinates.size()) +
+              " coordinates, but the model is " +
+              (dimension == 3 ? "three-dimensional: give x, y, z" :
+                                "two-dimensional: give x, y"));
     try
       {
-        make_expression({reference}, constants, "the reference");
+        if (dimension == 3)
+          make_expression<3>({reference}, constants, "the reference");
+        else
+          make_expression<2>({reference}, constants, "the reference");
       }
     catch (const std::exception &e)
       {

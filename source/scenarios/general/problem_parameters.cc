@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/base/utilities.h>
+#include <ring_contact/input/gmsh_file.h>
 #include <ring_contact/input/parameter_checks.h>
 #include <ring_contact/materials/material.h>
 #include <ring_contact/scenarios/general/problem_description.h>
@@ -235,13 +236,14 @@ namespace RingContact
                                          ProblemQuantity::none;
                                 }),
                  checks.end());
+    find_dimension(parameters);
     // The parsers made by these checks are thrown away: the scenario makes
     // its own where it evaluates (general.cc). This pass only refuses a bad
     // expression before the mesh is read and anything is computed.
     for (const auto &condition : boundary_conditions)
-      condition.finish(constants);
+      condition.finish(constants, model_dimension);
     for (const auto &check : checks)
-      check.finish(constants);
+      check.finish(constants, model_dimension);
 
     refuse_unread_slots(parameters);
     read_old_law_names(bodies, parameters.notes);
@@ -296,6 +298,31 @@ namespace RingContact
                   ", but the load program has " + std::to_string(n_steps) +
                   " steps");
     check_boundary_conditions(pairs);
+  }
+
+
+  // The problem's dimension is the model's (issue 48): 3 for a model of
+  // volumes. A model that gmsh cannot open is said, with the reason, where
+  // the mesh is read (the same one-line error as before): taken as 2 here.
+  void
+  ProblemParameters::find_dimension(const Parameters &parameters)
+  {
+    model_dimension = 2;
+    if (parameters.mesh.source == MeshSource::gmsh_file)
+      try
+        {
+          model_dimension =
+            Geometry::model_dimension(parameters.mesh.mesh_file,
+                                      parameters.mesh.geo_numbers);
+        }
+      catch (const std::exception &)
+        {}
+    // z is the third variable of a 3D problem's expressions.
+    require(model_dimension == 2 || constants.count("z") == 0,
+            "Problem",
+            "Constants",
+            "gives a value to 'z', which every expression of a "
+            "three-dimensional model already has (x, y, z: the point)");
   }
 
 
@@ -431,7 +458,8 @@ namespace RingContact
                                  const BoundaryConditionParameters &b) {
           return !a.normal && !b.normal && a.polar == b.polar &&
                  !(a.components[0] && b.components[0]) &&
-                 !(a.components[1] && b.components[1]);
+                 !(a.components[1] && b.components[1]) &&
+                 !(a.components[2] && b.components[2]);
         };
         // Against the earlier conditions only: each clash is reported
         // once, at the later of the two slots.

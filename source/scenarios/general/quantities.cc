@@ -13,6 +13,7 @@
 
 #include <ring_contact/base/components.h>
 #include <ring_contact/base/dimension.h>
+#include <ring_contact/contact/face_kernel.h>
 #include <ring_contact/scenarios/general/general.h>
 
 #include <algorithm>
@@ -33,10 +34,10 @@ namespace RingContact
       // length element times the weight.
       template <typename Visitor>
       void
-      along_slave_surface(const ContactSurface     &slave,
-                          const SolutionState<dim> &state,
-                          const Quadrature<1>      &rule,
-                          const Visitor            &visit)
+      along_slave_surface(const ContactSurface   &slave,
+                          const SolutionState<2> &state,
+                          const Quadrature<1>    &rule,
+                          const Visitor          &visit)
       {
         std::vector<double> Phi;
         for (unsigned int s = 0; s < slave.segments().size(); ++s)
@@ -61,7 +62,8 @@ namespace RingContact
     // The boundary resultants need the mesh and the unknowns, which do not
     // exist yet when the scenario is made: they are built at the first
     // resultant asked for (resultant_force()).
-    CheckedQuantities::CheckedQuantities(const ProblemParameters &problem)
+    template <int dim>
+    CheckedQuantities<dim>::CheckedQuantities(const ProblemParameters &problem)
         : problem(problem)
     {}
 
@@ -70,57 +72,50 @@ namespace RingContact
     // Each quantity is read from the converged state through SolutionState,
     // the narrow view the problem class gives of itself; the ones that
     // need more than a line have a function of their own below.
+    template <int dim>
     double
-    CheckedQuantities::value(const ProblemCheckParameters &check,
-                             const SolutionState<dim>     &state) const
+    CheckedQuantities<dim>::value(const ProblemCheckParameters &check,
+                                  const SolutionState<dim>     &state) const
     {
       // The pair whose slave surface is nearest to the point: with several
-      // pairs, a check's point names its pair by where it lies. The slave
-      // surface is looked up for every quantity; only the pointwise
-      // tractions and the half-width use it.
-      const auto nearest          = state.contact_node_nearest_to(check.point);
-      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
+      // pairs, a check's point names its pair by where it lies. Looked up
+      // for every quantity; only the slave surface's quantities use it.
+      const auto nearest =
+        state.contact_node_nearest_to(check.template point<dim>());
       if (check.quantity == ProblemQuantity::contact_pressure ||
           check.quantity == ProblemQuantity::tangential_traction)
-        require_on_slave_surface(check, state, nearest, slave);
+        require_on_slave_surface(check, state, nearest);
       switch (check.quantity)
         {
           case ProblemQuantity::contact_pressure:
             return state.reported_pressure(nearest);
 
-          // Without friction the tangential traction has no unknown
-          // (FE_Nothing): it is zero by definition, not missing.
           case ProblemQuantity::tangential_traction:
-            {
-              const auto dof =
-                state.contact_of(nearest).nodes().tangential_dof(nearest);
-              return dof == numbers::invalid_dof_index ?
-                       0.0 :
-                       state.get_solution()(dof);
-            }
+            return tangential_traction(state, nearest);
 
           case ProblemQuantity::contact_half_width:
-            return contact_half_width(check, state, slave);
+            return contact_half_width(check, state, nearest);
 
           case ProblemQuantity::minimum_contact_pressure:
           case ProblemQuantity::maximum_contact_pressure:
           case ProblemQuantity::mean_contact_pressure:
-            return surface_pressure(check, state, slave);
+            return surface_pressure(check, state, nearest);
 
           case ProblemQuantity::contact_pressure_l2_error:
-            return pressure_l2_error(check, state, slave);
+            return pressure_l2_error(check, state, nearest);
 
+          // The components in the order x, y, z of the quantities.
           case ProblemQuantity::resultant_force_x:
           case ProblemQuantity::resultant_force_y:
-            {
-              const Tensor<1, dim> force = resultant_force(check, state);
-              return check.quantity == ProblemQuantity::resultant_force_x ?
-                       force[0] :
-                       force[1];
-            }
+          case ProblemQuantity::resultant_force_z:
+            return resultant_force(
+              check,
+              state)[static_cast<int>(check.quantity) -
+                     static_cast<int>(ProblemQuantity::resultant_force_x)];
 
           case ProblemQuantity::displacement_x:
           case ProblemQuantity::displacement_y:
+          case ProblemQuantity::displacement_z:
             return displacement(check, state);
 
           // finish() has dropped the unused slots: not reached, but a NaN
@@ -140,15 +135,16 @@ namespace RingContact
     // tolerance: any point of the surface is within it of a node, whatever
     // the mesh. Written !(d <= l) so that a distance that is not a number
     // is refused too.
+    template <>
     void
-    CheckedQuantities::require_on_slave_surface(
+    CheckedQuantities<2>::require_on_slave_surface(
       const ProblemCheckParameters &check,
-      const SolutionState<dim>     &state,
-      const types::global_dof_index nearest,
-      const ContactSurface         &slave) const
+      const SolutionState<2>       &state,
+      const types::global_dof_index nearest) const
     {
-      double distance = 0, longest = 0;
-      state.contact_of(nearest).multiplier_dof_nearest_to(check.point,
+      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
+      double                distance = 0, longest = 0;
+      state.contact_of(nearest).multiplier_dof_nearest_to(check.point<2>(),
                                                           &distance);
       for (unsigned int k = 0; k < slave.segments().size(); ++k)
         longest = std::max(longest,
@@ -157,8 +153,8 @@ namespace RingContact
       if (!(distance <= longest))
         {
           std::ostringstream where;
-          where << check.point[0] << ", " << check.point[1] << ") is "
-                << distance;
+          where << check.coordinates[0] << ", " << check.coordinates[1]
+                << ") is " << distance;
           throw std::runtime_error(
             check.name + ": the point (" + where.str() +
             " from the nearest contact node, farther than a segment of "
@@ -172,11 +168,28 @@ namespace RingContact
     // a segment, the midpoint between the two: the edge of the contact to
     // half a node spacing. (An open node's pressure is zero to the linear
     // solver's accuracy, of either sign.)
+    // Without friction the tangential traction has no unknown
+    // (FE_Nothing): it is zero by definition, not missing.
+    template <>
     double
-    CheckedQuantities::contact_half_width(const ProblemCheckParameters &check,
-                                          const SolutionState<dim>     &state,
-                                          const ContactSurface &slave) const
+    CheckedQuantities<2>::tangential_traction(
+      const SolutionState<2>       &state,
+      const types::global_dof_index nearest) const
     {
+      const auto dof =
+        state.contact_of(nearest).nodes().tangential_dof(nearest);
+      return dof == numbers::invalid_dof_index ? 0.0 :
+                                                 state.get_solution()(dof);
+    }
+
+    template <>
+    double
+    CheckedQuantities<2>::contact_half_width(
+      const ProblemCheckParameters &check,
+      const SolutionState<2>       &state,
+      const types::global_dof_index nearest) const
+    {
+      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
       // The nodes of a segment in the order of its unknowns (vertices
       // first); sorted by their parameter t, neighbours along the segment
       // are neighbours in the list, which the edge test below needs.
@@ -202,14 +215,14 @@ namespace RingContact
           // with the same answer.
           for (unsigned int k = 0; k < t.size(); ++k)
             {
-              const Point<dim> x    = slave.reference_point(s, t[k]).x;
+              const Point<2> x      = slave.reference_point(s, t[k]).x;
               const auto in_contact = [&](const types::global_dof_index dof) {
                 return state.contact_of(dof).active_set().is_active(dof) &&
                        state.reported_pressure(dof) > 0;
               };
               const bool in = in_contact(dof_at(t[k]));
               if (in)
-                width = std::max(width, x.distance(check.point));
+                width = std::max(width, x.distance(check.point<2>()));
               for (const int side : {-1, 1})
                 {
                   const int j = static_cast<int>(k) + side;
@@ -217,9 +230,9 @@ namespace RingContact
                     continue;
                   if (in_contact(dof_at(t[j])))
                     continue;
-                  const Point<dim> edge =
+                  const Point<2> edge =
                     slave.reference_point(s, 0.5 * (t[k] + t[j])).x;
-                  width = std::max(width, edge.distance(check.point));
+                  width = std::max(width, edge.distance(check.point<2>()));
                 }
             }
         }
@@ -233,13 +246,16 @@ namespace RingContact
     // pressures p = sum p_k Phi_k over the reference length divided by that
     // length, with Gauss points enough for the product of the multiplier
     // basis and the geometry's stretch.
+    template <>
     double
-    CheckedQuantities::surface_pressure(const ProblemCheckParameters &check,
-                                        const SolutionState<dim>     &state,
-                                        const ContactSurface &slave) const
+    CheckedQuantities<2>::surface_pressure(
+      const ProblemCheckParameters &check,
+      const SolutionState<2>       &state,
+      const types::global_dof_index nearest) const
     {
-      double minimum           = std::numeric_limits<double>::max(),
-             maximum           = -std::numeric_limits<double>::max();
+      const ContactSurface &slave   = state.contact_of(nearest).slave_surface();
+      double                minimum = std::numeric_limits<double>::max(),
+             maximum                = -std::numeric_limits<double>::max();
       double          integral = 0, length = 0;
       const QGauss<1> rule(slave.multiplier_basis().size() + 2);
       for (unsigned int s = 0; s < slave.segments().size(); ++s)
@@ -258,7 +274,7 @@ namespace RingContact
                           state,
                           rule,
                           [&](const double p,
-                              const Point<dim> &,
+                              const Point<2> &,
                               const double dS) {
                             integral += p * dS;
                             length += dS;
@@ -281,14 +297,17 @@ namespace RingContact
     // follows a reference that is not smooth, as Hertz's sqrt at the edge of
     // the contact (fewer points per segment read a smaller error:
     // doc/validation.md, "Figures that were in the code's comments").
+    template <>
     double
-    CheckedQuantities::pressure_l2_error(const ProblemCheckParameters &check,
-                                         const SolutionState<dim>     &state,
-                                         const ContactSurface &slave) const
+    CheckedQuantities<2>::pressure_l2_error(
+      const ProblemCheckParameters &check,
+      const SolutionState<2>       &state,
+      const types::global_dof_index nearest) const
     {
-      const auto reference = make_expression({check.reference},
-                                             problem.constants,
-                                             check.name + "/Reference");
+      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
+      const auto            reference = make_expression<2>({check.reference},
+                                                problem.constants,
+                                                check.name + "/Reference");
       reference->set_time(state.load_state().time);
       double             error = 0, norm = 0;
       const QIterated<1> rule(QGauss<1>(slave.multiplier_basis().size() + 1),
@@ -296,9 +315,9 @@ namespace RingContact
       along_slave_surface(slave,
                           state,
                           rule,
-                          [&](const double      p,
-                              const Point<dim> &X,
-                              const double      dS) {
+                          [&](const double    p,
+                              const Point<2> &X,
+                              const double    dS) {
                             const double p_ref = reference->value(X);
                             error += (p - p_ref) * (p - p_ref) * dS;
                             norm += p_ref * p_ref * dS;
@@ -307,13 +326,187 @@ namespace RingContact
     }
 
 
+    // @sect4{The slave surface's quantities in 3D}
+    //
+    // A 3D pair's slave surface is a set of bilinear quadrilaterals
+    // (ContactInterface<3>::slave_faces()), its pressure interpolated
+    // bilinearly from the nodes' reported pressures, as the multiplier is.
+    // The quantities mean what they mean in 2D, with areas for lengths: the
+    // half-width is the contact's radius about the point.
+    namespace
+    {
+      // The reported pressure p_h at the points of `rule` on every slave
+      // face of `contact`, handed to visit(p_h, X, dA) with the reference
+      // position X and the reference area element times the weight.
+      template <typename Visitor>
+      void
+      over_slave_faces(const ContactInterface<3> &contact,
+                       const SolutionState<3>    &state,
+                       const Quadrature<2>       &rule,
+                       const Visitor             &visit)
+      {
+        const FaceKernel::FaceBasis bilinear(1);
+        std::vector<double>         N;
+        std::vector<Tensor<1, 2>>   dN;
+        for (const auto &face : contact.slave_faces())
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              bilinear.evaluate(rule.point(q), N, dN);
+              double       p = 0;
+              Tensor<1, 3> X, a1, a2;
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  p += N[v] * state.reported_pressure(face.multipliers[v]);
+                  X += N[v] * face.X[v];
+                  a1 += dN[v][0] * face.X[v];
+                  a2 += dN[v][1] * face.X[v];
+                }
+              visit(p,
+                    Point<3>(X),
+                    cross_product_3d(a1, a2).norm() * rule.weight(q));
+            }
+      }
+    } // namespace
+
+    // Within a face's diagonal of a slave node: any point of the surface is.
+    template <>
+    void
+    CheckedQuantities<3>::require_on_slave_surface(
+      const ProblemCheckParameters &check,
+      const SolutionState<3>       &state,
+      const types::global_dof_index nearest) const
+    {
+      const ContactInterface<3> &contact  = state.contact_of(nearest);
+      double                     distance = 0, longest = 0;
+      contact.multiplier_dof_nearest_to(check.point<3>(), &distance);
+      for (const auto &face : contact.slave_faces())
+        longest = std::max({longest,
+                            face.X[0].distance(face.X[3]),
+                            face.X[1].distance(face.X[2])});
+      if (!(distance <= longest))
+        throw std::runtime_error(
+          check.name + ": the point " + check.point_text() + " is " +
+          std::to_string(distance) +
+          " from the nearest contact node, farther than a face of its "
+          "slave surface: give a point on a slave surface");
+    }
+
+    // Frictionless in 3D (friction is refused there): zero by definition.
+    template <>
+    double
+    CheckedQuantities<3>::tangential_traction(
+      const SolutionState<3> &,
+      const types::global_dof_index) const
+    {
+      return 0;
+    }
+
+    // The farthest node in contact (active, with a positive pressure) from
+    // the point, or the midpoint of a face edge from a node in contact to an
+    // open one: the contact's radius to half an edge, as the 2D half-width.
+    template <>
+    double
+    CheckedQuantities<3>::contact_half_width(
+      const ProblemCheckParameters &check,
+      const SolutionState<3>       &state,
+      const types::global_dof_index nearest) const
+    {
+      const auto in_contact = [&](const types::global_dof_index dof) {
+        return state.contact_of(dof).active_set().is_active(dof) &&
+               state.reported_pressure(dof) > 0;
+      };
+      const Point<3> P     = check.point<3>();
+      double         width = 0;
+      // The edges of a face in deal.II's lexicographic vertex order.
+      const std::array<std::array<unsigned int, 2>, 4> edges = {
+        {{{0, 1}}, {{2, 3}}, {{0, 2}}, {{1, 3}}}};
+      for (const auto &face : state.contact_of(nearest).slave_faces())
+        {
+          for (unsigned int v = 0; v < 4; ++v)
+            if (in_contact(face.multipliers[v]))
+              width = std::max(width, face.X[v].distance(P));
+          for (const auto &[a, b] : edges)
+            if (in_contact(face.multipliers[a]) !=
+                in_contact(face.multipliers[b]))
+              width =
+                std::max(width, (0.5 * (face.X[a] + face.X[b])).distance(P));
+        }
+      return width;
+    }
+
+    // The extremes over the nodes (open ones at zero), or the mean over the
+    // reference area, int p dA / int dA (bilinear p on a bilinear face: 3 x 3
+    // Gauss points are exact on a parallelogram).
+    template <>
+    double
+    CheckedQuantities<3>::surface_pressure(
+      const ProblemCheckParameters &check,
+      const SolutionState<3>       &state,
+      const types::global_dof_index nearest) const
+    {
+      const ContactInterface<3> &contact = state.contact_of(nearest);
+      double                     minimum = std::numeric_limits<double>::max(),
+             maximum                     = -std::numeric_limits<double>::max();
+      double integral = 0, area = 0;
+      for (const auto &face : contact.slave_faces())
+        for (const auto dof : face.multipliers)
+          {
+            minimum = std::min(minimum, state.reported_pressure(dof));
+            maximum = std::max(maximum, state.reported_pressure(dof));
+          }
+      over_slave_faces(contact,
+                       state,
+                       QGauss<2>(3),
+                       [&](const double p, const Point<3> &, const double dA) {
+                         integral += p * dA;
+                         area += dA;
+                       });
+      switch (check.quantity)
+        {
+          case ProblemQuantity::minimum_contact_pressure:
+            return minimum;
+          case ProblemQuantity::maximum_contact_pressure:
+            return maximum;
+          default:
+            return integral / area;
+        }
+    }
+
+    // ||p_h - p_ref|| / ||p_ref|| over the reference slave surface, with
+    // Gauss points on 4 x 4 pieces of each face (as the 2D rule's pieces:
+    // a reference that is not smooth, as Hertz's at the contact's edge).
+    template <>
+    double
+    CheckedQuantities<3>::pressure_l2_error(
+      const ProblemCheckParameters &check,
+      const SolutionState<3>       &state,
+      const types::global_dof_index nearest) const
+    {
+      const auto reference = make_expression<3>({check.reference},
+                                                problem.constants,
+                                                check.name + "/Reference");
+      reference->set_time(state.load_state().time);
+      double error = 0, norm = 0;
+      over_slave_faces(state.contact_of(nearest),
+                       state,
+                       QIterated<2>(QGauss<1>(3), 4),
+                       [&](const double p, const Point<3> &X, const double dA) {
+                         const double p_ref = reference->value(X);
+                         error += (p - p_ref) * (p - p_ref) * dA;
+                         norm += p_ref * p_ref * dA;
+                       });
+      return std::sqrt(error / norm);
+    }
+
     // The resultant of the traction over a boundary: its load where it is
     // loaded, its part of the reactions where it is supported
     // (BoundaryResultants, which splits a corner node's reaction between
     // the boundaries that hold it).
+    template <int dim>
     Tensor<1, dim>
-    CheckedQuantities::resultant_force(const ProblemCheckParameters &check,
-                                       const SolutionState<dim> &state) const
+    CheckedQuantities<dim>::resultant_force(
+      const ProblemCheckParameters &check,
+      const SolutionState<dim>     &state) const
     {
       // Summing the nodal forces over a boundary's nodes gave wrong resultants
       // for blocks loaded by (0.1 p, -p) with one x-support, on the support and
@@ -335,9 +528,9 @@ namespace RingContact
                                     SupportCondition::Kind::cartesian,
                  condition.components});
           resultants =
-            std::make_unique<BoundaryResultants>(state.get_dof_handler(),
-                                                 state.get_mapping(),
-                                                 supports);
+            std::make_unique<BoundaryResultants<dim>>(state.get_dof_handler(),
+                                                      state.get_mapping(),
+                                                      supports);
         }
       return resultants->resultant(check.boundary_id,
                                    state.nodal_forces().reactions(),
@@ -347,9 +540,10 @@ namespace RingContact
 
     // The displacement at a point of the mesh (in the reference
     // configuration), found in whichever cell holds it.
+    template <int dim>
     double
-    CheckedQuantities::displacement(const ProblemCheckParameters &check,
-                                    const SolutionState<dim>     &state) const
+    CheckedQuantities<dim>::displacement(const ProblemCheckParameters &check,
+                                         const SolutionState<dim> &state) const
     {
       // The triangulation is the reference configuration: point_value()
       // finds the cell that holds the point there, so the value is that of
@@ -361,19 +555,24 @@ namespace RingContact
           VectorTools::point_value(state.get_mapping(),
                                    state.get_dof_handler(),
                                    state.get_solution(),
-                                   check.point,
+                                   check.template point<dim>(),
                                    value);
         }
       catch (...)
         {
-          std::ostringstream where;
-          where << check.point[0] << ", " << check.point[1];
-          throw std::runtime_error(check.name + ": the point (" + where.str() +
-                                   ") is in no cell of the mesh");
+          throw std::runtime_error(check.name + ": the point " +
+                                   check.point_text() +
+                                   " is in no cell of the mesh");
         }
-      return value(check.quantity == ProblemQuantity::displacement_x ?
-                     Components::ux :
-                     Components::uy);
+      // The components in the order x, y, z of the quantities and of the
+      // unknowns.
+      return value(static_cast<int>(check.quantity) -
+                   static_cast<int>(ProblemQuantity::displacement_x));
     }
+
+    // The two dimensions of the program (issue 48); the slave surface's
+    // quantities of 3D are in quantities_3d.cc.
+    template class CheckedQuantities<2>;
+    template class CheckedQuantities<3>;
   } // namespace General
 } // namespace RingContact

@@ -17,6 +17,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/vector.h>
 
@@ -39,43 +40,58 @@ namespace RingContact
   {
     enum class Kind
     {
-      cartesian, ///< u_x and/or u_y
-      polar,     ///< u_r and/or u_theta about the origin
-      normal     ///< u . N, N the outward normal of the reference boundary
+      cartesian, ///< u_x, u_y and/or u_z
+      polar, ///< u_r and/or u_theta about the origin (the z axis in 3D), u_z
+      normal ///< u . N, N the outward normal of the reference boundary
     };
     types::boundary_id  boundary_id;
     Kind                kind;
-    std::array<bool, 2> components = {{true, true}}; ///< x/r, y/theta
+    std::array<bool, 3> components = {{true, true, true}}; ///< x/r, y/theta, z
 
     /// The unit directions held at the point X of the boundary, where N is
     /// its outward normal.
+    template <int dim>
     std::vector<Tensor<1, dim>>
     directions(const Point<dim> &X, const Tensor<1, dim> &N) const;
   };
 
   /// A node of a boundary face: its position, the outward normal there, its
-  /// u_x and u_y unknowns, and the integral of its shape function over the
+  /// displacement unknowns, and the integral of its shape function over the
   /// face.
+  template <int dim>
   struct BoundaryNode
   {
-    Point<dim>                             X;
-    Tensor<1, dim>                         N;
-    std::array<types::global_dof_index, 2> dofs;
-    double                                 weight;
+    Point<dim>                               X;
+    Tensor<1, dim>                           N;
+    std::array<types::global_dof_index, dim> dofs;
+    double                                   weight;
   };
 
+  /// The displacement nodes of face f of a cell of element `fe`, its
+  /// unknowns `face_dofs` and its support points in `fv`: per node, the face
+  /// index of its u_x unknown and its dim displacement unknowns.
+  template <int dim>
+  std::vector<std::pair<unsigned int, std::array<types::global_dof_index, dim>>>
+  face_nodes(const FiniteElement<dim>                   &fe,
+             const unsigned int                          f,
+             const FEFaceValues<dim>                    &fv,
+             const std::vector<types::global_dof_index> &face_dofs);
+
   /// Call `visit(cell, face, nodes)` for every boundary face with its nodes.
+  template <int dim>
   void
   for_each_boundary_face(
-    const DoFHandler<dim>                                        &dof_handler,
-    const hp::MappingCollection<dim>                             &mapping,
-    const std::function<void(const DoFHandler<dim>::active_cell_iterator &,
-                             const unsigned int,
-                             const std::vector<BoundaryNode> &)> &visit);
+    const DoFHandler<dim>            &dof_handler,
+    const hp::MappingCollection<dim> &mapping,
+    const std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &,
+           const unsigned int,
+           const std::vector<BoundaryNode<dim>> &)> &visit);
 
   /// The resultant force on boundaries, right at their corners (see the
   /// file's introduction). Built once per mesh: which boundaries hold each
   /// supported node, in which directions, with which weights.
+  template <int dim>
   class BoundaryResultants
   {
   public:
@@ -93,7 +109,7 @@ namespace RingContact
       const std::map<types::boundary_id, Tensor<1, dim>> &applied) const;
 
   private:
-    using Node = std::array<types::global_dof_index, 2>;
+    using Node = std::array<types::global_dof_index, dim>;
     /// A node's reaction s and the linear map that gives a boundary, the
     /// only one that holds the node in that direction, its part of it.
     struct Share

@@ -27,11 +27,13 @@ namespace RingContact
     /// slave and master surfaces each on one body and not the same one, the
     /// multiplier degree at most the slave body's, and the slave surfaces
     /// of two pairs apart.
+    template <int dim>
     void
     check_bodies(const Triangulation<dim> &triangulation,
                  const Parameters         &parameters);
 
     /// The quantities of the checks at a converged state.
+    template <int dim>
     class CheckedQuantities
     {
     public:
@@ -45,24 +47,31 @@ namespace RingContact
             const SolutionState<dim>     &state) const;
 
     private:
+      /// The quantities of a slave surface: that of the pair of the contact
+      /// node `nearest` to the check's point (segments in 2D,
+      /// quadrilaterals in 3D: quantities.cc and quantities_3d.cc).
+      ///
       /// A traction's point on a slave surface, else a one-line error.
       void
       require_on_slave_surface(const ProblemCheckParameters &check,
                                const SolutionState<dim>     &state,
-                               const types::global_dof_index nearest,
-                               const ContactSurface         &slave) const;
+                               const types::global_dof_index nearest) const;
+      /// The tangential traction at a node (0 without friction).
+      double
+      tangential_traction(const SolutionState<dim>     &state,
+                          const types::global_dof_index nearest) const;
       double
       contact_half_width(const ProblemCheckParameters &check,
                          const SolutionState<dim>     &state,
-                         const ContactSurface         &slave) const;
+                         const types::global_dof_index nearest) const;
       double
       pressure_l2_error(const ProblemCheckParameters &check,
                         const SolutionState<dim>     &state,
-                        const ContactSurface         &slave) const;
+                        const types::global_dof_index nearest) const;
       double
       surface_pressure(const ProblemCheckParameters &check,
                        const SolutionState<dim>     &state,
-                       const ContactSurface         &slave) const;
+                       const types::global_dof_index nearest) const;
       Tensor<1, dim>
       resultant_force(const ProblemCheckParameters &check,
                       const SolutionState<dim>     &state) const;
@@ -72,7 +81,7 @@ namespace RingContact
 
       const ProblemParameters &problem;
       /// Built at the first resultant asked for, again when the mesh changes.
-      mutable std::unique_ptr<BoundaryResultants> resultants;
+      mutable std::unique_ptr<BoundaryResultants<dim>> resultants;
       /// The SolutionState::mesh_version() they were built for.
       mutable unsigned int resultants_mesh = 0;
     };

@@ -3,10 +3,11 @@
 // and elements), the boundary conditions per boundary tag (imposed
 // displacement, traction, or pressure on the current configuration), and
 // checks of computed quantities against references, all as expressions of
-// x, y, the pseudo-time t and named constants (deal.II's FunctionParser,
-// muparser syntax). The contact pairs are subsection Contact and Contact
-// pair 2, 3, ..., the load program subsection 'Load program' with Program
-// = steps.
+// x, y (and z in 3D), the pseudo-time t and named constants (deal.II's
+// FunctionParser, muparser syntax). The problem's dimension is the gmsh
+// model's: a model of volumes is three-dimensional. The contact pairs are
+// subsection Contact and Contact pair 2, 3, ..., the load program subsection
+// 'Load program' with Program = steps.
 //
 //   subsection Problem
 //     set Scenario  = general
@@ -81,27 +82,32 @@ namespace RingContact
     BoundaryConditionType type = BoundaryConditionType::none;
     unsigned int          boundary_id;
     /// Displacement: components in polar form (u_r, u_theta about the
-    /// origin) instead of (u_x, u_y).
+    /// origin; in 3D cylindrical about the z axis) instead of (u_x, u_y).
     bool polar = false;
-    /// Displacement: which components are imposed (x/r, y/theta).
-    std::array<bool, 2> components = {{true, true}};
+    /// Displacement: which components are imposed (x/r, y/theta, z); z is
+    /// not read in 2D.
+    std::array<bool, 3> components = {{true, true, true}};
+    /// Whether Components names z itself (refused in 2D; all does not).
+    bool names_z = false;
     /// Displacement: only the normal component u . N is imposed (N the
     /// outward unit normal of the reference boundary), the tangential one
     /// is free: a roller on an inclined or curved boundary.
     bool normal = false;
-    /// The expressions of x, y and t: displacement and traction two
-    /// (the components not imposed are not used), a normal displacement
-    /// and a pressure one.
+    /// The expressions of x, y (, z) and t: displacement and traction one
+    /// per dimension (the components not imposed are not used), a normal
+    /// displacement and a pressure one.
     std::vector<std::string> expressions;
     std::string              name; ///< "Boundary condition 3"
 
     /// Declare the entries of a subsection Boundary condition k.
     void
     add_parameters(ParameterChecks::Subsection &s);
-    /// Once the file is read: the number of expressions and whether they
-    /// parse with the problem's constants.
+    /// Once the file is read: the components and the number of
+    /// expressions against the problem's dimension, and whether the
+    /// expressions parse with the problem's constants.
     void
-    finish(const std::map<std::string, double> &constants) const;
+    finish(const std::map<std::string, double> &constants,
+           const unsigned int                   dimension) const;
   };
 
   enum class ProblemQuantity
@@ -123,8 +129,10 @@ namespace RingContact
     /// of the reactions (BoundaryResultants).
     resultant_force_x,
     resultant_force_y,
+    resultant_force_z,
     displacement_x, ///< at the point (reference coordinates)
-    displacement_y
+    displacement_y,
+    displacement_z
   };
 
   /// One check of a general problem: a computed quantity against a
@@ -132,9 +140,11 @@ namespace RingContact
   struct ProblemCheckParameters
   {
     ProblemQuantity quantity = ProblemQuantity::none;
-    Point<dim>      point;
-    unsigned int    boundary_id;
-    /// The reference, an expression of x, y (the point) and t.
+    /// The point's coordinates as the file gives them (two or three: their
+    /// count is checked against the problem's dimension in finish()).
+    std::vector<double> coordinates = {0, 0};
+    unsigned int        boundary_id;
+    /// The reference, an expression of x, y (, z: the point) and t.
     std::string reference;
     double      tolerance;
     bool        relative;
@@ -143,6 +153,21 @@ namespace RingContact
     bool                      every_step;
     std::vector<unsigned int> steps; ///< invalid_unsigned_int: the last
     std::string               name;  ///< "Check 2"
+
+    /// The point in a problem of dimension spacedim.
+    template <int spacedim>
+    Point<spacedim>
+    point() const
+    {
+      Point<spacedim> p;
+      for (unsigned int d = 0; d < spacedim && d < coordinates.size(); ++d)
+        p[d] = coordinates[d];
+      return p;
+    }
+
+    /// The point as the messages write it: "(0, 0.5)".
+    std::string
+    point_text() const;
 
     /// "contact pressure at (0, 0)", "force y on 3", ...
     std::string
@@ -154,10 +179,12 @@ namespace RingContact
     /// Declare the entries of a subsection Check k.
     void
     add_parameters(ParameterChecks::Subsection &s);
-    /// Once the file is read: whether the reference parses with the
+    /// Once the file is read: the point and the quantity against the
+    /// problem's dimension, and whether the reference parses with the
     /// problem's constants.
     void
-    finish(const std::map<std::string, double> &constants) const;
+    finish(const std::map<std::string, double> &constants,
+           const unsigned int                   dimension) const;
   };
 
   /// The value of Problem/Constants, 'name = value, ...': each value a
@@ -200,6 +227,10 @@ namespace RingContact
     finish(Parameters &parameters) override;
 
   private:
+    /// The model's dimension (model_dimension), and the constants against
+    /// it.
+    void
+    find_dimension(const Parameters &parameters);
     /// The entries set in a Body or Contact pair slot beyond the numbers.
     void
     refuse_unread_slots(const Parameters &parameters) const;
@@ -231,6 +262,13 @@ namespace RingContact
       return contact_pairs;
     }
 
+    /// The gmsh model's: 3 for a model of volumes (found in finish()).
+    unsigned int
+    dimension() const override
+    {
+      return model_dimension;
+    }
+
     unsigned int
     highest_displacement_degree() const override
     {
@@ -243,12 +281,15 @@ namespace RingContact
   private:
     unsigned int number_of_bodies;
     unsigned int number_of_contact_pairs;
+    unsigned int model_dimension = 2;
   };
 
-  /// An expression of x, y and t with the problem's constants, n components
-  /// separated by ';' (deal.II's FunctionParser). Throws a one-line message
-  /// naming `what` if it does not parse or does not evaluate at the origin.
-  std::unique_ptr<FunctionParser<dim>>
+  /// An expression of x, y (, z) and t with the problem's constants, n
+  /// components separated by ';' (deal.II's FunctionParser). Throws a
+  /// one-line message naming `what` if it does not parse or does not
+  /// evaluate at the origin.
+  template <int spacedim>
+  std::unique_ptr<FunctionParser<spacedim>>
   make_expression(const std::vector<std::string>      &expressions,
                   const std::map<std::string, double> &constants,
                   const std::string                   &what);
