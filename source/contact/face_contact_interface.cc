@@ -100,7 +100,7 @@ namespace RingContact
   ContactInterface<3>::update(const Vector<double> &solution, const Pairing)
   {
     face_contact.pair(solution);
-    updated_solution = solution;
+    measure_stretches(solution);
     return states->choose_closed_nodes(solution,
                                        face_contact.weighted_gaps(),
                                        face_contact.covered(),
@@ -217,34 +217,41 @@ namespace RingContact
   ContactInterface<3>::stretch_at(
     const types::global_dof_index multiplier_dof) const
   {
-    const unsigned int k     = multiplier_nodes->index.at(multiplier_dof);
-    double             sum   = 0;
-    unsigned int       faces = 0;
+    const unsigned int k = multiplier_nodes->index.at(multiplier_dof);
+    return k < stretches.size() ? stretches[k] : 1.;
+  }
+
+  // Per node, the mean over the faces at it of the ratio of the current to
+  // the reference area spanned by the face's two edges from the node (the
+  // lexicographic order: v ^ 1 along xi_1, v ^ 2 along xi_2): one pass over
+  // the faces, at each update.
+  void
+  ContactInterface<3>::measure_stretches(const Vector<double> &solution)
+  {
+    std::vector<double>       sum(face_contact.n_nodes(), 0.);
+    std::vector<unsigned int> faces(face_contact.n_nodes(), 0);
     for (const auto &face : face_contact.slave_faces())
       for (unsigned int v = 0; v < 4; ++v)
-        if (face.node[v] == k)
-          {
-            // The edges from vertex v along the face's two directions (the
-            // lexicographic order: v ^ 1 along xi_1, v ^ 2 along xi_2).
-            const auto area = [&](const bool moved) {
-              Tensor<1, 3> a1, a2;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const auto x = [&](const unsigned int w) {
-                    return face.reference[w][d] +
-                           (moved && updated_solution.size() > 0 ?
-                              updated_solution(face.u_dofs[w][d]) :
-                              0.);
-                  };
-                  a1[d] = x(v ^ 1) - x(v);
-                  a2[d] = x(v ^ 2) - x(v);
-                }
-              return cross_product_3d(a1, a2).norm();
-            };
-            sum += area(true) / area(false);
-            ++faces;
-          }
-    return faces > 0 ? sum / faces : 1.;
+        {
+          const auto area = [&](const bool moved) {
+            Tensor<1, 3> a1, a2;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const auto x = [&](const unsigned int w) {
+                  return face.reference[w][d] +
+                         (moved ? solution(face.u_dofs[w][d]) : 0.);
+                };
+                a1[d] = x(v ^ 1) - x(v);
+                a2[d] = x(v ^ 2) - x(v);
+              }
+            return cross_product_3d(a1, a2).norm();
+          };
+          sum[face.node[v]] += area(true) / area(false);
+          ++faces[face.node[v]];
+        }
+    stretches.resize(sum.size());
+    for (unsigned int k = 0; k < sum.size(); ++k)
+      stretches[k] = faces[k] > 0 ? sum[k] / faces[k] : 1.;
   }
 
   // Over each slave face with the 3 x 3 Gauss rule, at the reference and

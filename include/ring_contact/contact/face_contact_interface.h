@@ -185,6 +185,10 @@ namespace RingContact
     /// @}
 
   private:
+    /// The stretches of the nodes at `solution` (stretch_at()).
+    void
+    measure_stretches(const Vector<double> &solution);
+
     /// Whether each node is closed (the ActiveSet's choice, for FaceContact).
     std::vector<bool>
     closed_nodes() const;
@@ -195,8 +199,8 @@ namespace RingContact
     const bool   small_strain_model;
     bool         geometrically_linear;
     FaceContact  face_contact;
-    /// The solution of the last update() (stretch_at()).
-    Vector<double>                         updated_solution;
+    /// Each node's stretch at the last update() (stretch_at()).
+    std::vector<double>                    stretches;
     std::unique_ptr<const MultiplierNodes> multiplier_nodes;
     std::unique_ptr<ActiveSet>             states;
     /// The reference positions of the multiplier nodes.
