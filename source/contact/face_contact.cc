@@ -26,9 +26,11 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace RingContact
 {
@@ -134,6 +136,22 @@ namespace RingContact
                                  " surface (boundary tag " +
                                  std::to_string(tag) + ") has no faces");
       return faces;
+    }
+
+    /// The unit normal of a face (its nodes) at xi, a1 x a2: out of its
+    /// cell, as the faces are oriented.
+    Tensor<1, 3>
+    unit_normal(const std::vector<Vector3<double>> &nodes, const Point<2> &xi)
+    {
+      std::vector<double>       N;
+      std::vector<Tensor<1, 2>> dN;
+      bilinear().evaluate(xi, N, dN);
+      const auto   p = FaceKernel::evaluate(nodes, N, dN);
+      const auto   a = FaceClipping::cross(p.a1, p.a2);
+      Tensor<1, 3> n;
+      for (unsigned int d = 0; d < 3; ++d)
+        n[d] = a[d];
+      return n / n.norm();
     }
 
     /// Whether a face is a parallelogram (x0 - x1 - x2 + x3 = 0 relative to
@@ -259,6 +277,154 @@ namespace RingContact
       FaceKernel::FaceSearch               search;
     };
 
+    /// Where a master face comes nearest to a slave point: its closest
+    /// point inside the face (`inside`), or else the nearest point of the
+    /// face's four straight edges; the distance, the face's unit normal
+    /// there and the point's xi.
+    struct Hit
+    {
+      unsigned int face;
+      double       distance;
+      Tensor<1, 3> normal;
+      Point<2>     xi;
+      bool         inside;
+    };
+
+    Hit
+    hit_face(const std::vector<Vector3<double>> &nodes,
+             const unsigned int                  face,
+             const Vector3<double>              &x)
+    {
+      const auto found = FaceKernel::closest_point(bilinear(), nodes, x);
+      if (found.converged && found.inside &&
+          PointToFace::is_minimum(bilinear(), nodes, x, found.xi))
+        return {
+          face, found.distance, unit_normal(nodes, found.xi), found.xi, true};
+      // The edges in deal.II's lexicographic order of the vertices: 0-1 at
+      // xi_2 = 0, 2-3 at xi_2 = 1, 0-2 at xi_1 = 0, 1-3 at xi_1 = 1.
+      const std::array<std::array<unsigned int, 2>, 4> edges = {
+        {{{0, 1}}, {{2, 3}}, {{0, 2}}, {{1, 3}}}};
+      Hit best{face, std::numeric_limits<double>::max(), {}, {}, false};
+      for (unsigned int e = 0; e < 4; ++e)
+        {
+          const auto  &a = nodes[edges[e][0]], &b = nodes[edges[e][1]];
+          Tensor<1, 3> ab, ax;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              ab[d] = b[d] - a[d];
+              ax[d] = x[d] - a[d];
+            }
+          const double t = std::min(1., std::max(0., ax * ab / (ab * ab)));
+          const double distance = (ax - t * ab).norm();
+          if (distance < best.distance)
+            {
+              best.distance = distance;
+              best.xi       = e < 2 ? Point<2>(t, e) : Point<2>(e - 2, t);
+            }
+        }
+      best.normal = unit_normal(nodes, best.xi);
+      return best;
+    }
+
+    /// A tie: the master faces that come nearest to a slave point x within
+    /// `tolerance` of the nearest, two or more of them (the point faces a
+    /// master vertex or edge, as where the meshes match; or it lies behind
+    /// one where the master bends towards it, as a penetrated concave
+    /// master, where no face holds its closest point inside). The tie's
+    /// normal is the mean of theirs, its partner the point where the line
+    /// through x along it meets one of them (else the nearest one's point):
+    /// PointToFace::Tie, and its face. None otherwise. The tolerance is
+    /// 1e-5 of the slave face (gmsh puts the nodes of two meshes at the
+    /// same place only to about 1e-9: a test at round-off missed every tie
+    /// in 2D).
+    std::optional<std::pair<unsigned int, PointToFace::Tie>>
+    find_tie(const std::vector<Hit>                     &hits,
+             const double                                tolerance,
+             const std::vector<FaceKernel::SurfaceFace> &faces,
+             const Vector3<double>                      &x)
+    {
+      double nearest = std::numeric_limits<double>::max();
+      for (const Hit &hit : hits)
+        nearest = std::min(nearest, hit.distance);
+      Tensor<1, 3>     sum;
+      std::vector<Hit> tied;
+      for (const Hit &hit : hits)
+        if (hit.distance <= nearest + tolerance)
+          {
+            sum += hit.normal;
+            tied.push_back(hit);
+          }
+      if (tied.size() < 2 || sum.norm() == 0)
+        return {};
+      // The line through x along the normal as a plane point: the plane
+      // through x normal to it, at its origin.
+      FaceClipping::Plane<double> line;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          line.centre[d] = x[d];
+          line.normal[d] = sum[d] / sum.norm();
+        }
+      const Vector3<double> other = std::abs(line.normal[0]) < 0.9 ?
+                                      Vector3<double>{{1, 0, 0}} :
+                                      Vector3<double>{{0, 1, 0}};
+      line.e1 = FaceClipping::unit(FaceClipping::cross(line.normal, other));
+      line.e2 = FaceClipping::cross(line.normal, line.e1);
+      for (const Hit &hit : tied)
+        {
+          const auto on_face =
+            FaceKernel::find_on_face(bilinear(),
+                                     faces[hit.face].nodes,
+                                     line,
+                                     FaceClipping::Vector2<double>{{0, 0}});
+          const double slack = 1e-9;
+          if (on_face.converged && on_face.xi[0] > -slack &&
+              on_face.xi[0] < 1 + slack && on_face.xi[1] > -slack &&
+              on_face.xi[1] < 1 + slack)
+            {
+              Point<2> xi;
+              for (unsigned int i = 0; i < 2; ++i)
+                xi[i] = std::min(1., std::max(0., on_face.xi[i]));
+              return std::make_pair(hit.face,
+                                    PointToFace::Tie{line.normal, xi});
+            }
+        }
+      return std::make_pair(tied.front().face,
+                            PointToFace::Tie{line.normal, tied.front().xi});
+    }
+
+    /// A point whose nearest master point is on a face's free edge (no
+    /// face holds it inside, none ties): that point and the face's normal
+    /// (PointToFace::Tie) if x lies behind the face there (penetrating);
+    /// none in front of it.
+    std::optional<std::pair<unsigned int, PointToFace::Tie>>
+    behind_free_edge(const std::vector<Hit>                     &hits,
+                     const std::vector<FaceKernel::SurfaceFace> &faces,
+                     const Vector3<double>                      &x)
+    {
+      const auto nearest = std::min_element(hits.begin(),
+                                            hits.end(),
+                                            [](const Hit &a, const Hit &b) {
+                                              return a.distance < b.distance;
+                                            });
+      if (nearest == hits.end())
+        return {};
+      std::vector<double>       N;
+      std::vector<Tensor<1, 2>> dN;
+      bilinear().evaluate(nearest->xi, N, dN);
+      const auto on_edge =
+        FaceKernel::evaluate(faces[nearest->face].nodes, N, dN).x;
+      double signed_distance = 0;
+      for (unsigned int d = 0; d < 3; ++d)
+        signed_distance += (x[d] - on_edge[d]) * nearest->normal[d];
+      if (!(signed_distance < 0))
+        return {};
+      Vector3<double> normal;
+      for (unsigned int d = 0; d < 3; ++d)
+        normal[d] = nearest->normal[d];
+      return std::make_pair(nearest->face,
+                            PointToFace::Tie{normal, nearest->xi});
+    }
+
     PlacedSurface
     place(const std::vector<FaceContact::Face> &faces,
           const std::function<
@@ -374,27 +540,48 @@ namespace RingContact
             std::vector<Tensor<1, 2>> dN;
             bilinear().evaluate(points[q].xi, N, dN);
             const auto x = FaceKernel::evaluate(xs, N, dN).x;
-            PointPair  best{s, q, numbers::invalid_unsigned_int};
-            double     nearest = std::numeric_limits<double>::max();
+            // The faces near the point, each where it comes nearest.
+            std::vector<Hit> hits;
             for (const unsigned int m :
                  on.search.near(Point<3>(x[0], x[1], x[2]), diameter))
               {
                 near.insert(m);
-                const auto found =
-                  FaceKernel::closest_point(bilinear(), on.faces[m].nodes, x);
-                if (found.converged && found.inside &&
-                    found.distance < nearest &&
-                    PointToFace::is_minimum(
-                      bilinear(), on.faces[m].nodes, x, found.xi))
-                  {
-                    nearest = found.distance;
-                    best    = {s, q, m};
-                  }
+                hits.push_back(hit_face(on.faces[m].nodes, m, x));
               }
-            // No master face under the point (beyond the master's edge):
-            // it adds nothing, as a slave segment past the master does in 2D.
-            if (best.master_face == numbers::invalid_unsigned_int)
+            const auto nearest_inside = std::min_element(
+              hits.begin(), hits.end(), [](const Hit &a, const Hit &b) {
+                return a.inside > b.inside ||
+                       (a.inside == b.inside && a.distance < b.distance);
+              });
+            const bool inside =
+              nearest_inside != hits.end() && nearest_inside->inside;
+            // A tie: in small strain always; in finite strain where no face
+            // holds the closest point inside (behind a master edge), as
+            // otherwise the face met first, whose normal moves with its own
+            // nodes, which the pair's unknowns hold (a tie's normal is held
+            // fixed in the tangent).
+            std::vector<Hit> tie_hits;
+            for (const Hit &hit : hits)
+              if (hit.inside == inside || !inside)
+                tie_hits.push_back(hit);
+            const auto tie =
+              geometrically_linear || !inside ?
+                find_tie(tie_hits, 1e-5 * diameter, on.faces, x) :
+                std::nullopt;
+            // No face holds the closest point inside and none ties: the
+            // point is beyond the master's free edge. Behind the master
+            // face there (penetrating), it is pushed out through the edge's
+            // nearest point along the face's normal (the 2D nodal scheme
+            // pairs it with the segment's end); in front, it adds nothing.
+            const auto partner =
+              tie || inside ? tie : behind_free_edge(hits, on.faces, x);
+            if (!inside && !partner)
               continue;
+            PointPair best{s,
+                           q,
+                           partner ? partner->first : nearest_inside->face};
+            if (partner)
+              best.tie = partner->second;
             point_pairs.push_back(best);
             overlapping.emplace_back(s, best.master_face);
             const auto terms =
@@ -404,7 +591,8 @@ namespace RingContact
                                                current(master[best.master_face],
                                                        solution),
                                                {},
-                                               points[q]);
+                                               points[q],
+                                               best.tie ? &*best.tie : nullptr);
             // A Gauss point reaches the face's four nodes, a vertex its own.
             for (unsigned int k = 0; k < 4; ++k)
               {
@@ -520,7 +708,13 @@ namespace RingContact
     const auto mg = geometrically_linear ? ad_nodes(m.reference, n, none) : xm;
     const auto terms =
       point != nullptr ?
-        PointToFace::point_terms(sg, mg, xs, xm, lambda, points[point->point]) :
+        PointToFace::point_terms(sg,
+                                 mg,
+                                 xs,
+                                 xm,
+                                 lambda,
+                                 points[point->point],
+                                 point->tie ? &*point->tie : nullptr) :
         Mortar3D::pair_terms(sg,
                              mg,
                              xs,

@@ -199,6 +199,10 @@ namespace RingContact
       {
         // In 3D the master vertices' loads (master_load_ratios()); the
         // same warning, with the figures measured on the 3D patch test.
+        // Within 0.2 % is a match: on a faceted curved surface whose
+        // vertices face each other across a gap, the point-wise and the
+        // segment-based loads differ by about 0.1 % (the curvature's, not
+        // the meshes'; doc/validation.md, "2D by extrusion").
         const auto [slave, master] = parameters.contact_pairs()[pair];
         const auto pointwise =
           make_contact_interface(slave, master, scheme, true);
@@ -206,7 +210,7 @@ namespace RingContact
           slave, master, IntegrationScheme::parse("segment-based"), true);
         const auto [lowest, highest] =
           master_load_ratios(*pointwise, *mortar, dof_handler.n_dofs());
-        if (!(std::max(1 - lowest, highest - 1) > 1e-3))
+        if (!(std::max(1 - lowest, highest - 1) > 2e-3))
           return;
         log << std::setprecision(3) << "Warning: the " << scheme.name()
             << " scheme does not pass the contact patch test on the pair "

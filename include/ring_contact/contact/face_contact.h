@@ -46,6 +46,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -202,10 +203,12 @@ namespace RingContact
 
   private:
     /// A point of a slave face (PointToFace::SlavePoint, by its index)
-    /// with the master face of its closest point.
+    /// with the master face of its closest point; in small strain, where
+    /// that point ties between master faces, the Tie's partner there.
     struct PointPair
     {
-      unsigned int slave_face, point, master_face;
+      unsigned int                    slave_face, point, master_face;
+      std::optional<PointToFace::Tie> tie = {};
     };
 
     /// A face's node positions at `solution` (the reference + u).

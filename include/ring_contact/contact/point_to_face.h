@@ -72,6 +72,19 @@ namespace RingContact
       return points;
     }
 
+    /// A slave point whose closest points on two or more master faces are
+    /// as near (a tie: the point faces a master vertex or edge, as where
+    /// the meshes match): its partner is where the line through it along
+    /// `normal`, the mean of those faces' normals, meets the master face,
+    /// at `xi`; the gap and the forces are along `normal`. The 2D nodal
+    /// scheme takes the vertex and its normal at a tie. Small strain only,
+    /// where both are constants of the reference configuration.
+    struct Tie
+    {
+      Vector3<double> normal;
+      Point<2>        xi;
+    };
+
     /// The values of a point's numbers.
     template <typename Number>
     Vector3<double>
@@ -117,6 +130,8 @@ namespace RingContact
     /// found again here (closest_point(), in the values), so that the terms
     /// are a function of the positions alone; the gaps with the positions
     /// `slave` and `master` (PairTerms, as mortar_3d.h's pair_terms()).
+    /// `tie`, if given, is the point's partner instead of its closest
+    /// point (Tie).
     template <typename Number>
     Mortar3D::PairTerms<Number>
     point_terms(const std::vector<Vector3<Number>> &slave_geometry,
@@ -124,7 +139,8 @@ namespace RingContact
                 const std::vector<Vector3<Number>> &slave,
                 const std::vector<Vector3<Number>> &master,
                 const std::vector<Number>          &lambda,
-                const SlavePoint                   &point)
+                const SlavePoint                   &point,
+                const Tie                          *tie = nullptr)
     {
       static const FaceBasis    basis(1);
       std::vector<double>       N;
@@ -155,16 +171,21 @@ namespace RingContact
       for (unsigned int k = 0; k < 4; ++k)
         for (unsigned int d = 0; d < 3; ++d)
           x_g[d] += N[k] * slave_geometry[k][d];
+      // (At a tie the partner and the normal are the Tie's constants.)
       const auto found =
-        FaceKernel::closest_point(basis,
-                                  FaceKernel::values(master_geometry),
-                                  values(x_g));
+        tie != nullptr ?
+          FaceKernel::ClosestPoint{tie->xi, true, true, 0.} :
+          FaceKernel::closest_point(basis,
+                                    FaceKernel::values(master_geometry),
+                                    values(x_g));
       if (!found.converged)
         throw std::runtime_error(
           "a slave point's closest point on its master face was lost");
       const Point<2> &xi_m0 = found.xi;
       const auto      xi =
-        FaceKernel::linearised_closest_xi(basis, master_geometry, x_g, xi_m0);
+        tie != nullptr ?
+               FaceClipping::Vector2<Number>{{xi_m0[0], xi_m0[1]}} :
+               FaceKernel::linearised_closest_xi(basis, master_geometry, x_g, xi_m0);
       const FaceKernel::ShapeDerivatives s(basis, xi_m0);
       const Number        dxi[2] = {xi[0] - xi_m0[0], xi[1] - xi_m0[1]};
       std::vector<Number> Phi(4);
@@ -180,8 +201,10 @@ namespace RingContact
                           s.d2N[b][i][1] * dxi[1]) *
                          master_geometry[b][d];
           }
-      const Vector3<Number> n =
-        FaceClipping::unit(FaceClipping::cross(a[0], a[1]));
+      Vector3<Number> n = FaceClipping::unit(FaceClipping::cross(a[0], a[1]));
+      if (tie != nullptr)
+        for (unsigned int d = 0; d < 3; ++d)
+          n[d] = tie->normal[d];
       // The gap and the terms.
       Number gap = 0, pressure = 0;
       for (unsigned int d = 0; d < 3; ++d)
