@@ -240,92 +240,6 @@ namespace RingContact
     }
 
 
-    // The pressure over a whole slave surface: its extremes over the nodes
-    // (every node, open ones at zero: a press fit with a node open has a
-    // minimum of 0), or its mean, the integral of the interpolated nodal
-    // pressures p = sum p_k Phi_k over the reference length divided by that
-    // length, with Gauss points enough for the product of the multiplier
-    // basis and the geometry's stretch.
-    template <>
-    double
-    CheckedQuantities<2>::surface_pressure(
-      const ProblemCheckParameters &check,
-      const SolutionState<2>       &state,
-      const types::global_dof_index nearest) const
-    {
-      const ContactSurface &slave   = state.contact_of(nearest).slave_surface();
-      double                minimum = std::numeric_limits<double>::max(),
-             maximum                = -std::numeric_limits<double>::max();
-      double          integral = 0, length = 0;
-      const QGauss<1> rule(slave.multiplier_basis().size() + 2);
-      for (unsigned int s = 0; s < slave.segments().size(); ++s)
-        {
-          // A cyclic sector's rotated copies hold the originals' unknowns.
-          const auto &segment = slave.segments()[s];
-          if (segment.is_copy)
-            continue;
-          for (const auto dof : segment.multiplier_dofs)
-            {
-              minimum = std::min(minimum, state.reported_pressure(dof));
-              maximum = std::max(maximum, state.reported_pressure(dof));
-            }
-        }
-      along_slave_surface(slave,
-                          state,
-                          rule,
-                          [&](const double p,
-                              const Point<2> &,
-                              const double dS) {
-                            integral += p * dS;
-                            length += dS;
-                          });
-      switch (check.quantity)
-        {
-          case ProblemQuantity::minimum_contact_pressure:
-            return minimum;
-          case ProblemQuantity::maximum_contact_pressure:
-            return maximum;
-          default:
-            return integral / length;
-        }
-    }
-
-
-    // ||p_h - p_ref|| / ||p_ref|| over the slave surface, in the reference
-    // configuration (the expression's x and y, as every check's). The rule,
-    // Gauss points on 8 pieces of each segment, integrates p_h^2 exactly and
-    // follows a reference that is not smooth, as Hertz's sqrt at the edge of
-    // the contact (fewer points per segment read a smaller error:
-    // doc/validation.md, "Figures that were in the code's comments").
-    template <>
-    double
-    CheckedQuantities<2>::pressure_l2_error(
-      const ProblemCheckParameters &check,
-      const SolutionState<2>       &state,
-      const types::global_dof_index nearest) const
-    {
-      const ContactSurface &slave = state.contact_of(nearest).slave_surface();
-      const auto            reference = make_expression<2>({check.reference},
-                                                problem.constants,
-                                                check.name + "/Reference");
-      reference->set_time(state.load_state().time);
-      double             error = 0, norm = 0;
-      const QIterated<1> rule(QGauss<1>(slave.multiplier_basis().size() + 1),
-                              8);
-      along_slave_surface(slave,
-                          state,
-                          rule,
-                          [&](const double    p,
-                              const Point<2> &X,
-                              const double    dS) {
-                            const double p_ref = reference->value(X);
-                            error += (p - p_ref) * (p - p_ref) * dS;
-                            norm += p_ref * p_ref * dS;
-                          });
-      return std::sqrt(error / norm);
-    }
-
-
     // @sect4{The slave surface's quantities in 3D}
     //
     // A 3D pair's slave surface is a set of bilinear quadrilaterals
@@ -434,33 +348,124 @@ namespace RingContact
       return width;
     }
 
-    // The extremes over the nodes (open ones at zero), or the mean over the
-    // reference area, int p dA / int dA (bilinear p on a bilinear face: 3 x 3
-    // Gauss points are exact on a parallelogram).
-    template <>
+    // @sect4{The pressure over a whole slave surface, in either dimension}
+    //
+    // The surface's segments (2D) or faces (3D) walked with a rule for the
+    // mean or for the L2 error, and its nodes; the quantities themselves
+    // are written once, below.
+    namespace
+    {
+      // What the walk's rule is for.
+      enum class Rule
+      {
+        mean, ///< Gauss points enough for p times the geometry's stretch
+        /// Gauss points on pieces of each segment or face: p_h^2 exactly,
+        /// and a reference that is not smooth, as Hertz's sqrt at the edge
+        /// of the contact (fewer points per segment read a smaller error:
+        /// doc/validation.md, "Figures that were in the code's comments").
+        error
+      };
+
+      // The 2D slave surface of the pair of node `nearest`: 8 pieces per
+      // segment for the error.
+      template <typename Visitor>
+      void
+      walk_slave_surface(const SolutionState<2>       &state,
+                         const types::global_dof_index nearest,
+                         const Rule                    rule,
+                         const Visitor                &visit)
+      {
+        const ContactSurface &slave = state.contact_of(nearest).slave_surface();
+        const unsigned int    n     = slave.multiplier_basis().size();
+        if (rule == Rule::mean)
+          along_slave_surface(slave, state, QGauss<1>(n + 2), visit);
+        else
+          along_slave_surface(slave,
+                              state,
+                              QIterated<1>(QGauss<1>(n + 1), 8),
+                              visit);
+      }
+
+      // The 3D slave surface: 3 x 3 Gauss points per face (exact for the
+      // bilinear p on a parallelogram), 4 x 4 pieces per face for the
+      // error.
+      template <typename Visitor>
+      void
+      walk_slave_surface(const SolutionState<3>       &state,
+                         const types::global_dof_index nearest,
+                         const Rule                    rule,
+                         const Visitor                &visit)
+      {
+        if (rule == Rule::mean)
+          over_slave_faces(state.contact_of(nearest),
+                           state,
+                           QGauss<2>(3),
+                           visit);
+        else
+          over_slave_faces(state.contact_of(nearest),
+                           state,
+                           QIterated<2>(QGauss<1>(3), 4),
+                           visit);
+      }
+
+      // The multiplier unknowns of the slave surface (a cyclic sector's
+      // rotated copies hold the originals' and are left out), each as
+      // often as its segments or faces name it.
+      std::vector<types::global_dof_index>
+      slave_nodes(const SolutionState<2>       &state,
+                  const types::global_dof_index nearest)
+      {
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &segment :
+             state.contact_of(nearest).slave_surface().segments())
+          if (!segment.is_copy)
+            dofs.insert(dofs.end(),
+                        segment.multiplier_dofs.begin(),
+                        segment.multiplier_dofs.end());
+        return dofs;
+      }
+
+      std::vector<types::global_dof_index>
+      slave_nodes(const SolutionState<3>       &state,
+                  const types::global_dof_index nearest)
+      {
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &face : state.contact_of(nearest).slave_faces())
+          dofs.insert(dofs.end(),
+                      face.multipliers.begin(),
+                      face.multipliers.end());
+        return dofs;
+      }
+    } // namespace
+
+    // Its extremes over the nodes (every node, open ones at zero: a press
+    // fit with a node open has a minimum of 0), or its mean, the integral
+    // of the interpolated nodal pressures over the reference length (area)
+    // divided by that length (area).
+    template <int dim>
     double
-    CheckedQuantities<3>::surface_pressure(
+    CheckedQuantities<dim>::surface_pressure(
       const ProblemCheckParameters &check,
-      const SolutionState<3>       &state,
+      const SolutionState<dim>     &state,
       const types::global_dof_index nearest) const
     {
-      const ContactInterface<3> &contact = state.contact_of(nearest);
-      double                     minimum = std::numeric_limits<double>::max(),
-             maximum                     = -std::numeric_limits<double>::max();
-      double integral = 0, area = 0;
-      for (const auto &face : contact.slave_faces())
-        for (const auto dof : face.multipliers)
-          {
-            minimum = std::min(minimum, state.reported_pressure(dof));
-            maximum = std::max(maximum, state.reported_pressure(dof));
-          }
-      over_slave_faces(contact,
-                       state,
-                       QGauss<2>(3),
-                       [&](const double p, const Point<3> &, const double dA) {
-                         integral += p * dA;
-                         area += dA;
-                       });
+      double minimum  = std::numeric_limits<double>::max(),
+             maximum  = -std::numeric_limits<double>::max();
+      double integral = 0, measure = 0;
+      for (const auto dof : slave_nodes(state, nearest))
+        {
+          minimum = std::min(minimum, state.reported_pressure(dof));
+          maximum = std::max(maximum, state.reported_pressure(dof));
+        }
+      walk_slave_surface(state,
+                         nearest,
+                         Rule::mean,
+                         [&](const double p,
+                             const Point<dim> &,
+                             const double dS) {
+                           integral += p * dS;
+                           measure += dS;
+                         });
       switch (check.quantity)
         {
           case ProblemQuantity::minimum_contact_pressure:
@@ -468,33 +473,34 @@ namespace RingContact
           case ProblemQuantity::maximum_contact_pressure:
             return maximum;
           default:
-            return integral / area;
+            return integral / measure;
         }
     }
 
-    // ||p_h - p_ref|| / ||p_ref|| over the reference slave surface, with
-    // Gauss points on 4 x 4 pieces of each face (as the 2D rule's pieces:
-    // a reference that is not smooth, as Hertz's at the contact's edge).
-    template <>
+    // ||p_h - p_ref|| / ||p_ref|| over the slave surface, in the reference
+    // configuration (the expression's x, y (, z), as every check's).
+    template <int dim>
     double
-    CheckedQuantities<3>::pressure_l2_error(
+    CheckedQuantities<dim>::pressure_l2_error(
       const ProblemCheckParameters &check,
-      const SolutionState<3>       &state,
+      const SolutionState<dim>     &state,
       const types::global_dof_index nearest) const
     {
-      const auto reference = make_expression<3>({check.reference},
-                                                problem.constants,
-                                                check.name + "/Reference");
+      const auto reference = make_expression<dim>({check.reference},
+                                                  problem.constants,
+                                                  check.name + "/Reference");
       reference->set_time(state.load_state().time);
       double error = 0, norm = 0;
-      over_slave_faces(state.contact_of(nearest),
-                       state,
-                       QIterated<2>(QGauss<1>(3), 4),
-                       [&](const double p, const Point<3> &X, const double dA) {
-                         const double p_ref = reference->value(X);
-                         error += (p - p_ref) * (p - p_ref) * dA;
-                         norm += p_ref * p_ref * dA;
-                       });
+      walk_slave_surface(state,
+                         nearest,
+                         Rule::error,
+                         [&](const double      p,
+                             const Point<dim> &X,
+                             const double      dS) {
+                           const double p_ref = reference->value(X);
+                           error += (p - p_ref) * (p - p_ref) * dS;
+                           norm += p_ref * p_ref * dS;
+                         });
       return std::sqrt(error / norm);
     }
 
