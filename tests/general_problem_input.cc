@@ -1,7 +1,8 @@
 // A general problem (Problem/Scenario = general) with bad input gets a
 // one-line error that names what is wrong, never a crash or a silently
-// ignored entry: each case changes one thing in prm/two_blocks.prm (which
-// itself solves, see the test two_blocks) and runs the real executable.
+// ignored entry: each case changes one thing in prm/two_blocks.prm (or, for
+// the 3D cases, prm/two_blocks_3d.prm; each solves itself, see the tests
+// two_blocks and two_blocks_3d) and runs the real executable.
 #include "run_program.h"
 
 #include <fstream>
@@ -11,18 +12,19 @@ using RingContactTests::check;
 
 namespace
 {
-  // prm/two_blocks.prm with the mesh found from the test's folder, without
-  // output, and `changes` after it.
+  // prm/two_blocks.prm (or `model`.prm) with the mesh found from the
+  // test's folder, without output, and `changes` after it.
   void
   expect_error(const std::string &name,
                const std::string &changes,
-               const std::string &expected)
+               const std::string &expected,
+               const std::string &model = "two_blocks")
   {
     {
       std::ofstream prm(name + ".prm");
-      prm << "include " SOURCE_DIR "/../prm/two_blocks.prm\n"
-          << "subsection Mesh\n set Mesh file = " SOURCE_DIR
-             "/../meshes/two_blocks.geo\nend\n"
+      prm << "include " SOURCE_DIR "/../prm/" << model << ".prm\n"
+          << "subsection Mesh\n set Mesh file = " SOURCE_DIR "/../meshes/"
+          << model << ".geo\nend\n"
           << "subsection Output\n set VTU interval = 0\n"
              " set Write history = false\n set Print timing = false\n"
              " set Print steps = false\nend\n"
@@ -227,6 +229,29 @@ main()
   expect_error("quantity_along_z_in_two_dimensions",
                "subsection Check 1\n set Quantity = displacement z\nend\n",
                "is along z, but the model is two-dimensional");
+  // The same language on a model of volumes (prm/two_blocks_3d.prm):
+  // three coordinates and three components, and the mesh's checks.
+  expect_error("two_coordinates_in_three_dimensions",
+               "subsection Check 1\n set Point = 0.3, 0.6\nend\n",
+               "has 2 coordinates, but the model is three-dimensional",
+               "two_blocks_3d");
+  expect_error("two_expressions_in_three_dimensions",
+               "subsection Boundary condition 1\n set Value = 0; -p * t\n"
+               "end\n",
+               "a traction needs 3",
+               "two_blocks_3d");
+  expect_error("constant_named_z_in_three_dimensions",
+               "subsection Problem\n set Constants = p = 1e6, z = 1\nend\n",
+               "gives a value to 'z'",
+               "two_blocks_3d");
+  expect_error("missing_boundary_of_a_resultant_in_three_dimensions",
+               "subsection Check 3\n set Boundary id = 99\nend\n",
+               "has no boundary with tag 99 (Check 3)",
+               "two_blocks_3d");
+  expect_error("quadratic_contact_face_in_three_dimensions",
+               "subsection Body 2\n set Displacement degree = 2\nend\n",
+               "not first-order (Q1) hexahedra",
+               "two_blocks_3d");
   expect_error("normal_with_another_component",
                "subsection Boundary condition 2\n set Components = n, x\nend\n",
                "the normal component n is imposed alone");

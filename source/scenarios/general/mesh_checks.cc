@@ -123,7 +123,8 @@ namespace RingContact
         require_boundary(condition.boundary_id, condition.name);
       for (const auto &check : problem.checks)
         if (check.quantity == ProblemQuantity::resultant_force_x ||
-            check.quantity == ProblemQuantity::resultant_force_y)
+            check.quantity == ProblemQuantity::resultant_force_y ||
+            check.quantity == ProblemQuantity::resultant_force_z)
           require_boundary(check.boundary_id, check.name);
       const auto pairs = parameters.contact_pairs();
       for (unsigned int k = 0; k < pairs.size(); ++k)
