@@ -279,13 +279,13 @@ namespace RingContact
 
     /// Where a master face comes nearest to a slave point: its closest
     /// point inside the face (`inside`), or else the nearest point of the
-    /// face's four straight edges; the distance, the face's unit normal
-    /// there and the point's xi.
+    /// face's four straight edges; the distance and the point's xi. (The
+    /// face's normal there is taken only where a tie or a free edge needs
+    /// it: unit_normal().)
     struct Hit
     {
       unsigned int face;
       double       distance;
-      Tensor<1, 3> normal;
       Point<2>     xi;
       bool         inside;
     };
@@ -298,13 +298,12 @@ namespace RingContact
       const auto found = FaceKernel::closest_point(bilinear(), nodes, x);
       if (found.converged && found.inside &&
           PointToFace::is_minimum(bilinear(), nodes, x, found.xi))
-        return {
-          face, found.distance, unit_normal(nodes, found.xi), found.xi, true};
+        return {face, found.distance, found.xi, true};
       // The edges in deal.II's lexicographic order of the vertices: 0-1 at
       // xi_2 = 0, 2-3 at xi_2 = 1, 0-2 at xi_1 = 0, 1-3 at xi_1 = 1.
       const std::array<std::array<unsigned int, 2>, 4> edges = {
         {{{0, 1}}, {{2, 3}}, {{0, 2}}, {{1, 3}}}};
-      Hit best{face, std::numeric_limits<double>::max(), {}, {}, false};
+      Hit best{face, std::numeric_limits<double>::max(), {}, false};
       for (unsigned int e = 0; e < 4; ++e)
         {
           const auto  &a = nodes[edges[e][0]], &b = nodes[edges[e][1]];
@@ -322,7 +321,6 @@ namespace RingContact
               best.xi       = e < 2 ? Point<2>(t, e) : Point<2>(e - 2, t);
             }
         }
-      best.normal = unit_normal(nodes, best.xi);
       return best;
     }
 
@@ -351,7 +349,7 @@ namespace RingContact
       for (const Hit &hit : hits)
         if (hit.distance <= nearest + tolerance)
           {
-            sum += hit.normal;
+            sum += unit_normal(faces[hit.face].nodes, hit.xi);
             tied.push_back(hit);
           }
       if (tied.size() < 2 || sum.norm() == 0)
@@ -411,16 +409,18 @@ namespace RingContact
       std::vector<double>       N;
       std::vector<Tensor<1, 2>> dN;
       bilinear().evaluate(nearest->xi, N, dN);
-      const auto on_edge =
-        FaceKernel::evaluate(faces[nearest->face].nodes, N, dN).x;
-      double signed_distance = 0;
-      for (unsigned int d = 0; d < 3; ++d)
-        signed_distance += (x[d] - on_edge[d]) * nearest->normal[d];
-      if (!(signed_distance < 0))
-        return {};
+      const auto     &nodes           = faces[nearest->face].nodes;
+      const auto      on_edge         = FaceKernel::evaluate(nodes, N, dN).x;
+      const auto      n               = unit_normal(nodes, nearest->xi);
+      double          signed_distance = 0;
       Vector3<double> normal;
       for (unsigned int d = 0; d < 3; ++d)
-        normal[d] = nearest->normal[d];
+        {
+          signed_distance += (x[d] - on_edge[d]) * n[d];
+          normal[d] = n[d];
+        }
+      if (!(signed_distance < 0))
+        return {};
       return std::make_pair(nearest->face,
                             PointToFace::Tie{normal, nearest->xi});
     }
