@@ -531,6 +531,55 @@ namespace RingContact
       }
     } // namespace
 
+    // @sect4{The surfaces of a 3D model}
+    //
+    // A 3D script's sampled surfaces (model_surfaces.cc recognises them),
+    // and the entity of every quadrilateral and line of its surfaces and
+    // curves, those of no physical group too: a sphere's faces need their
+    // surface whether or not a boundary condition names them.
+    namespace
+    {
+      void
+      add_surfaces(const GmshModel &model, GmshMesh<3> &mesh)
+      {
+        for (const auto &[tag, values] : model.surfaces)
+          {
+            GmshMesh<3>::Surface surface{tag, {}, {}};
+            const std::size_t    n = values.size() / 6;
+            for (std::size_t i = 0; i < n; ++i)
+              {
+                surface.points.emplace_back(values[3 * i],
+                                            values[3 * i + 1],
+                                            values[3 * i + 2]);
+                surface.normals.push_back(
+                  Tensor<1, 3>({values[3 * (n + i)],
+                                values[3 * (n + i) + 1],
+                                values[3 * (n + i) + 2]}));
+              }
+            mesh.surfaces.push_back(std::move(surface));
+          }
+        for (const auto &entity : model.entities)
+          for (unsigned int t = 0; t < entity.types.size(); ++t)
+            {
+              const int          type    = entity.types[t];
+              const unsigned int n_nodes = nodes_of_type<3>(type);
+              if ((entity.dim != 1 && entity.dim != 2) || n_nodes < 2 ||
+                  (entity.dim == 2 && !is_face_type<3>(type)))
+                continue;
+              const unsigned int corners = corners_of_type(type);
+              const auto        &nodes   = entity.element_nodes[t];
+              for (std::size_t first = 0; first + n_nodes <= nodes.size();
+                   first += n_nodes)
+                {
+                  std::vector<std::size_t> key(nodes.begin() + first,
+                                               nodes.begin() + first + corners);
+                  std::sort(key.begin(), key.end());
+                  mesh.entity_of_element[key] = entity.tag;
+                }
+            }
+      }
+    } // namespace
+
     // @sect4{The mesh}
     //
     // What gmsh read, checked; the elements of each entity take the
@@ -612,6 +661,8 @@ namespace RingContact
             }
           mesh.curves.emplace_back(tag, std::move(points));
         }
+      if constexpr (dim == 3)
+        add_surfaces(model, mesh);
       return mesh;
     }
 

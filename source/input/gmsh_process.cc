@@ -210,8 +210,10 @@ namespace RingContact
       // square).
       constexpr std::uint8_t stage_marker = 0xfe;
 
-      // The points per curve of a script's model (see gmsh_child()).
-      constexpr unsigned int curve_samples = 513;
+      // The points per curve of a script's model (see gmsh_child()), and
+      // per parameter direction of a surface of a 3D one.
+      constexpr unsigned int curve_samples   = 513;
+      constexpr unsigned int surface_samples = 17;
 
       // The last stage the child announced in a (possibly cut) answer, ""
       // if none.
@@ -408,6 +410,62 @@ namespace RingContact
           }
       }
 
+      // The surfaces of a script's 3D model, sampled for the parent: each
+      // at surface_samples^2 points of a grid evenly spaced in its two
+      // parameters, with the CAD kernel's unit normal there
+      // (gmsh::model::getNormal), from which the parent recognises a
+      // plane, a sphere or a cylinder (model_surfaces.cc). As for the
+      // curves, a surface the kernel cannot evaluate is left out.
+      void
+      write_surfaces(Writer &out, const gmsh::vectorpair &entities)
+      {
+        constexpr unsigned int                           n = surface_samples;
+        std::vector<std::pair<int, std::vector<double>>> surfaces;
+        const auto finite = [](const std::vector<double> &v) {
+          return std::all_of(v.begin(), v.end(), [](double x) {
+            return std::isfinite(x);
+          });
+        };
+        for (const auto &[entity_dim, tag] : entities)
+          if (entity_dim == 2)
+            try
+              {
+                std::vector<double> low, high;
+                gmsh::model::getParametrizationBounds(2, tag, low, high);
+                if (low.size() != 2 || high.size() != 2 || !finite(low) ||
+                    !finite(high) || !(high[0] > low[0]) || !(high[1] > low[1]))
+                  continue;
+                std::vector<double> uv, xyz, normals;
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j < n; ++j)
+                    uv.insert(uv.end(),
+                              {low[0] + (high[0] - low[0]) * i / (n - 1.0),
+                               low[1] + (high[1] - low[1]) * j / (n - 1.0)});
+                gmsh::model::getValue(2, tag, uv, xyz);
+                gmsh::model::getNormal(tag, uv, normals);
+                // At a degenerate point of the parametrization (a sphere's
+                // pole) the normal may be undefined: sent as zero, which
+                // the parent's fits ignore (only a cylinder's uses them).
+                for (double &component : normals)
+                  if (!std::isfinite(component))
+                    component = 0;
+                if (xyz.size() == 3 * n * n && normals.size() == 3 * n * n &&
+                    finite(xyz))
+                  {
+                    xyz.insert(xyz.end(), normals.begin(), normals.end());
+                    surfaces.emplace_back(tag, std::move(xyz));
+                  }
+              }
+            catch (...)
+              {}
+        out.value<std::uint64_t>(surfaces.size());
+        for (const auto &[tag, values] : surfaces)
+          {
+            out.value<std::int32_t>(tag);
+            out.vector(values);
+          }
+      }
+
       // The child: gmsh reads (or meshes) the file and the model is
       // written to `fd`. Never returns.
       [[noreturn]] void
@@ -471,6 +529,11 @@ namespace RingContact
             write_entities(out, entities);
             // A mesh file has no CAD: no curves (their count, 0, is sent).
             write_curves(out, geo ? entities : gmsh::vectorpair());
+            // A 3D script's surfaces too (a 2D model's are its planes).
+            write_surfaces(out,
+                           geo && gmsh::model::getDimension() == 3 ?
+                             entities :
+                             gmsh::vectorpair());
             out.value(end_of_answer);
             _exit(0);
           }
@@ -737,6 +800,10 @@ namespace RingContact
         for (auto &curve : model.curves)
           for (double &x : curve.second)
             x *= scaling_factor;
+        // A surface's points, not its unit normals (the second half).
+        for (auto &surface : model.surfaces)
+          for (std::size_t i = 0; i < surface.second.size() / 2; ++i)
+            surface.second[i] *= scaling_factor;
       }
     } // namespace
 
@@ -791,6 +858,15 @@ namespace RingContact
           const int tag = in.value<std::int32_t>();
           model.curves.emplace_back(tag, in.vector<double>());
           if (model.curves.back().second.size() != 3 * curve_samples)
+            fail(filename, "the answer of gmsh's reader is inconsistent");
+        }
+      const auto n_surfaces = in.value<std::uint64_t>();
+      for (std::uint64_t s = 0; s < n_surfaces; ++s)
+        {
+          const int tag = in.value<std::int32_t>();
+          model.surfaces.emplace_back(tag, in.vector<double>());
+          if (model.surfaces.back().second.size() !=
+              6 * surface_samples * surface_samples)
             fail(filename, "the answer of gmsh's reader is inconsistent");
         }
       if (in.value<std::uint32_t>() != end_of_answer || !in.at_end() ||

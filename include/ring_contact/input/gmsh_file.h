@@ -16,6 +16,7 @@
 #define ring_contact_input_gmsh_file_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <map>
 #include <string>
@@ -83,6 +84,20 @@ namespace RingContact
       /// A script's curves by gmsh tag, sampled evenly in their parameter
       /// (GmshModel::curves; model_curves.h makes them the geometry).
       std::vector<std::pair<int, std::vector<Point<dim>>>> curves;
+      /// A 3D script's surfaces by gmsh tag: points on a grid evenly spaced
+      /// in their two parameters and the unit normals there
+      /// (GmshModel::surfaces; model_surfaces.h makes them the geometry).
+      struct Surface
+      {
+        int                         tag;
+        std::vector<Point<dim>>     points;
+        std::vector<Tensor<1, dim>> normals;
+      };
+      std::vector<Surface> surfaces;
+      /// In 3d, the gmsh entity of every quadrilateral of the model's
+      /// surfaces and every line of its curves, in physical groups or not,
+      /// by its corner node tags in increasing order.
+      std::map<std::vector<std::size_t>, int> entity_of_element;
       /// The node tag of each vertex of the triangulation built from it
       /// (set by Geometry::read_gmsh()).
       std::vector<std::size_t> node_of_vertex;

@@ -41,6 +41,10 @@ namespace RingContact
       /// x, y, z evenly spaced in the CAD kernel's parameter, ends
       /// included; none for a mesh file.
       std::vector<std::pair<int, std::vector<double>>> curves;
+      /// A 3D script's surfaces (dimension-2 entities) by tag, each as
+      /// points x, y, z on a grid evenly spaced in the CAD kernel's two
+      /// parameters, followed by the unit normals there; none otherwise.
+      std::vector<std::pair<int, std::vector<double>>> surfaces;
     };
 
     /// Open `filename` with gmsh's library in a child process; if

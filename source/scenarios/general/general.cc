@@ -24,6 +24,7 @@
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/input/gmsh_mesh.h>
 #include <ring_contact/input/model_curves.h>
+#include <ring_contact/input/model_surfaces.h>
 #include <ring_contact/input/parameter_file.h>
 #include <ring_contact/scenarios/general/general.h>
 #include <ring_contact/scenarios/general/normal_conditions.h>
@@ -164,9 +165,9 @@ namespace RingContact
             , quantities(problem)
         {}
 
-        // The bodies of a gmsh model, on the model's curves (in 2D), meshed
-        // from a script with linear elements (the cells take the vertices
-        // only); the audit of its tags first (a line it drops leaves a
+        // The bodies of a gmsh model, on the model's curves and surfaces,
+        // meshed from a script with linear elements (the cells take the
+        // vertices only); the audit of its tags first (a line it drops leaves a
         // boundary without faces, which check_bodies() would report).
         void
         create_mesh(Triangulation<dim> &triangulation) const override
@@ -187,13 +188,14 @@ namespace RingContact
           Geometry::check_size<dim>(triangulation.n_active_cells(),
                                     degree,
                                     parameters.mesh.global_refinements);
-          // A script's curves are the geometry (model_curves.h): refined
-          // vertices go onto them, and a Mapping degree >= 2 curves the
-          // cells and the contact surfaces. A mesh file has straight sides,
-          // and so, for now, has a 3D model (its surfaces are not yet
-          // manifolds: issue 48).
+          // A script's curves (in 3D its spheres and cylinders) are the
+          // geometry (model_curves.h, model_surfaces.h): refined vertices
+          // go onto them, and a Mapping degree >= 2 curves the cells. A
+          // mesh file has straight sides.
           if constexpr (dim == 2)
             Geometry::attach_model_curves(triangulation, mesh);
+          else
+            Geometry::attach_model_surfaces(triangulation, mesh);
           triangulation.refine_global(parameters.mesh.global_refinements);
         }
 
