@@ -30,9 +30,13 @@ Transfinite Curve{1, 3} = nr + 1;
 Transfinite Surface{1};
 Recombine Surface{1};
 
-// The outer ring
-Point(6) = {d, 0, 0}; Point(7) = {c, 0, 0};
-Point(8) = {c * ca, c * sa, 0}; Point(9) = {d * ca, d * sa, 0};
+// The outer ring. Rings that touch (g = 0) would share their points on
+// r = b (gmsh merges coincident points): the outer ring is then built
+// turned by 180 degrees about z, extruded, and turned back with automatic
+// coherence off (below), two bodies whose faces meet.
+f = (g == 0) ? -1 : 1;
+Point(6) = {f * d, 0, 0}; Point(7) = {f * c, 0, 0};
+Point(8) = {f * c * ca, f * c * sa, 0}; Point(9) = {f * d * ca, f * d * sa, 0};
 Line(5) = {6, 7};
 Circle(6) = {7, 1, 8};
 Line(7) = {8, 9};
@@ -49,6 +53,10 @@ Recombine Surface{2};
 // ring's 5 (y = 0), 6 (r = c), 7, 8 (r = d).
 inner[] = Extrude {0, 0, h} { Surface{1}; Layers{1}; Recombine; };
 outer[] = Extrude {0, 0, h} { Surface{2}; Layers{1}; Recombine; };
+If (g == 0)
+  Geometry.AutoCoherence = 0;
+  Rotate {{0, 0, 1}, {0, 0, 0}, Pi} { Volume{outer[1]}; }
+EndIf
 Physical Volume(1) = {inner[1]};
 Physical Volume(2) = {outer[1]};
 Physical Surface(10) = {inner[3]};
