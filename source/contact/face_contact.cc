@@ -562,7 +562,7 @@ namespace RingContact
             // fixed in the tangent).
             std::vector<Hit> tie_hits;
             for (const Hit &hit : hits)
-              if (hit.inside == inside || !inside)
+              if (geometrically_linear || hit.inside == inside || !inside)
                 tie_hits.push_back(hit);
             const auto tie =
               geometrically_linear || !inside ?
