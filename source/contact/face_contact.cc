@@ -555,11 +555,13 @@ namespace RingContact
               });
             const bool inside =
               nearest_inside != hits.end() && nearest_inside->inside;
-            // A tie: in small strain always; in finite strain where no face
-            // holds the closest point inside (behind a master edge), as
-            // otherwise the face met first, whose normal moves with its own
-            // nodes, which the pair's unknowns hold (a tie's normal is held
-            // fixed in the tangent).
+            // A tie: in small strain always, among every face within the
+            // tolerance, inside or not (a point exactly on a master vertex
+            // is inside one face there and outside the next by round-off);
+            // in finite strain where no face holds the closest point inside
+            // (behind a master edge), as otherwise the face met first, whose
+            // normal moves with its own nodes, which the pair's unknowns
+            // hold (a tie's normal is held fixed in the tangent).
             std::vector<Hit> tie_hits;
             for (const Hit &hit : hits)
               if (geometrically_linear || hit.inside == inside || !inside)

@@ -6,6 +6,8 @@
 // before the first step, and what the scenarios read of the state
 // (SolutionState): the contact nodes, the reported pressure, the nodal
 // forces.
+#include <deal.II/numerics/rtree.h>
+
 #include <ring_contact/base/dimension.h>
 #include <ring_contact/base/utilities.h>
 #include <ring_contact/contact/surface_arc_length.h>
@@ -175,19 +177,20 @@ namespace RingContact
     // load on node to node and pass the patch test; their loads may still
     // differ from the clipped ones by the facets' curvature (about 0.1 %
     // on the closing gap's rings: doc/validation.md, "2D by extrusion"),
-    // which is not what the warning is about. A slave vertex's partner is its
-    // nearest master vertex, found among those binned with it (bins of the
-    // shortest slave edge, so a partner within half an edge is in a
-    // neighbouring bin).
+    // which is not what the warning is about. A slave vertex's partner is
+    // its nearest master vertex (deal.II's R-tree of the master vertices),
+    // a different one for each.
     bool
     faces_conform(const FaceContact &faces)
     {
       const auto point = [](const FaceClipping::Vector3<double> &v) {
         return Point<3>(v[0], v[1], v[2]);
       };
+      // The slave vertices (by their first unknown) with the sum of their
+      // faces' unit normals, and the shortest slave edge.
       double edge = std::numeric_limits<double>::max();
-      std::map<types::global_dof_index, Tensor<1, 3>> normal;
-      std::map<types::global_dof_index, Point<3>>     slave_at, master_at;
+      std::map<types::global_dof_index, std::pair<Point<3>, Tensor<1, 3>>>
+        slave;
       for (const auto &face : faces.slave_faces())
         {
           const Tensor<1, 3> n = cross_product_3d(point(face.reference[3]) -
@@ -196,63 +199,55 @@ namespace RingContact
                                                     point(face.reference[1]));
           for (unsigned int v = 0; v < 4; ++v)
             {
-              normal[face.u_dofs[v][0]] += n / n.norm();
-              slave_at[face.u_dofs[v][0]] = point(face.reference[v]);
-              edge                        = std::min(edge,
-                              point(face.reference[v])
-                                .distance(point(face.reference[v ^ 1])));
+              auto &vertex = slave[face.u_dofs[v][0]];
+              vertex.first = point(face.reference[v]);
+              vertex.second += n / n.norm();
+              edge =
+                std::min(edge,
+                         vertex.first.distance(point(face.reference[v ^ 1])));
             }
         }
+      // The master vertices, once each, and the master faces by their
+      // vertices in increasing order.
+      std::vector<Point<3>>                            master_points;
+      std::vector<types::global_dof_index>             master_dofs;
+      std::set<types::global_dof_index>                seen;
       std::set<std::array<types::global_dof_index, 4>> master_faces;
-      std::map<std::array<long, 3>, std::vector<types::global_dof_index>> bins;
-      const auto bin_of = [edge](const Point<3> &x) {
-        return std::array<long, 3>{{std::lround(x[0] / edge),
-                                    std::lround(x[1] / edge),
-                                    std::lround(x[2] / edge)}};
-      };
       for (const auto &face : faces.master_faces())
         {
           std::array<types::global_dof_index, 4> key;
           for (unsigned int v = 0; v < 4; ++v)
             {
               key[v] = face.u_dofs[v][0];
-              if (master_at.emplace(key[v], point(face.reference[v])).second)
-                bins[bin_of(point(face.reference[v]))].push_back(key[v]);
+              if (seen.insert(key[v]).second)
+                {
+                  master_points.push_back(point(face.reference[v]));
+                  master_dofs.push_back(key[v]);
+                }
             }
           std::sort(key.begin(), key.end());
           master_faces.insert(key);
         }
-      // Each slave vertex's partner, a different one for each.
+      if (master_points.empty())
+        return false;
+      const auto tree = pack_rtree_of_indices(master_points);
+
       std::map<types::global_dof_index, types::global_dof_index> partner;
       std::set<types::global_dof_index>                          matched;
-      for (const auto &[dof, x] : slave_at)
+      for (const auto &[dof, vertex] : slave)
         {
-          const Tensor<1, 3> n    = normal[dof] / normal[dof].norm();
-          const auto         home = bin_of(x);
-          double             best = std::numeric_limits<double>::max();
-          for (long i = -1; i <= 1; ++i)
-            for (long j = -1; j <= 1; ++j)
-              for (long k = -1; k <= 1; ++k)
-                {
-                  const auto bin =
-                    bins.find({{home[0] + i, home[1] + j, home[2] + k}});
-                  if (bin != bins.end())
-                    for (const auto m : bin->second)
-                      if (x.distance(master_at[m]) < best)
-                        {
-                          best         = x.distance(master_at[m]);
-                          partner[dof] = m;
-                        }
-                }
-          if (partner.count(dof) == 0)
-            return false;
-          const Tensor<1, 3> d = master_at[partner[dof]] - x;
+          std::vector<std::size_t> nearest;
+          tree.query(boost::geometry::index::nearest(vertex.first, 1),
+                     std::back_inserter(nearest));
+          const Tensor<1, 3> n = vertex.second / vertex.second.norm();
+          const Tensor<1, 3> d = master_points[nearest[0]] - vertex.first;
           // Across a gap the partner is along the normal; at a free edge
           // the slave faces' mean normal leans by half a facet's angle,
           // hence a tenth of the distance.
           if ((d - (d * n) * n).norm() > 1e-6 * edge + 0.1 * d.norm() ||
-              !matched.insert(partner[dof]).second)
+              !matched.insert(master_dofs[nearest[0]]).second)
             return false;
+          partner[dof] = master_dofs[nearest[0]];
         }
       for (const auto &face : faces.slave_faces())
         {
@@ -310,10 +305,10 @@ namespace RingContact
         const auto [slave, master] = parameters.contact_pairs()[pair];
         const auto pointwise =
           make_contact_interface(slave, master, scheme, true);
-        const auto mortar = make_contact_interface(
-          slave, master, IntegrationScheme::parse("segment-based"), true);
         if (faces_conform(pointwise->faces()))
           return;
+        const auto mortar = make_contact_interface(
+          slave, master, IntegrationScheme::parse("segment-based"), true);
         const auto [lowest, highest] =
           master_load_ratios(*pointwise, *mortar, dof_handler.n_dofs());
         if (!(std::max(1 - lowest, highest - 1) > 2e-3))
