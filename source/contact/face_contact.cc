@@ -555,21 +555,18 @@ namespace RingContact
               });
             const bool inside =
               nearest_inside != hits.end() && nearest_inside->inside;
-            // A tie: in small strain always, among every face within the
-            // tolerance, inside or not (a point exactly on a master vertex
-            // is inside one face there and outside the next by round-off);
-            // in finite strain where no face holds the closest point inside
-            // (behind a master edge), as otherwise the face met first, whose
-            // normal moves with its own nodes, which the pair's unknowns
-            // hold (a tie's normal is held fixed in the tangent).
-            std::vector<Hit> tie_hits;
-            for (const Hit &hit : hits)
-              if (geometrically_linear || hit.inside == inside || !inside)
-                tie_hits.push_back(hit);
-            const auto tie =
-              geometrically_linear || !inside ?
-                find_tie(tie_hits, 1e-5 * diameter, on.faces, x) :
-                std::nullopt;
+            // A tie: among every face within the tolerance, inside or not
+            // (a point exactly on a master vertex is inside one face there
+            // and outside the next by round-off). In finite strain too: the
+            // face met first would push the point along its own normal,
+            // half a facet's angle off the mean one, and which face that is
+            // changed from one iteration to the next by round-off (Newton
+            // stalled on SSNP152's rings extruded with matching meshes). The
+            // tie's normal is taken again at every iteration's pairing but
+            // held in the tangent (a pair holds one master face's unknowns):
+            // Newton then converges in two iterations a step there instead
+            // of one (doc/validation.md).
+            const auto tie = find_tie(hits, 1e-5 * diameter, on.faces, x);
             // No face holds the closest point inside and none ties: the
             // point is beyond the master's free edge. Behind the master
             // face there (penetrating), it is pushed out through the edge's

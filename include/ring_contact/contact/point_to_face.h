@@ -77,8 +77,9 @@ namespace RingContact
     /// the meshes match): its partner is where the line through it along
     /// `normal`, the mean of those faces' normals, meets the master face,
     /// at `xi`; the gap and the forces are along `normal`. The 2D nodal
-    /// scheme takes the vertex and its normal at a tie. Small strain only,
-    /// where both are constants of the reference configuration.
+    /// scheme takes the vertex and its normal at a tie. In small strain
+    /// both are constants of the reference configuration; in finite strain
+    /// the current configuration's at each pairing, held in the tangent.
     struct Tie
     {
       Vector3<double> normal;
