@@ -73,6 +73,9 @@ Mesh.RecombinationAlgorithm = 3;
 // Along z: nz - nz_end equal layers up to Lz - 4 a0, nz_end over the rest.
 // Extrude gives the end face, the volume, then the sides in the order of
 // the curve loop.
+If (Lz <= 4 * a0 || nz <= nz_end || nz_end < 1)
+  Error("hertz_cylinder_3d.geo: Lz must exceed 4 a0 (the length of the end's layers), nz must exceed nz_end, nz_end at least 1");
+EndIf
 fz = (Lz - 4 * a0) / Lz;
 cyl[] = Extrude {0, 0, Lz} {
   Surface{1}; Layers{{nz - nz_end, nz_end}, {fz, 1}}; Recombine; };

@@ -188,6 +188,13 @@ main()
   expect_error("glued_bodies",
                "subsection Mesh\n set Mesh file = glued.geo\nend\n",
                "the mesh joins Body 1 (material 1) and Body 2 (material 2)");
+  // A 3D script that stops on an error of its own (Lz too short for the
+  // end's layers) before its extrusion: gmsh's message, not a 2D model's
+  // refusal of the file's three components.
+  expect_error("script_error_3d",
+               "subsection Mesh\n set Geo parameters = Lz = 0.2\nend\n",
+               "Lz must exceed 4 a0",
+               "hertz_cylinder_3d");
   expect_error("pressure_point_off_the_surface",
                "subsection Check 1\n set Point = 100, 100\nend\n",
                "give a point on a slave surface");

@@ -302,21 +302,18 @@ namespace RingContact
 
 
   // The problem's dimension is the model's (issue 48): 3 for a model of
-  // volumes. A model that gmsh cannot open is said, with the reason, where
-  // the mesh is read (the same one-line error as before): taken as 2 here.
+  // volumes. A model that gmsh cannot open is said here, with gmsh's reason
+  // (the one-line error the mesh's reading would give): taken as 2, as it
+  // was, a 3D script stopped by an error of its own was refused for the
+  // parameter file's three components (a traction needs 2), not for its
+  // error.
   void
   ProblemParameters::find_dimension(const Parameters &parameters)
   {
     model_dimension = 2;
     if (parameters.mesh.source == MeshSource::gmsh_file)
-      try
-        {
-          model_dimension =
-            Geometry::model_dimension(parameters.mesh.mesh_file,
-                                      parameters.mesh.geo_numbers);
-        }
-      catch (const std::exception &)
-        {}
+      model_dimension = Geometry::model_dimension(parameters.mesh.mesh_file,
+                                                  parameters.mesh.geo_numbers);
     // z is the third variable of a 3D problem's expressions.
     require(model_dimension == 2 || constants.count("z") == 0,
             "Problem",
