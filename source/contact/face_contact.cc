@@ -563,9 +563,8 @@ namespace RingContact
             // changed from one iteration to the next by round-off (Newton
             // stalled on SSNP152's rings extruded with matching meshes). The
             // tie's normal is taken again at every iteration's pairing but
-            // held in the tangent (a pair holds one master face's unknowns):
-            // Newton then converges in two iterations a step there instead
-            // of one (doc/validation.md).
+            // held in the tangent (a pair holds one master face's unknowns;
+            // Newton's iterations there: doc/validation.md).
             const auto tie = find_tie(hits, 1e-5 * diameter, on.faces, x);
             // No face holds the closest point inside and none ties: the
             // point is beyond the master's free edge. Behind the master
