@@ -306,14 +306,22 @@ namespace RingContact
   // (the one-line error the mesh's reading would give): taken as 2, as it
   // was, a 3D script stopped by an error of its own was refused for the
   // parameter file's three components (a traction needs 2), not for its
-  // error.
+  // error. A signal while gmsh reads it is said where the mesh is read,
+  // which ends the run as the signal asks (exit 130 or 143, run.cc): the
+  // reading finds the signal and stops at once.
   void
   ProblemParameters::find_dimension(const Parameters &parameters)
   {
     model_dimension = 2;
     if (parameters.mesh.source == MeshSource::gmsh_file)
-      model_dimension = Geometry::model_dimension(parameters.mesh.mesh_file,
-                                                  parameters.mesh.geo_numbers);
+      try
+        {
+          model_dimension =
+            Geometry::model_dimension(parameters.mesh.mesh_file,
+                                      parameters.mesh.geo_numbers);
+        }
+      catch (const Interrupted &)
+        {}
     // z is the third variable of a 3D problem's expressions.
     require(model_dimension == 2 || constants.count("z") == 0,
             "Problem",
