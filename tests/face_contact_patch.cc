@@ -254,18 +254,9 @@ struct Pair
 {
   Pair(const DoFHandler<3> &dofs, const bool linear, const Scheme scheme)
       : faces(dofs, 3, 2, c, linear, scheme)
-      , nodes(multipliers(faces), faces.weights())
+      , nodes(faces.multiplier_nodes())
       , states(nodes, c, 0., 0.2)
   {}
-
-  static std::vector<types::global_dof_index>
-  multipliers(const FaceContact &faces)
-  {
-    std::vector<types::global_dof_index> dofs;
-    for (unsigned int k = 0; k < faces.n_nodes(); ++k)
-      dofs.push_back(faces.multiplier_dof(k));
-    return dofs;
-  }
 
   unsigned int
   update(const Vector<double> &u)

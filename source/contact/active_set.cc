@@ -147,11 +147,18 @@ namespace RingContact
     if (covered != nullptr)
       for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
         closed[k] = closed[k] && (*covered)[k];
+    // On a curve the walks along chains of nodes; on a surface of faces
+    // (3D) the same rule in distances (surface_zone_edges.cc).
     if (edge_extrapolation && piecewise_linear && !first_update_of_step)
-      extrapolate_zone_edges(active,
-                             std::vector<bool>(active.size(), true),
-                             indicator,
-                             closed);
+      {
+        if (nodes.surface_position.empty())
+          extrapolate_zone_edges(active,
+                                 std::vector<bool>(active.size(), true),
+                                 indicator,
+                                 closed);
+        else
+          extrapolate_surface_zone_edges(active, indicator, closed);
+      }
     unsigned int n_changed = 0;
     for (unsigned int k = 0; k < nodes.dofs.size(); ++k)
       {

@@ -253,6 +253,22 @@ namespace RingContact
     is_covered.assign(n_nodes(), false);
   }
 
+  MultiplierNodes
+  FaceContact::multiplier_nodes() const
+  {
+    std::vector<Point<3>>                    positions(n_nodes());
+    std::vector<std::array<unsigned int, 4>> faces;
+    for (const Face &face : slave)
+      {
+        faces.push_back(face.node);
+        for (unsigned int v = 0; v < 4; ++v)
+          positions[face.node[v]] = Point<3>(face.reference[v][0],
+                                             face.reference[v][1],
+                                             face.reference[v][2]);
+      }
+    return MultiplierNodes(multiplier_dofs, node_weights, faces, positions);
+  }
+
 
   // The positions of a face's nodes at a solution: the reference
   // positions moved by the displacement unknowns.

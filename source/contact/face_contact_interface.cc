@@ -77,21 +77,12 @@ namespace RingContact
     if (parameters.frictional())
       throw std::runtime_error("friction is 2D only: a 3D contact pair is "
                                "frictionless (set Friction coefficient = 0)");
-    std::vector<types::global_dof_index> dofs;
-    for (unsigned int k = 0; k < face_contact.n_nodes(); ++k)
-      dofs.push_back(face_contact.multiplier_dof(k));
     multiplier_nodes =
-      std::make_unique<MultiplierNodes>(dofs, face_contact.weights());
+      std::make_unique<MultiplierNodes>(face_contact.multiplier_nodes());
     states = std::make_unique<ActiveSet>(*multiplier_nodes,
                                          complementarity_constant,
                                          0.,
                                          edge_length);
-    positions.resize(face_contact.n_nodes());
-    for (const auto &face : face_contact.slave_faces())
-      for (unsigned int v = 0; v < 4; ++v)
-        positions[face.node[v]] = Point<3>(face.reference[v][0],
-                                           face.reference[v][1],
-                                           face.reference[v][2]);
   }
 
 
@@ -202,7 +193,8 @@ namespace RingContact
   ContactInterface<3>::multiplier_dof_nearest_to(const Point<3> &point,
                                                  double         *distance) const
   {
-    unsigned int nearest = 0;
+    const auto  &positions = multiplier_nodes->surface_position;
+    unsigned int nearest   = 0;
     for (unsigned int k = 1; k < positions.size(); ++k)
       if (positions[k].distance(point) < positions[nearest].distance(point))
         nearest = k;
@@ -330,7 +322,7 @@ namespace RingContact
     const auto                  mean_gaps = states->mean_gaps();
     for (unsigned int k = 0; k < mean_gaps.size(); ++k)
       if (face_contact.covered()[k] && -mean_gaps[k] > deepest.first)
-        deepest = {-mean_gaps[k], positions[k]};
+        deepest = {-mean_gaps[k], node_position(k)};
     return deepest;
   }
 } // namespace RingContact

@@ -128,16 +128,37 @@ namespace RingContact
     return all;
   }
 
-  // The faces' nodes: each dof its own node, the weights the caller's.
+  // The faces' nodes: each dof its own node, the weights the caller's. Two
+  // nodes are neighbours where an edge of a face joins them (in the
+  // lexicographic order 0-1, 2-3, 0-2, 1-3), once however many faces share
+  // the edge; the link's length is the edge's in the reference
+  // configuration.
   MultiplierNodes::MultiplierNodes(
-    const std::vector<types::global_dof_index> &dofs,
-    const std::vector<double>                  &weights)
+    const std::vector<types::global_dof_index>     &dofs,
+    const std::vector<double>                      &weights,
+    const std::vector<std::array<unsigned int, 4>> &faces,
+    const std::vector<Point<3>>                    &positions)
       : dofs(dofs)
       , reference_weight(weights)
       , neighbours(dofs.size())
+      , surface_position(positions)
   {
+    AssertDimension(positions.size(), dofs.size());
     for (unsigned int k = 0; k < dofs.size(); ++k)
       index[dofs[k]] = k;
+    constexpr std::array<std::array<unsigned int, 2>, 4> edges = {
+      {{{0, 1}}, {{2, 3}}, {{0, 2}}, {{1, 3}}}};
+    for (const auto &face : faces)
+      for (const auto &[a, b] : edges)
+        {
+          const unsigned int i = face[a], j = face[b];
+          const auto linked = [&](const auto &link) { return link.first == j; };
+          if (std::any_of(neighbours[i].begin(), neighbours[i].end(), linked))
+            continue;
+          const double length = positions[i].distance(positions[j]);
+          neighbours[i].emplace_back(j, length);
+          neighbours[j].emplace_back(i, length);
+        }
   }
 
   // Without friction there is no tangential traction (and no list).

@@ -203,6 +203,15 @@ namespace RingContact
                            const std::vector<double> &indicator,
                            std::vector<bool>         &closed) const;
 
+    /// extrapolate_zone_edges() on a slave surface of faces (3D), for the
+    /// contact zones: a zone's edge is a curve, the distances along the
+    /// surface are those to the zone's outermost closed nodes
+    /// (surface_zone_edges.cc).
+    void
+    extrapolate_surface_zone_edges(const std::vector<bool>   &inside,
+                                   const std::vector<double> &indicator,
+                                   std::vector<bool>         &closed) const;
+
     const MultiplierNodes &nodes;
     const double           complementarity_constant;
     const double           friction_coefficient;

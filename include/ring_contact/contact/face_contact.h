@@ -42,6 +42,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ring_contact/contact/face_clipping.h>
+#include <ring_contact/contact/multiplier_nodes.h>
 #include <ring_contact/contact/point_to_face.h>
 
 #include <array>
@@ -160,6 +161,12 @@ namespace RingContact
     {
       return node_weights;
     }
+    /// The slave surface's nodes as the active set reads them: their
+    /// multiplier dofs in the order of k, w_k, and the faces' edges and the
+    /// nodes' reference positions for the extrapolation of the contact
+    /// zones' edges.
+    MultiplierNodes
+    multiplier_nodes() const;
     /// g~_k at the last pair().
     const std::vector<double> &
     weighted_gaps() const

@@ -180,7 +180,7 @@ namespace RingContact
     const Point<3> &
     node_position(const unsigned int k) const
     {
-      return positions[k];
+      return multiplier_nodes->surface_position[k];
     }
     /// @}
 
@@ -203,8 +203,6 @@ namespace RingContact
     std::vector<double>                    stretches;
     std::unique_ptr<const MultiplierNodes> multiplier_nodes;
     std::unique_ptr<ActiveSet>             states;
-    /// The reference positions of the multiplier nodes.
-    std::vector<Point<3>> positions;
     /// (slave face, master face) pairs in the sparsity pattern.
     std::set<std::pair<unsigned int, unsigned int>> pattern_pairs;
   };

@@ -8,10 +8,12 @@
 #ifndef ring_contact_contact_multiplier_nodes_h
 #define ring_contact_contact_multiplier_nodes_h
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
 #include <ring_contact/contact/contact_surface.h>
 
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -34,11 +36,15 @@ namespace RingContact
       const bool friction);
 
     /// The nodes of a slave surface of faces (3D, FaceContact): their
-    /// multiplier dofs in the order of k and their weights w_k. No sites
-    /// (the faces know their nodes), no neighbours (the walks along a
-    /// curve of the active set's edge extrapolation are 2D), no friction.
-    MultiplierNodes(const std::vector<types::global_dof_index> &dofs,
-                    const std::vector<double>                  &weights);
+    /// multiplier dofs in the order of k, their weights w_k, and each
+    /// face's four nodes k in deal.II's lexicographic order with the nodes'
+    /// reference `positions`: the neighbours are the faces' edges, for the
+    /// active set's edge extrapolation on a surface. No sites (the faces
+    /// know their nodes), no friction.
+    MultiplierNodes(const std::vector<types::global_dof_index>     &dofs,
+                    const std::vector<double>                      &weights,
+                    const std::vector<std::array<unsigned int, 4>> &faces,
+                    const std::vector<Point<3>>                    &positions);
 
     /// The number of contact nodes.
     unsigned int
@@ -74,6 +80,10 @@ namespace RingContact
     /// segment that joins them: a twin's neighbour across the sector's ends
     /// is a segment away, not a sector).
     std::vector<std::vector<std::pair<unsigned int, double>>> neighbours;
+
+    /// A surface of faces (3D): each node's reference position (empty on a
+    /// 2D curve, whose nodes are chains of neighbours).
+    std::vector<Point<3>> surface_position;
 
   private:
     /// The nodes in their order along each segment: consecutive ones are
