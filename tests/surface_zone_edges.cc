@@ -73,21 +73,37 @@ namespace
   struct State
   {
     Vector<double>      lambda = Vector<double>(m);
-    std::vector<double> gap = std::vector<double>(m, 0.0);
+    std::vector<double> gap    = std::vector<double>(m, 0.0);
   };
+
+  // The state of a zone closed to radius b: the multipliers `inside` it,
+  // the gaps `outside`, as functions of r.
+  template <typename Inside, typename Outside>
+  State
+  profile(const MultiplierNodes &nodes,
+          const double           b,
+          const Inside          &inside,
+          const Outside         &outside)
+  {
+    State s;
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        const double r = radius(nodes, k);
+        if (r <= b)
+          s.lambda(k) = inside(r);
+        else
+          s.gap[k] = outside(r);
+      }
+    return s;
+  }
 
   // The zone closed to radius b by the plain rule (pressed inside, a gap
   // outside): the active set the next choice starts from.
   void
   close_disk(ActiveSet &states, const MultiplierNodes &nodes, const double b)
   {
-    State s;
-    for (unsigned int k = 0; k < m; ++k)
-      {
-        const double r = radius(nodes, k);
-        s.lambda(k)    = r <= b ? 1.0 : 0.0;
-        s.gap[k]       = r <= b ? 0.0 : r - b;
-      }
+    const State s = profile(
+      nodes, b, [](double) { return 1.0; }, [&](double r) { return r - b; });
     states.choose_closed_nodes(s.lambda,
                                s.gap,
                                std::vector<bool>(m, true),
@@ -126,37 +142,30 @@ namespace
     return zone_radii(states, nodes);
   }
 
-  // Too wide: closed to b, the true radius a.
+  // Too wide: closed to b, the true radius a; Hertz's profile of a zone
+  // too wide inside (its h^2 keeps the edge node finite), a gap outside.
   State
   too_wide(const MultiplierNodes &nodes, const double a, const double b)
   {
-    State s;
-    for (unsigned int k = 0; k < m; ++k)
-      {
-        const double r = radius(nodes, k);
-        if (r <= b)
-          s.lambda(k) =
-            (a * a + b * b - 2 * r * r) / std::sqrt(b * b - r * r + h * h);
-        else
-          s.gap[k] = (r - b) * (r - b);
-      }
-    return s;
+    return profile(
+      nodes,
+      b,
+      [&](double r) {
+        return (a * a + b * b - 2 * r * r) / std::sqrt(b * b - r * r + h * h);
+      },
+      [&](double r) { return (r - b) * (r - b); });
   }
 
-  // Too narrow: closed to b, the true radius a.
+  // Too narrow: closed to b, the true radius a; the master penetrating
+  // beyond b up to b + 3 (a - b) / 2.
   State
   too_narrow(const MultiplierNodes &nodes, const double a, const double b)
   {
-    State s;
-    for (unsigned int k = 0; k < m; ++k)
-      {
-        const double r = radius(nodes, k);
-        if (r <= b)
-          s.lambda(k) = std::sqrt(b * b - r * r);
-        else
-          s.gap[k] = -std::sqrt(r - b) * (1.5 * (a - b) - (r - b));
-      }
-    return s;
+    return profile(
+      nodes,
+      b,
+      [&](double r) { return std::sqrt(b * b - r * r); },
+      [&](double r) { return -std::sqrt(r - b) * (1.5 * (a - b) - (r - b)); });
   }
 } // namespace
 
