@@ -24,7 +24,9 @@ namespace
 {
   // Modelisation A with `steps` ramp steps into the folder `name`.
   std::string
-  write_prm(const std::string &name, const unsigned int steps = 21)
+  write_prm(const std::string &name,
+            const unsigned int steps  = 21,
+            const std::string &solver = "")
   {
     std::ofstream prm(name + ".prm");
     prm << "include " RING_CONTACT_SOURCE_DIR "/prm/ssnp152a.prm\n"
@@ -32,7 +34,9 @@ namespace
         << "subsection Output\n set Directory = " << name
         << "\n set VTU interval = 1\n set Print timing = false\n"
            " set Print steps = true\nend\n"
-           "subsection Newton\n set Verbose = false\nend\n";
+           "subsection Newton\n set Verbose = false\n"
+        << (solver.empty() ? "" : " set Linear solver = " + solver + "\n")
+        << "end\n";
     return name + ".prm";
   }
 
@@ -45,19 +49,22 @@ namespace
 
   // Send `signal` (and `second_signal`, if not 0, right after it) when the
   // run prints step `step` of scheme number `scheme` (1, 2), or, with
-  // step = 0, when it starts that scheme.
+  // step = 0, when it starts that scheme; the run's linear `solver` if
+  // given (MUMPS starts MPI, and PETSc with it, once the file is read).
   void
   interrupt(const std::string &name,
             const int          signal,
             const unsigned int scheme,
             const unsigned int step,
-            const int          second_signal = 0)
+            const int          second_signal = 0,
+            const std::string &solver        = "")
   {
     auto        &out     = RingContactTests::deallog_file;
     unsigned int current = 0;
     bool         sent    = false;
     const auto   result  = RingContactTests::run_program(
-      write_prm(name), [&](const std::string &line, const pid_t pid) {
+      write_prm(name, 21, solver),
+      [&](const std::string &line, const pid_t pid) {
         if (line.rfind("Scheme ", 0) == 0)
           ++current;
         if (!sent && current == scheme &&
@@ -257,6 +264,9 @@ main()
   interrupt("int_setup", SIGINT, 1, 0);
   interrupt("int_step3", SIGINT, 1, 3);
   interrupt("term_step10", SIGTERM, 1, 10);
+  // Starting MPI for MUMPS set SIGTERM back to its default action (deal.II
+  // removes PETSc's handlers): the run was killed at once.
+  interrupt("term_step10_mumps", SIGTERM, 1, 10, 0, "MUMPS");
   interrupt("term_scheme2", SIGTERM, 2, 0);
   interrupt("int_scheme2_step5", SIGINT, 2, 5);
   interrupt("term_last_step", SIGTERM, 2, 21);

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <signal.h>
 #include <stdexcept>
 #include <thread>
 
@@ -53,16 +54,27 @@ namespace RingContact
 
     // MUMPS and the iterative solver work on Trilinos's matrix, and even
     // an empty Trilinos object needs MPI: a run of one process that asks
-    // for them starts it now, once its file is read.
+    // for them starts it now, once its file is read. The run's handlers of
+    // SIGINT and SIGTERM (signals.cc), installed before, are kept: deal.II
+    // starts PETSc there and removes PETSc's handlers, which set SIGTERM
+    // back to its default action, and a SIGTERM then killed a MUMPS run at
+    // once, a converged step's row of history.csv not yet written (found by
+    // killing Hertz 3D after its first step).
     void
     MpiSession::start_for(const Parameters &parameters)
     {
-      if (!mpi &&
-          (parameters.newton.linear_solver == LinearSolverType::mumps ||
-           parameters.newton.linear_solver == LinearSolverType::iterative))
-        mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc,
-                                                                         argv,
-                                                                         1);
+      if (mpi ||
+          (parameters.newton.linear_solver != LinearSolverType::mumps &&
+           parameters.newton.linear_solver != LinearSolverType::iterative))
+        return;
+      struct sigaction interrupt, termination;
+      sigaction(SIGINT, nullptr, &interrupt);
+      sigaction(SIGTERM, nullptr, &termination);
+      mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc,
+                                                                       argv,
+                                                                       1);
+      sigaction(SIGINT, &interrupt, nullptr);
+      sigaction(SIGTERM, &termination, nullptr);
     }
 
     // A communicator of its own: on the run's, the barrier could be paired
