@@ -20,8 +20,14 @@
 //   configuration), the assembled contact rows' derivatives at a generic
 //   state (displaced, with open and closed nodes) equal central
 //   differences of the assembled residual;
-// - a second-order surface, and a slave body without the pressure field,
-//   are refused with their messages.
+// - the same with quadratic hexahedra (Q2, biquadratic faces of nine nodes
+//   clipped as four bilinear quarters, the pressure bilinear on the
+//   vertices): the segment-based patch test on the non-matching meshes and
+//   Gauss 2 x 2 on the matching ones exact, every node's displacement the
+//   closed form's; the tangents exact in finite strain;
+// - a third-order surface, a quadratic pressure, the nodal scheme on
+//   quadratic faces and a slave body without the pressure field are
+//   refused with their messages.
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -30,6 +36,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
@@ -193,11 +200,12 @@ namespace
                 SparseMatrix<double>            *matrix,
                 Vector<double>                  &rhs)
   {
-    const hp::QCollection<3>             q(QGauss<3>(2), QGauss<3>(2));
-    hp::FEValues<3>                      hp_values(dofs.get_fe_collection(),
+    const unsigned int               p_u = dofs.get_fe(0).degree;
+    const hp::QCollection<3>         q(QGauss<3>(p_u + 1), QGauss<3>(p_u + 1));
+    hp::FEValues<3>                  hp_values(dofs.get_fe_collection(),
                               q,
                               update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
+    const FEValuesExtractors::Vector displacement(0);
     std::vector<types::global_dof_index> local;
     for (const auto &cell : dofs.active_cell_iterators())
       {
@@ -268,25 +276,31 @@ struct Pair
                                       true);
   }
 
+  /// The rows at u; without `derivatives` the matrix gets the open nodes'
+  /// entries alone (what a residual needs is the right-hand side).
   void
   assemble(const Vector<double>            &u,
            const AffineConstraints<double> &constraints,
            SparseMatrix<double>            &matrix,
-           Vector<double>                  &rhs) const
+           Vector<double>                  &rhs,
+           const bool                       derivatives = true) const
   {
     std::vector<bool> closed(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
       closed[k] = states.is_closed(k);
     faces.assemble(u,
                    closed,
-                   true,
+                   derivatives,
                    0,
                    1,
                    [&](const FullMatrix<double>                   &m,
                        const Vector<double>                       &r,
                        const std::vector<types::global_dof_index> &d) {
-                     constraints.distribute_local_to_global(
-                       m, r, d, matrix, rhs);
+                     if (derivatives)
+                       constraints.distribute_local_to_global(
+                         m, r, d, matrix, rhs);
+                     else
+                       constraints.distribute_local_to_global(r, d, rhs);
                    });
     for (unsigned int k = 0; k < nodes.size(); ++k)
       if (!closed[k])
@@ -324,14 +338,15 @@ name(const Scheme scheme)
 // segment-based on any meshes, the point-wise on matching ones); elsewhere
 // the point-wise schemes' multipliers swing about p, by the measure said.
 void
-patch_test(std::ostream &out,
-           const Scheme  scheme,
-           const bool    matching,
-           const double  offset = 0)
+patch_test(std::ostream      &out,
+           const Scheme       scheme,
+           const bool         matching,
+           const double       offset = 0,
+           const unsigned int degree = 1)
 {
   Triangulation<3> blocks;
   make_blocks(blocks, matching, offset);
-  const hp::FECollection<3> fe = elements(1);
+  const hp::FECollection<3> fe = elements(degree);
   DoFHandler<3>             dofs(blocks);
   distribute(dofs, fe);
   Pair                      contact(dofs, true, scheme);
@@ -382,7 +397,8 @@ patch_test(std::ostream &out,
   check(n_active == contact.nodes.size(), "every slave node is closed");
   const std::string case_name =
     name(scheme) + ", " + (matching ? "matching" : "non-matching") + " meshes" +
-    (offset != 0 ? ", 100 out from the origin" : "");
+    (offset != 0 ? ", 100 out from the origin" : "") +
+    (degree == 2 ? ", Q2 (biquadratic faces)" : "");
   if (scheme != Scheme::segment_based && !matching)
     {
       // The node-to-segment limit, measured: the swing is real.
@@ -411,25 +427,34 @@ patch_test(std::ostream &out,
     reaction -= bulk(entry.first); // the support's force, -K u
   check(std::abs(reaction - p) < 1e-8 * p, "the support carries p A");
 
-  // Every vertex's displacement against the closed form.
-  double worst_u = 0;
+  // Every node's displacement against the closed form (the support
+  // points of the displacement's base element, on the cells' trilinear
+  // geometry).
+  double                               worst_u = 0;
+  const Mapping<3>                    &linear  = StaticMappingQ1<3>::mapping;
+  std::vector<types::global_dof_index> local;
   for (const auto &cell : dofs.active_cell_iterators())
-    for (const unsigned int v : cell->vertex_indices())
-      {
-        const Point<3>    &x        = cell->vertex(v);
-        const unsigned int b        = cell->material_id();
-        const double       lateral  = nu[b] * p / E[b];
-        const double       exact[3] = {lateral * (x[0] - offset),
-                                       lateral * (x[1] - offset),
-                                 b == 0 ? -p * (x[2] + 1) / E[0] :
-                                                -d + p * (1 + g0 - x[2]) / E[1]};
-        for (unsigned int c = 0; c < 3; ++c)
-          worst_u =
-            worse(worst_u,
-                  std::abs(
-                    u(cell->vertex_dof_index(v, c, cell->active_fe_index())) -
-                    exact[c]));
-      }
+    {
+      const FiniteElement<3> &cell_fe = cell->get_fe();
+      local.resize(cell_fe.n_dofs_per_cell());
+      cell->get_dof_indices(local);
+      for (unsigned int i = 0; i < cell_fe.n_dofs_per_cell(); ++i)
+        {
+          const auto [c, base_index] = cell_fe.system_to_component_index(i);
+          if (c > 2)
+            continue;
+          const Point<3> x =
+            linear.transform_unit_to_real_cell(cell,
+                                               cell_fe.unit_support_point(i));
+          const unsigned int b        = cell->material_id();
+          const double       lateral  = nu[b] * p / E[b];
+          const double       exact[3] = {lateral * (x[0] - offset),
+                                         lateral * (x[1] - offset),
+                                   b == 0 ? -p * (x[2] + 1) / E[0] :
+                                                  -d + p * (1 + g0 - x[2]) / E[1]};
+          worst_u = worse(worst_u, std::abs(u(local[i]) - exact[c]));
+        }
+    }
   check(worst_u < 1e-8 * d, "the displacement is the closed form's");
   out << "patch test, " << case_name << ", "
       << contact.faces.slave_faces().size() << " slave faces against "
@@ -457,11 +482,13 @@ scatter(const unsigned int i)
 // differences of the assembled residual, the pairs and the active set
 // held (those of the state).
 void
-tangent_test(std::ostream &out, const Scheme scheme)
+tangent_test(std::ostream      &out,
+             const Scheme       scheme,
+             const unsigned int degree = 1)
 {
   Triangulation<3> blocks;
   make_blocks(blocks);
-  const hp::FECollection<3> fe = elements(1);
+  const hp::FECollection<3> fe = elements(degree);
   DoFHandler<3>             dofs(blocks);
   distribute(dofs, fe);
   Pair contact(dofs, false, scheme);
@@ -470,7 +497,7 @@ tangent_test(std::ostream &out, const Scheme scheme)
   for (const auto *faces :
        {&contact.faces.slave_faces(), &contact.faces.master_faces()})
     for (const auto &face : *faces)
-      for (const auto &node : face.u_dofs)
+      for (const auto &node : face.support_dofs)
         unknowns.insert(node.begin(), node.end());
   Vector<double> state(dofs.n_dofs());
   for (const auto i : unknowns)
@@ -505,17 +532,19 @@ tangent_test(std::ostream &out, const Scheme scheme)
       Vector<double> plus(dofs.n_dofs()), minus(dofs.n_dofs());
       Vector<double> shifted(state);
       shifted(j) += h;
-      contact.assemble(shifted, none, scratch, plus);
+      contact.assemble(shifted, none, scratch, plus, false);
       shifted(j) -= 2 * h;
-      contact.assemble(shifted, none, scratch, minus);
+      contact.assemble(shifted, none, scratch, minus, false);
       for (const auto i : unknowns)
         worst =
           worse(worst,
                 std::abs((minus(i) - plus(i)) / (2 * h) - matrix.el(i, j)));
     }
   check(worst < 1e-8 * scale, "the contact tangent is exact");
-  out << "finite strain, " << name(scheme) << ", a displaced state with "
-      << n_active << " of " << contact.nodes.size()
+  out << "finite strain, " << name(scheme)
+      << (degree == 2 ? ", Q2 (biquadratic faces)" : "")
+      << ", a displaced state with " << n_active << " of "
+      << contact.nodes.size()
       << " nodes closed: the derivatives of the contact rows in "
       << unknowns.size()
       << " unknowns equal central differences to 1e-8 of the largest entry"
@@ -530,12 +559,13 @@ refusals(std::ostream &out)
   Triangulation<3> blocks;
   make_blocks(blocks);
   const auto refused = [&](const hp::FECollection<3> &fe,
-                           const types::boundary_id   slave) {
+                           const types::boundary_id   slave,
+                           const Scheme scheme = Scheme::segment_based) {
     DoFHandler<3> dofs(blocks);
     distribute(dofs, fe);
     try
       {
-        FaceContact(dofs, slave, 2, 1., true);
+        FaceContact(dofs, slave, 2, 1., true, scheme);
       }
     catch (const std::exception &e)
       {
@@ -544,7 +574,12 @@ refusals(std::ostream &out)
       }
     check(false, "the surface is refused");
   };
-  refused(elements(2), 3);
+  refused(elements(3), 3);
+  hp::FECollection<3> quadratic_pressure;
+  quadratic_pressure.push_back(FESystem<3>(FE_Q<3>(2), 3, FE_Nothing<3>(), 1));
+  quadratic_pressure.push_back(FESystem<3>(FE_Q<3>(2), 3, FE_Q<3>(2), 1));
+  refused(quadratic_pressure, 3);
+  refused(elements(2), 3, Scheme::nodal);
   hp::FECollection<3> bare;
   for (unsigned int b = 0; b < 2; ++b)
     bare.push_back(FESystem<3>(FE_Q<3>(1), 3, FE_Nothing<3>(), 1));
@@ -570,5 +605,12 @@ main()
   for (const auto scheme :
        {Scheme::segment_based, Scheme::nodal, Scheme::gauss})
     tangent_test(out, scheme);
+  // Quadratic hexahedra.
+  patch_test(out, Scheme::segment_based, false, 0, 2);
+  patch_test(out, Scheme::gauss, true, 0, 2);
+  patch_test(out, Scheme::gauss, false, 0, 2);
+  patch_test(out, Scheme::segment_based, false, 100, 2);
+  for (const auto scheme : {Scheme::segment_based, Scheme::gauss})
+    tangent_test(out, scheme, 2);
   refusals(out);
 }

@@ -255,9 +255,15 @@ main()
                "subsection Check 3\n set Boundary id = 99\nend\n",
                "has no boundary with tag 99 (Check 3)",
                "two_blocks_3d");
-  expect_error("quadratic_contact_face_in_three_dimensions",
-               "subsection Body 2\n set Displacement degree = 2\nend\n",
-               "not first-order (Q1) hexahedra",
+  expect_error("quadratic_pressure_in_three_dimensions",
+               "subsection Body 2\n set Displacement degree = 2\nend\n"
+               "subsection Finite elements\n set Multiplier degree = 2\nend\n",
+               "must be bilinear (Multiplier degree = 1) in 3D",
+               "two_blocks_3d");
+  expect_error("nodal_on_quadratic_faces_in_three_dimensions",
+               "subsection Body 2\n set Displacement degree = 2\nend\n"
+               "subsection Contact\n set Integration schemes = nodal\nend\n",
+               "the nodal scheme takes bilinear (Q1)",
                "two_blocks_3d");
   expect_error("normal_with_another_component",
                "subsection Boundary condition 2\n set Components = n, x\nend\n",

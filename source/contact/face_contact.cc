@@ -10,11 +10,14 @@
 // any number type: Mortar3D::pair_terms() for the clipped pairs,
 // PointToFace::point_terms() for a slave point; in double it gives the
 // weighted gaps of pair(), in Sacado's DFad numbers of the pair's 28
-// unknowns the residual and its exact tangent. Nothing here is
+// unknowns (58 between biquadratic faces) the residual and its exact
+// tangent. Nothing here is
 // linearised by hand: the clip vertices, the preimages, the closest points
 // and the normals all move with the unknowns through the AD numbers.
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/reference_cell.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <ring_contact/contact/face_contact.h>
@@ -39,12 +42,113 @@ namespace RingContact
     using FaceClipping::Vector3;
     using AD = Sacado::Fad::DFad<double>;
 
-    /// The bilinear basis of every face (its polynomials built once).
-    const FaceKernel::FaceBasis &
-    bilinear()
+    /// The refusals of a contact surface's cell: its displacement of
+    /// degree 1 or 2 (bilinear or biquadratic faces) and, on the slave
+    /// surface, a bilinear contact pressure.
+    void
+    require_contact_element(const FiniteElement<3>  &fe,
+                            const std::string       &surface,
+                            const types::boundary_id tag,
+                            const bool               slave)
     {
-      static const FaceKernel::FaceBasis basis(1);
-      return basis;
+      const std::string where = "the 3D " + surface +
+                                " surface (boundary tag " +
+                                std::to_string(tag) + ")";
+      if (fe.n_components() < 3 ||
+          fe.base_element(fe.component_to_base_index(0).first).degree > 2)
+        throw std::runtime_error(
+          where +
+          " lies on cells that are not first- or second-order (Q1, Q2) "
+          "hexahedra: the 3D contact takes bilinear and biquadratic faces");
+      if (!slave)
+        return;
+      if (fe.n_components() < 4 ||
+          fe.base_element(fe.component_to_base_index(3).first)
+              .n_dofs_per_vertex() != 1)
+        throw std::runtime_error("the cells of the 3D slave surface (boundary "
+                                 "tag " +
+                                 std::to_string(tag) +
+                                 ") carry no contact pressure");
+      if (fe.base_element(fe.component_to_base_index(3).first).degree != 1)
+        throw std::runtime_error(
+          "Finite elements/Multiplier degree: the contact pressure of " +
+          where +
+          " must be bilinear (Multiplier degree = 1) in 3D: a quadratic "
+          "pressure is 2D only");
+    }
+
+    /// The nodes of face `f` of `cell` in the order of the face basis (the
+    /// face's lexicographic order, (p + 1)^2 of them for displacement
+    /// degree p): their displacement unknowns and reference positions.
+    /// Each node is the cell's support point at the face point (i / p,
+    /// j / p), found among the displacement's unit support points; the
+    /// vertices are the cell's own, the others where `mapping` (or, with
+    /// none, the cell's trilinear geometry) puts them.
+    void
+    add_support_nodes(const DoFHandler<3>::active_cell_iterator  &cell,
+                      const unsigned int                          f,
+                      const std::vector<types::global_dof_index> &local,
+                      const hp::MappingCollection<3>             *mapping,
+                      FaceContact::Face                          &face)
+    {
+      const FiniteElement<3> &fe = cell->get_fe();
+      const FiniteElement<3> &base =
+        fe.base_element(fe.component_to_base_index(0).first);
+      const unsigned int      p = base.degree;
+      std::array<Point<3>, 4> corner; // the face's vertices, unit cell
+      for (unsigned int v = 0; v < 4; ++v)
+        corner[v] = GeometryInfo<3>::unit_cell_vertex(
+          GeometryInfo<3>::face_to_cell_vertices(f, v));
+      const Mapping<3> &linear =
+        ReferenceCells::get_hypercube<3>().get_default_linear_mapping<3, 3>();
+      for (unsigned int j = 0; j <= p; ++j)
+        for (unsigned int i = 0; i <= p; ++i)
+          {
+            const double   s = double(i) / p, t = double(j) / p;
+            const Point<3> unit =
+              Point<3>((1 - s) * (1 - t) * corner[0] + s * (1 - t) * corner[1] +
+                       (1 - s) * t * corner[2] + s * t * corner[3]);
+            unsigned int b = 0;
+            while (b < base.n_dofs_per_cell() &&
+                   base.unit_support_point(b).distance(unit) > 1e-12)
+              ++b;
+            AssertThrow(b < base.n_dofs_per_cell(),
+                        ExcMessage("a face node is no support point"));
+            std::array<types::global_dof_index, 3> dofs;
+            for (unsigned int d = 0; d < 3; ++d)
+              dofs[d] = local[fe.component_to_system_index(d, b)];
+            const bool vertex = i % p == 0 && j % p == 0;
+            const auto x =
+              vertex ?
+                cell->vertex(
+                  GeometryInfo<3>::face_to_cell_vertices(f,
+                                                         i / p + 2 * (j / p))) :
+              mapping != nullptr ?
+                (*mapping)[cell->active_fe_index()].transform_unit_to_real_cell(
+                  cell, unit) :
+                linear.transform_unit_to_real_cell(cell, unit);
+            face.support_dofs.push_back(dofs);
+            face.support_points.push_back({{x[0], x[1], x[2]}});
+          }
+    }
+
+    /// A face turned over: its basis' xi_1 and xi_2 exchanged (the
+    /// vertices 1 and 2; on a biquadratic face the nodes (i, j) and (j, i)).
+    void
+    turn_over(FaceContact::Face &face)
+    {
+      std::swap(face.u_dofs[1], face.u_dofs[2]);
+      std::swap(face.reference[1], face.reference[2]);
+      std::swap(face.node[1], face.node[2]);
+      const unsigned int n = face.support_points.size() == 9 ? 3 : 2;
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = j + 1; i < n; ++i)
+          {
+            std::swap(face.support_dofs[i + n * j],
+                      face.support_dofs[j + n * i]);
+            std::swap(face.support_points[i + n * j],
+                      face.support_points[j + n * i]);
+          }
     }
 
     /// The faces of boundary tag `tag`, oriented out of their cells. On
@@ -53,12 +157,14 @@ namespace RingContact
     std::vector<FaceContact::Face>
     surface_faces(const DoFHandler<3>                  &dof_handler,
                   const types::boundary_id              tag,
-                  std::vector<types::global_dof_index> *multipliers)
+                  std::vector<types::global_dof_index> *multipliers,
+                  const hp::MappingCollection<3>       *mapping)
     {
       // Each boundary face of the tag is one face of the surface; a face
-      // holds its cell's unknowns at its four vertices, found through the
+      // holds its cell's unknowns at its vertices, found through the
       // cell's vertex numbers (face_to_cell_vertices() gives them in the
-      // face's lexicographic order, the order of the face basis).
+      // face's lexicographic order, the order of the face basis), and at
+      // all its nodes (add_support_nodes()).
       const std::string              surface = multipliers ? "slave" : "master";
       std::vector<FaceContact::Face> faces;
       std::map<types::global_dof_index, unsigned int> node_of;
@@ -70,19 +176,7 @@ namespace RingContact
                 cell->face(f)->boundary_id() != tag)
               continue;
             const FiniteElement<3> &fe = cell->get_fe();
-            if (fe.n_components() < 3 || fe.degree != 1)
-              throw std::runtime_error(
-                "the 3D " + surface + " surface (boundary tag " +
-                std::to_string(tag) +
-                ") lies on cells that are not first-order (Q1) hexahedra: "
-                "the 3D contact takes bilinear faces");
-            if (multipliers != nullptr &&
-                (fe.n_components() < 4 ||
-                 fe.base_element(fe.component_to_base_index(3).first)
-                     .n_dofs_per_vertex() != 1))
-              throw std::runtime_error(
-                "the cells of the 3D slave surface (boundary tag " +
-                std::to_string(tag) + ") carry no contact pressure");
+            require_contact_element(fe, surface, tag, multipliers != nullptr);
             // The unknowns of the cell; the FESystem's component c at cell
             // vertex v is its base element's unknown v (FE_Q numbers its
             // vertices' unknowns first, in the cell's vertex order).
@@ -111,9 +205,9 @@ namespace RingContact
                   multipliers->push_back(dof);
                 face.node[v] = at->second;
               }
+            add_support_nodes(cell, f, local, mapping, face);
             // a1 x a2 at the centre, against the direction out of the cell:
-            // a face seen from inside is turned over by exchanging its
-            // nodes 1 and 2 (the basis' xi_1 and xi_2).
+            // a face seen from inside is turned over.
             const auto  &x = face.reference;
             Tensor<1, 3> a1, a2, out;
             for (unsigned int d = 0; d < 3; ++d)
@@ -124,11 +218,7 @@ namespace RingContact
                          cell->center()[d];
               }
             if (cross_product_3d(a1, a2) * out < 0)
-              {
-                std::swap(face.u_dofs[1], face.u_dofs[2]);
-                std::swap(face.reference[1], face.reference[2]);
-                std::swap(face.node[1], face.node[2]);
-              }
+              turn_over(face);
             faces.push_back(face);
           }
       if (faces.empty())
@@ -145,7 +235,7 @@ namespace RingContact
     {
       std::vector<double>       N;
       std::vector<Tensor<1, 2>> dN;
-      bilinear().evaluate(xi, N, dN);
+      FaceKernel::basis_for(nodes.size()).evaluate(xi, N, dN);
       const auto   p = FaceKernel::evaluate(nodes, N, dN);
       const auto   a = FaceClipping::cross(p.a1, p.a2);
       Tensor<1, 3> n;
@@ -158,10 +248,12 @@ namespace RingContact
     /// its size): its map from the plane is then affine. x0 - x1 - x2 + x3
     /// is the bilinear map's twist, the coefficient of xi_1 xi_2; it is
     /// compared with the square of the face's diagonal, so that the test
-    /// does not depend on the units.
+    /// does not depend on the units. A biquadratic face is taken as none.
     bool
     parallelogram(const std::vector<Vector3<double>> &x)
     {
+      if (x.size() != 4)
+        return false;
       double warp = 0, size = 0;
       for (unsigned int d = 0; d < 3; ++d)
         {
@@ -176,7 +268,8 @@ namespace RingContact
     /// 7-point rule (degree 5) integrates them exactly; on other faces they
     /// are rational functions of the plane's coordinates, and the 28-point
     /// rule (degree 11) leaves an error at round-off on moderately
-    /// distorted faces (doc/validation.md).
+    /// distorted faces (doc/validation.md). Between biquadratic faces the
+    /// integrands are of degree 6 and more: the 28-point rule.
     const Quadrature<2> &
     clip_rule(const std::vector<Vector3<double>> &slave,
               const std::vector<Vector3<double>> &master)
@@ -209,13 +302,14 @@ namespace RingContact
   } // namespace
 
 
-  FaceContact::FaceContact(const DoFHandler<3>     &dof_handler,
-                           const types::boundary_id slave_tag,
-                           const types::boundary_id master_tag,
-                           const double             c,
-                           const bool               geometrically_linear,
-                           const Scheme             scheme,
-                           const unsigned int       gauss_points)
+  FaceContact::FaceContact(const DoFHandler<3>            &dof_handler,
+                           const types::boundary_id        slave_tag,
+                           const types::boundary_id        master_tag,
+                           const double                    c,
+                           const bool                      geometrically_linear,
+                           const Scheme                    scheme,
+                           const unsigned int              gauss_points,
+                           const hp::MappingCollection<3> *mapping)
       : c(c)
       , geometrically_linear(geometrically_linear)
       , scheme(scheme)
@@ -228,27 +322,40 @@ namespace RingContact
       throw std::invalid_argument("the Gauss scheme needs at least one point");
     // The two surfaces, as faces with their unknowns; the slave's vertices
     // numbered as the multiplier nodes.
-    slave  = surface_faces(dof_handler, slave_tag, &multiplier_dofs);
-    master = surface_faces(dof_handler, master_tag, nullptr);
-    // w_k by the 2 x 2 Gauss rule on each reference slave face (exact for
-    // a parallelogram's bilinear N_k |a1 x a2|). The weights are the
-    // reference configuration's in finite strain too: they scale the open
-    // nodes' rows w_k lambda_k and the active-set choice, where a fixed
-    // scale keeps the complementarity function's switch where it was.
+    slave  = surface_faces(dof_handler, slave_tag, &multiplier_dofs, mapping);
+    master = surface_faces(dof_handler, master_tag, nullptr, mapping);
+    // The nodal scheme's points are the vertices, the pressure's nodes: on
+    // a biquadratic face they would leave the other five nodes unloaded.
+    if (scheme == Scheme::nodal && slave.front().support_points.size() != 4)
+      throw std::runtime_error(
+        "Contact/Integration schemes: the nodal scheme takes bilinear (Q1) "
+        "slave faces; on quadratic (Q2) faces it would leave the mid-side "
+        "nodes without load: use segment-based or Gauss n");
+    // w_k = int M_k dA by the (p + 1) x (p + 1) Gauss rule on each
+    // reference slave face (exact for a parallelogram's M_k |a1 x a2|; M_k
+    // the pressure's bilinear functions). The weights are the reference
+    // configuration's in finite strain too: they scale the open nodes'
+    // rows w_k lambda_k and the active-set choice, where a fixed scale
+    // keeps the complementarity function's switch where it was.
     node_weights.assign(n_nodes(), 0.);
-    const QGauss<2>           rule(2);
-    std::vector<double>       N;
-    std::vector<Tensor<1, 2>> dN;
+    std::vector<double>       N, M;
+    std::vector<Tensor<1, 2>> dN, dM;
     for (const Face &face : slave)
-      for (unsigned int q = 0; q < rule.size(); ++q)
-        {
-          bilinear().evaluate(rule.point(q), N, dN);
-          const auto   p  = FaceKernel::evaluate(face.reference, N, dN);
-          const auto   n  = FaceClipping::cross(p.a1, p.a2);
-          const double dA = std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
-          for (unsigned int k = 0; k < 4; ++k)
-            node_weights[face.node[k]] += N[k] * dA;
-        }
+      {
+        const auto &basis = FaceKernel::basis_for(face.support_points.size());
+        const QGauss<2> rule(basis.size() == 4 ? 2 : 3);
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            basis.evaluate(rule.point(q), N, dN);
+            FaceKernel::basis_for(4).evaluate(rule.point(q), M, dM);
+            const auto   p = FaceKernel::evaluate(face.support_points, N, dN);
+            const auto   n = FaceClipping::cross(p.a1, p.a2);
+            const double dA =
+              std::sqrt(FaceClipping::dot(n, n)) * rule.weight(q);
+            for (unsigned int k = 0; k < 4; ++k)
+              node_weights[face.node[k]] += M[k] * dA;
+          }
+      }
     gaps.assign(n_nodes(), 0.);
     is_covered.assign(n_nodes(), false);
   }
@@ -275,10 +382,10 @@ namespace RingContact
   std::vector<Vector3<double>>
   FaceContact::current(const Face &face, const Vector<double> &solution) const
   {
-    std::vector<Vector3<double>> x = face.reference;
-    for (unsigned int k = 0; k < 4; ++k)
+    std::vector<Vector3<double>> x = face.support_points;
+    for (unsigned int k = 0; k < x.size(); ++k)
       for (unsigned int d = 0; d < 3; ++d)
-        x[k][d] += solution(face.u_dofs[k][d]);
+        x[k][d] += solution(face.support_dofs[k][d]);
     return x;
   }
 
@@ -311,32 +418,42 @@ namespace RingContact
              const unsigned int                  face,
              const Vector3<double>              &x)
     {
-      const auto found = FaceKernel::closest_point(bilinear(), nodes, x);
+      const auto &basis = FaceKernel::basis_for(nodes.size());
+      const auto  found = FaceKernel::closest_point(basis, nodes, x);
       if (found.converged && found.inside &&
-          PointToFace::is_minimum(bilinear(), nodes, x, found.xi))
+          PointToFace::is_minimum(basis, nodes, x, found.xi))
         return {face, found.distance, found.xi, true};
-      // The edges in deal.II's lexicographic order of the vertices: 0-1 at
-      // xi_2 = 0, 2-3 at xi_2 = 1, 0-2 at xi_1 = 0, 1-3 at xi_1 = 1.
-      const std::array<std::array<unsigned int, 2>, 4> edges = {
-        {{{0, 1}}, {{2, 3}}, {{0, 2}}, {{1, 3}}}};
+      // The edges as the rows of n nodes along them (n = 2 on a bilinear
+      // face, 3 on a biquadratic one, whose edges are taken as two straight
+      // halves), in deal.II's lexicographic order: e = 0 at xi_2 = 0, 1 at
+      // xi_2 = 1, 2 at xi_1 = 0, 3 at xi_1 = 1.
+      const unsigned int n = nodes.size() == 9 ? 3 : 2;
+      const auto node      = [n](const unsigned int e, const unsigned int m) {
+        return e == 0 ? m :
+                    e == 1 ? m + n * (n - 1) :
+                    e == 2 ? n * m :
+                             n - 1 + n * m;
+      };
       Hit best{face, std::numeric_limits<double>::max(), {}, false};
       for (unsigned int e = 0; e < 4; ++e)
-        {
-          const auto  &a = nodes[edges[e][0]], &b = nodes[edges[e][1]];
-          Tensor<1, 3> ab, ax;
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              ab[d] = b[d] - a[d];
-              ax[d] = x[d] - a[d];
-            }
-          const double t = std::min(1., std::max(0., ax * ab / (ab * ab)));
-          const double distance = (ax - t * ab).norm();
-          if (distance < best.distance)
-            {
-              best.distance = distance;
-              best.xi       = e < 2 ? Point<2>(t, e) : Point<2>(e - 2, t);
-            }
-        }
+        for (unsigned int k = 0; k + 1 < n; ++k)
+          {
+            const auto  &a = nodes[node(e, k)], &b = nodes[node(e, k + 1)];
+            Tensor<1, 3> ab, ax;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                ab[d] = b[d] - a[d];
+                ax[d] = x[d] - a[d];
+              }
+            const double t = std::min(1., std::max(0., ax * ab / (ab * ab)));
+            const double distance = (ax - t * ab).norm();
+            const double s        = (k + t) / (n - 1);
+            if (distance < best.distance)
+              {
+                best.distance = distance;
+                best.xi       = e < 2 ? Point<2>(s, e) : Point<2>(e - 2, s);
+              }
+          }
       return best;
     }
 
@@ -386,7 +503,8 @@ namespace RingContact
       for (const Hit &hit : tied)
         {
           const auto on_face =
-            FaceKernel::find_on_face(bilinear(),
+            FaceKernel::find_on_face(FaceKernel::basis_for(
+                                       faces[hit.face].nodes.size()),
                                      faces[hit.face].nodes,
                                      line,
                                      FaceClipping::Vector2<double>{{0, 0}});
@@ -424,8 +542,8 @@ namespace RingContact
         return {};
       std::vector<double>       N;
       std::vector<Tensor<1, 2>> dN;
-      bilinear().evaluate(nearest->xi, N, dN);
-      const auto     &nodes           = faces[nearest->face].nodes;
+      const auto               &nodes = faces[nearest->face].nodes;
+      FaceKernel::basis_for(nodes.size()).evaluate(nearest->xi, N, dN);
       const auto      on_edge         = FaceKernel::evaluate(nodes, N, dN).x;
       const auto      n               = unit_normal(nodes, nearest->xi);
       double          signed_distance = 0;
@@ -460,7 +578,7 @@ namespace RingContact
     {
       Point<3> centre;
       for (const auto &v : x)
-        centre += Point<3>(v[0], v[1], v[2]) / 4.;
+        centre += Point<3>(v[0], v[1], v[2]) / double(x.size());
       double diameter = 0;
       for (const auto &v : x)
         diameter =
@@ -482,7 +600,8 @@ namespace RingContact
     // displacement), the current one in finite strain.
     const std::function<std::vector<Vector3<double>>(const Face &)> geometry =
       [&](const Face &face) {
-        return geometrically_linear ? face.reference : current(face, solution);
+        return geometrically_linear ? face.support_points :
+                                      current(face, solution);
       };
     // Everything of the last pair() is found again: the pairs change as
     // the surfaces slide.
@@ -554,7 +673,7 @@ namespace RingContact
           {
             std::vector<double>       N;
             std::vector<Tensor<1, 2>> dN;
-            bilinear().evaluate(points[q].xi, N, dN);
+            FaceKernel::basis_for(xs.size()).evaluate(points[q].xi, N, dN);
             const auto x = FaceKernel::evaluate(xs, N, dN).x;
             // The faces near the point, each where it comes nearest.
             std::vector<Hit> hits;
@@ -632,7 +751,7 @@ namespace RingContact
   {
     std::vector<types::global_dof_index> dofs;
     for (const Face *face : {&s, &m})
-      for (const auto &node : face->u_dofs)
+      for (const auto &node : face->support_dofs)
         dofs.insert(dofs.end(), node.begin(), node.end());
     for (const unsigned int k : s.node)
       dofs.push_back(multiplier_dofs[k]);
@@ -693,8 +812,9 @@ namespace RingContact
   }
 
 
-  // One pair's rows in AD numbers of its 28 unknowns: the slave face's 12
-  // displacements, the master face's 12 and the slave face's 4 pressures;
+  // One pair's rows in AD numbers of its unknowns: the slave face's
+  // displacements (12 on a bilinear face, 27 on a biquadratic one), the
+  // master face's and the slave face's 4 pressures;
   // the clipped pair's, or with `point` one slave point's. Without
   // derivatives the AD numbers carry none (their values are the same).
   void
@@ -706,20 +826,26 @@ namespace RingContact
                              const bool               derivatives,
                              const LocalRows         &add) const
   {
-    constexpr unsigned int n    = 28;
-    const auto             dofs = pair_dofs(s, m);
-    const auto             none = numbers::invalid_unsigned_int;
-    std::vector<AD>        lambda;
+    const auto         dofs = pair_dofs(s, m);
+    const unsigned int n = dofs.size(), first_lambda = n - 4;
+    const auto         none = numbers::invalid_unsigned_int;
+    std::vector<AD>    lambda;
     for (unsigned int k = 0; k < 4; ++k)
-      lambda.push_back(derivatives ? AD(n, 24 + k, solution(dofs[24 + k])) :
-                                     AD(solution(dofs[24 + k])));
+      lambda.push_back(
+        derivatives ?
+          AD(n, first_lambda + k, solution(dofs[first_lambda + k])) :
+          AD(solution(dofs[first_lambda + k])));
     // The positions in AD numbers; in small strain the clip, the points
     // and the normal take the reference positions (constants), the gaps
     // the current ones.
     const auto xs = ad_nodes(current(s, solution), n, derivatives ? 0 : none);
-    const auto xm = ad_nodes(current(m, solution), n, derivatives ? 12 : none);
-    const auto sg = geometrically_linear ? ad_nodes(s.reference, n, none) : xs;
-    const auto mg = geometrically_linear ? ad_nodes(m.reference, n, none) : xm;
+    const auto xm = ad_nodes(current(m, solution),
+                             n,
+                             derivatives ? 3 * s.support_points.size() : none);
+    const auto sg =
+      geometrically_linear ? ad_nodes(s.support_points, n, none) : xs;
+    const auto mg =
+      geometrically_linear ? ad_nodes(m.support_points, n, none) : xm;
     const auto terms =
       point != nullptr ?
         PointToFace::point_terms(sg,

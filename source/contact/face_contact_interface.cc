@@ -59,7 +59,8 @@ namespace RingContact
                                         const ContactParameters &parameters,
                                         const IntegrationScheme &scheme,
                                         const double largest_youngs_modulus,
-                                        const bool   geometrically_linear)
+                                        const bool   geometrically_linear,
+                                        const hp::MappingCollection<3> *mapping)
       : edge_length(shortest_edge(dof_handler, parameters.slave_boundary_id))
       , complementarity_constant(parameters.complementarity_constant > 0 ?
                                    parameters.complementarity_constant :
@@ -72,7 +73,8 @@ namespace RingContact
                      complementarity_constant,
                      geometrically_linear,
                      face_scheme(scheme),
-                     scheme.n_points)
+                     scheme.n_points,
+                     mapping)
   {
     if (parameters.frictional())
       throw std::runtime_error("friction is 2D only: a 3D contact pair is "

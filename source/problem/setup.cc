@@ -419,8 +419,9 @@ namespace RingContact
       {
         contacts.push_back(
           make_contact_interface(slave, master, scheme, geometrically_linear));
-        // In 3D the faces are bilinear (FaceContact refuses others) and
-        // every 3D scheme integrates them as its own rule says.
+        // In 3D the faces are bilinear or biquadratic (FaceContact refuses
+        // others, and the nodal scheme on biquadratic ones) and every 3D
+        // scheme integrates them as its own rule says.
         if constexpr (dim == 2)
           {
             refuse_slave_corners(contacts.back()->slave_surface(), slave);
@@ -527,7 +528,8 @@ namespace RingContact
         scheme,
         std::max(slave_body.material.youngs_modulus,
                  master_body.material.youngs_modulus),
-        geometrically_linear);
+        geometrically_linear,
+        &mapping_collection);
     else
       return std::make_unique<ContactInterface<dim>>(
         dof_handler,

@@ -26,9 +26,9 @@
 // and whose projections on the slave face's plane overlap. The point-wise
 // schemes (nodal, Gauss N x N; point_to_face.h) pair each point of a slave
 // face with its closest point on the master surface instead, and make the
-// same rows from it. The faces are
-// bilinear (Q1 hexahedra): quadratic faces, split into four bilinear
-// sub-faces, are the next step, and a Q2 surface is refused here. This is
+// same rows from it. The faces are bilinear (Q1 hexahedra) or biquadratic
+// (Q2: nine nodes, clipped as four bilinear quarters, mortar_3d.h); the
+// pressure is bilinear on the slave faces' vertices in both. This is
 // the geometry and the rows of one pair of surfaces; ContactInterface<3>
 // (face_contact_interface.h) adds the active set and is what
 // ContactProblem<3> holds per pair.
@@ -36,6 +36,7 @@
 #define ring_contact_contact_face_contact_h
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/mapping_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -71,12 +72,16 @@ namespace RingContact
     /// order of the face basis, oriented so that a1 x a2 points out of its
     /// body; their displacement unknowns (x, y, z) and reference
     /// positions, and on the slave surface the index of each vertex among
-    /// the multiplier nodes.
+    /// the multiplier nodes. The same of all its nodes in the basis' order
+    /// (support_dofs, support_points): the four vertices of a bilinear
+    /// face, the nine nodes of a biquadratic one (vertices 0, 2, 6, 8).
     struct Face
     {
       std::array<std::array<types::global_dof_index, 3>, 4> u_dofs;
       std::vector<FaceClipping::Vector3<double>>            reference;
       std::array<unsigned int, 4>                           node;
+      std::vector<std::array<types::global_dof_index, 3>>   support_dofs;
+      std::vector<FaceClipping::Vector3<double>>            support_points;
       /// The body (material id) of the face's cell.
       types::material_id body = numbers::invalid_material_id;
     };
@@ -85,14 +90,18 @@ namespace RingContact
     /// (the unknowns' first three components are the displacement, the
     /// fourth the multiplier on the slave body's cells). `c` is the
     /// complementarity constant (a stiffness per length, E / h).
-    /// `gauss_points`: n of the Gauss n x n scheme.
-    FaceContact(const DoFHandler<3>     &dof_handler,
-                const types::boundary_id slave,
-                const types::boundary_id master,
-                const double             c,
-                const bool               geometrically_linear,
-                const Scheme             scheme       = Scheme::segment_based,
-                const unsigned int       gauss_points = 2);
+    /// `gauss_points`: n of the Gauss n x n scheme. `mapping` (one per
+    /// active finite element index) places a quadratic face's mid-side
+    /// and centre nodes where the bulk's mapping puts them; without it
+    /// they lie on the cells' straight (trilinear) geometry.
+    FaceContact(const DoFHandler<3>            &dof_handler,
+                const types::boundary_id        slave,
+                const types::boundary_id        master,
+                const double                    c,
+                const bool                      geometrically_linear,
+                const Scheme                    scheme = Scheme::segment_based,
+                const unsigned int              gauss_points = 2,
+                const hp::MappingCollection<3> *mapping      = nullptr);
 
     /// Pair the faces at `solution` (the reference configuration's in
     /// small strain) and evaluate the weighted gaps g~_k and which nodes
@@ -111,7 +120,8 @@ namespace RingContact
     }
 
     /// The couplings of every candidate pair of the last pair() (each
-    /// pair's 28 unknowns with each other), through `constraints`.
+    /// pair's unknowns with each other: 28 between bilinear faces, 58
+    /// between biquadratic ones), through `constraints`.
     void
     add_couplings(DynamicSparsityPattern          &pattern,
                   const AffineConstraints<double> &constraints) const;
@@ -243,8 +253,8 @@ namespace RingContact
                 std::vector<bool>    &covered);
 
     /// The unknowns of a candidate pair, in the local order of its rows:
-    /// the slave face's displacements (3 per node), the master face's, the
-    /// slave face's pressures.
+    /// the slave face's displacements (3 per node, all its nodes), the
+    /// master face's, the slave face's pressures (its four vertices).
     std::vector<types::global_dof_index>
     pair_dofs(const Face &s, const Face &m) const;
 

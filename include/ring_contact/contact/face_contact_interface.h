@@ -44,12 +44,15 @@ namespace RingContact
     /// contact integrated by `scheme` (segment-based, nodal or Gauss n:
     /// n x n points per slave face). `largest_youngs_modulus` sets the
     /// complementarity constant E / h (h: the shortest slave face edge)
-    /// when the parameters give none.
-    ContactInterface(const DoFHandler<3>     &dof_handler,
-                     const ContactParameters &parameters,
-                     const IntegrationScheme &scheme,
-                     const double             largest_youngs_modulus,
-                     const bool               geometrically_linear);
+    /// when the parameters give none. `mapping` (the bodies' mappings by
+    /// active finite element index) places the nodes of quadratic faces
+    /// (FaceContact).
+    ContactInterface(const DoFHandler<3>            &dof_handler,
+                     const ContactParameters        &parameters,
+                     const IntegrationScheme        &scheme,
+                     const double                    largest_youngs_modulus,
+                     const bool                      geometrically_linear,
+                     const hp::MappingCollection<3> *mapping = nullptr);
 
     ContactInterface(const ContactInterface &) = delete;
     ContactInterface &

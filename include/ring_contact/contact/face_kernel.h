@@ -28,6 +28,8 @@
 #include <ring_contact/contact/face_clipping.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace RingContact
@@ -100,6 +102,34 @@ namespace RingContact
     };
 
     /// A point of a face and its tangents.
+    /// The basis of a face of `n_nodes` nodes: bilinear (4) or
+    /// biquadratic (9), each built once.
+    inline const FaceBasis &
+    basis_for(const std::size_t n_nodes)
+    {
+      static const FaceBasis bilinear(1), biquadratic(2);
+      if (n_nodes == bilinear.size())
+        return bilinear;
+      if (n_nodes == biquadratic.size())
+        return biquadratic;
+      throw std::invalid_argument("a face has 4 (bilinear) or 9 "
+                                  "(biquadratic) nodes, not " +
+                                  std::to_string(n_nodes));
+    }
+
+    /// The bilinear functions at the vertices (lexicographic) at xi, in
+    /// the numbers of xi: the contact pressure's basis on a face of any
+    /// degree (its multiplier is bilinear on the face's vertices).
+    template <typename Number>
+    std::vector<Number>
+    bilinear_values(const Vector2<Number> &xi)
+    {
+      return {(1. - xi[0]) * (1. - xi[1]),
+              xi[0] * (1. - xi[1]),
+              (1. - xi[0]) * xi[1],
+              xi[0] * xi[1]};
+    }
+
     template <typename Number>
     struct FacePoint
     {

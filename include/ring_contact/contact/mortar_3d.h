@@ -13,8 +13,14 @@
 // needs (the clip vertices, the points and their preimages all move with
 // the unknowns).
 //
-// Bilinear faces (degree 1); a quadratic face is to be split into four
-// bilinear sub-faces before the clip (Puso, Laursen & Solberg 2008).
+// Bilinear (4 nodes) and biquadratic (9 nodes) faces. A biquadratic face
+// is clipped as its four bilinear quarters (the polygons of its nodes;
+// Puso, Laursen & Solberg 2008), each point then found on the whole
+// curved face: the quarters only cut the integration into cells where the
+// integrands are smooth, the geometry and the shape functions are the
+// face's own. The contact pressure is bilinear on the face's vertices
+// whatever its degree (the multiplier one degree below a quadratic
+// displacement, as in 2D: the inf-sup condition).
 #ifndef ring_contact_contact_mortar_3d_h
 #define ring_contact_contact_mortar_3d_h
 
@@ -44,16 +50,38 @@ namespace RingContact
       return {nodes[0], nodes[1], nodes[3], nodes[2]};
     }
 
+    /// The polygons a face is clipped as: a bilinear face's corners, or
+    /// the corners of the four quarters of a biquadratic face (its nine
+    /// nodes lexicographic, k = i + 3 j), each in order around it.
+    template <typename Number>
+    std::vector<std::vector<Vector3<Number>>>
+    clip_polygons(const std::vector<Vector3<Number>> &nodes)
+    {
+      if (nodes.size() == 4)
+        return {corners(nodes)};
+      std::vector<std::vector<Vector3<Number>>> quarters;
+      for (unsigned int j = 0; j < 2; ++j)
+        for (unsigned int i = 0; i < 2; ++i)
+          {
+            const unsigned int k = i + 3 * j;
+            quarters.push_back(
+              {nodes[k], nodes[k + 1], nodes[k + 4], nodes[k + 3]});
+          }
+      return quarters;
+    }
+
     /// What a slave face and a master face contribute to the contact rows:
-    /// the weighted gaps g_i of the slave face's four nodes, and the nodal
-    /// forces of the contact pressure lambda = sum_k N_k lambda_k on the
-    /// two faces' nodes, as residual terms (three components per node):
+    /// the weighted gaps g_k = int M_k g dA of the slave face's four
+    /// vertices (M_k the bilinear functions of the pressure), and the nodal
+    /// forces of the contact pressure lambda = sum_k M_k lambda_k on the
+    /// two faces' nodes (4 or 9 each, N_a and Phi_b their shape
+    /// functions), as residual terms (three components per node):
     ///   slave node a:   + int lambda N_a n dA,
     ///   master node b:  - int lambda Phi_b n dA,
     /// the derivatives of -sum_k lambda_k g_k with the normal and the
     /// weights held (the mortar form of Popp et al.; the pressure pushes
     /// the slave back along -n and the master along n, and the two forces
-    /// balance: sum_a N_a = sum_b Phi_b = 1).
+    /// balance: sum_a N_a = sum_b Phi_b = 1). On bilinear faces M = N.
     template <typename Number>
     struct PairTerms
     {
@@ -63,6 +91,27 @@ namespace RingContact
       /// overlap).
       double overlap = 0;
     };
+
+    /// The forces of a pressure f (a weight times the pressure) along n at
+    /// a point: + f N_a n on the slave face's nodes, - f Phi_b n on the
+    /// master's.
+    template <typename Number>
+    void
+    add_forces(const Number              &f,
+               const Vector3<Number>     &n,
+               const std::vector<Number> &N,
+               const std::vector<Number> &Phi,
+               PairTerms<Number>         &terms)
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const Number fn = f * n[d];
+          for (unsigned int a = 0; a < N.size(); ++a)
+            terms.slave_force[3 * a + d] += fn * N[a];
+          for (unsigned int b = 0; b < Phi.size(); ++b)
+            terms.master_force[3 * b + d] -= fn * Phi[b];
+        }
+    }
 
     /// The terms of PairTerms for faces whose clip, points and normal are
     /// those of `slave_geometry` and `master_geometry` and whose gaps are
@@ -76,7 +125,8 @@ namespace RingContact
     /// QGaussSimplex<2>(3) integrates the products of two bilinear
     /// functions exactly; on other faces the preimages, and so the
     /// integrands, are not polynomials and a rule of a higher degree
-    /// leaves a smaller error.
+    /// leaves a smaller error; on biquadratic faces the integrands are of
+    /// a degree above 5 and the higher rule is needed.
     template <typename Number>
     PairTerms<Number>
     pair_terms(const std::vector<Vector3<Number>> &slave_geometry,
@@ -86,74 +136,77 @@ namespace RingContact
                const std::vector<Number>          &lambda,
                const Quadrature<2>                &rule)
     {
-      // One basis for every call (its polynomials are built once).
-      static const FaceBasis basis(1);
-      for (const auto *face :
-           {&slave_geometry, &master_geometry, &slave, &master})
-        if (face->size() != basis.size())
-          throw std::invalid_argument("pair_terms() takes bilinear faces");
-      PairTerms<Number> terms;
+      // The bases by the faces' numbers of nodes (built once each).
+      const FaceBasis &s_basis = FaceKernel::basis_for(slave_geometry.size());
+      const FaceBasis &m_basis = FaceKernel::basis_for(master_geometry.size());
+      if (slave.size() != slave_geometry.size() ||
+          master.size() != master_geometry.size())
+        throw std::invalid_argument(
+          "pair_terms(): a face's positions and geometry differ in size");
+      const unsigned int ns = slave.size(), nm = master.size();
+      PairTerms<Number>  terms;
       terms.gaps.assign(4, Number(0));
-      terms.slave_force.assign(lambda.empty() ? 0 : 12, Number(0));
-      terms.master_force.assign(lambda.empty() ? 0 : 12, Number(0));
-      const auto cell = FaceClipping::clip_faces(corners(slave_geometry),
-                                                 corners(master_geometry));
-      for (const auto &t : cell.triangles)
-        for (unsigned int q = 0; q < rule.size(); ++q)
+      terms.slave_force.assign(lambda.empty() ? 0 : 3 * ns, Number(0));
+      terms.master_force.assign(lambda.empty() ? 0 : 3 * nm, Number(0));
+      for (const auto &slave_part : clip_polygons(slave_geometry))
+        for (const auto &master_part : clip_polygons(master_geometry))
           {
-            // The point in the plane, in the numbers of the clip vertices.
-            const auto     &v = t.vertices;
-            const Point<2> &l = rule.point(q);
-            Vector2<Number> p;
-            for (unsigned int d = 0; d < 2; ++d)
-              p[d] = v[0][d] + l[0] * (v[1][d] - v[0][d]) +
-                     l[1] * (v[2][d] - v[0][d]);
-            // Its preimages on both faces, with their derivatives.
-            const FaceKernel::Preimage on_s =
-              FaceKernel::find_on_face(basis, slave_geometry, cell.plane, p);
-            const FaceKernel::Preimage on_m =
-              FaceKernel::find_on_face(basis, master_geometry, cell.plane, p);
-            if (!on_s.converged || !on_m.converged)
-              throw std::runtime_error(
-                "a clip point was not found on its faces");
-            const std::vector<Number> N =
-              FaceKernel::linearised_xi(
-                basis, slave_geometry, cell.plane, p, on_s.xi)
-                .N;
-            const std::vector<Number> Phi =
-              FaceKernel::linearised_xi(
-                basis, master_geometry, cell.plane, p, on_m.xi)
-                .N;
-            // The gap along the plane's normal.
-            Number gap = 0;
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                Number xs = 0, xm = 0;
-                for (unsigned int k = 0; k < 4; ++k)
-                  {
-                    xs += N[k] * slave[k][d];
-                    xm += Phi[k] * master[k][d];
-                  }
-                gap += (xm - xs) * cell.plane.normal[d];
-              }
-            // The weight is the clip triangle's area in the auxiliary
-            // plane: the slave face's own where the face is planar (a
-            // warped face's differs to second order in its warp).
-            const Number w = rule.weight(q) * 2. * t.area;
-            terms.overlap += FaceClipping::value(w);
-            for (unsigned int i = 0; i < 4; ++i)
-              terms.gaps[i] += w * N[i] * gap;
-            if (lambda.empty())
-              continue;
-            Number pressure = 0;
-            for (unsigned int k = 0; k < 4; ++k)
-              pressure += N[k] * lambda[k];
-            for (unsigned int k = 0; k < 4; ++k)
-              for (unsigned int d = 0; d < 3; ++d)
+            const auto cell = FaceClipping::clip_faces(slave_part, master_part);
+            for (const auto &t : cell.triangles)
+              for (unsigned int q = 0; q < rule.size(); ++q)
                 {
-                  const Number f = w * pressure * cell.plane.normal[d];
-                  terms.slave_force[3 * k + d] += f * N[k];
-                  terms.master_force[3 * k + d] -= f * Phi[k];
+                  // The point in the plane, in the numbers of the clip
+                  // vertices.
+                  const auto     &v = t.vertices;
+                  const Point<2> &l = rule.point(q);
+                  Vector2<Number> p;
+                  for (unsigned int d = 0; d < 2; ++d)
+                    p[d] = v[0][d] + l[0] * (v[1][d] - v[0][d]) +
+                           l[1] * (v[2][d] - v[0][d]);
+                  // Its preimages on both faces, with their derivatives.
+                  const FaceKernel::Preimage on_s = FaceKernel::find_on_face(
+                    s_basis, slave_geometry, cell.plane, p);
+                  const FaceKernel::Preimage on_m = FaceKernel::find_on_face(
+                    m_basis, master_geometry, cell.plane, p);
+                  if (!on_s.converged || !on_m.converged)
+                    throw std::runtime_error(
+                      "a clip point was not found on its faces");
+                  const auto at_s = FaceKernel::linearised_xi(
+                    s_basis, slave_geometry, cell.plane, p, on_s.xi);
+                  const std::vector<Number> &N = at_s.N;
+                  const std::vector<Number>  Phi =
+                    FaceKernel::linearised_xi(
+                      m_basis, master_geometry, cell.plane, p, on_m.xi)
+                      .N;
+                  // The pressure's functions: the face's own on a bilinear
+                  // face, the bilinear ones of the vertices on a quadratic.
+                  const std::vector<Number> M =
+                    ns == 4 ? N : FaceKernel::bilinear_values(at_s.xi);
+                  // The gap along the plane's normal.
+                  Number gap = 0;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      Number xs = 0, xm = 0;
+                      for (unsigned int k = 0; k < ns; ++k)
+                        xs += N[k] * slave[k][d];
+                      for (unsigned int k = 0; k < nm; ++k)
+                        xm += Phi[k] * master[k][d];
+                      gap += (xm - xs) * cell.plane.normal[d];
+                    }
+                  // The weight is the clip triangle's area in the auxiliary
+                  // plane: the slave face's own where the face is planar (a
+                  // warped face's differs to second order in its warp).
+                  const Number w = rule.weight(q) * 2. * t.area;
+                  terms.overlap += FaceClipping::value(w);
+                  for (unsigned int i = 0; i < 4; ++i)
+                    terms.gaps[i] += w * M[i] * gap;
+                  if (lambda.empty())
+                    continue;
+                  Number pressure = 0;
+                  for (unsigned int k = 0; k < 4; ++k)
+                    pressure += M[k] * lambda[k];
+                  add_forces(
+                    Number(w * pressure), cell.plane.normal, N, Phi, terms);
                 }
           }
       return terms;

@@ -21,6 +21,11 @@
 // point's xi is one Newton step of its exact Hessian (its derivatives
 // exact); in small strain they are the reference configuration's.
 //
+// On a biquadratic face (9 nodes) N_k are its own nine functions for the
+// positions and forces and the pressure is bilinear on its vertices (M_k,
+// as in mortar_3d.h); the nodal scheme takes bilinear faces only (on a
+// quadratic one its points would leave the mid-side nodes without load).
+//
 // Point-wise schemes do not pass the contact patch test where the
 // surfaces' vertices do not meet (the node-to-segment limit): the
 // multipliers then swing about the uniform pressure.
@@ -143,61 +148,75 @@ namespace RingContact
                 const SlavePoint                   &point,
                 const Tie                          *tie = nullptr)
     {
-      static const FaceBasis    basis(1);
-      std::vector<double>       N;
+      const FaceBasis &s_basis = FaceKernel::basis_for(slave_geometry.size());
+      const FaceBasis &m_basis = FaceKernel::basis_for(master_geometry.size());
+      const unsigned int        ns = slave.size(), nm = master.size();
+      std::vector<double>       N, M;
       std::vector<Tensor<1, 2>> dN;
-      // The point's shape values and weight omega.
+      // The point's shape values (N of the face's nodes, M of the
+      // pressure's bilinear functions, the same on a bilinear face) and
+      // weight omega.
       Number omega = 0;
       if (point.vertex == numbers::invalid_unsigned_int)
         {
-          basis.evaluate(point.xi, N, dN);
+          s_basis.evaluate(point.xi, N, dN);
           omega = point.weight * area_element(slave_geometry, N, dN);
+          M     = ns == 4 ?
+                    N :
+                    FaceKernel::bilinear_values(
+                  FaceClipping::Vector2<double>{{point.xi[0], point.xi[1]}});
         }
       else
         {
+          if (ns != 4)
+            throw std::invalid_argument(
+              "point_terms(): the nodal scheme takes bilinear faces");
           const QGauss<2> rule(2);
           for (unsigned int q = 0; q < rule.size(); ++q)
             {
-              basis.evaluate(rule.point(q), N, dN);
+              s_basis.evaluate(rule.point(q), N, dN);
               omega += rule.weight(q) * N[point.vertex] *
                        area_element(slave_geometry, N, dN);
             }
           N.assign(4, 0.);
           N[point.vertex] = 1;
+          M               = N;
         }
       // Its place, its closest point on the master face and the normal
       // there, in the numbers (first order in xi - xi_m0 is all the
       // derivatives need).
       Vector3<Number> x_g = {{0, 0, 0}};
-      for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int k = 0; k < ns; ++k)
         for (unsigned int d = 0; d < 3; ++d)
           x_g[d] += N[k] * slave_geometry[k][d];
       // (At a tie the partner and the normal are the Tie's constants.)
       const auto found =
         tie != nullptr ?
           FaceKernel::ClosestPoint{tie->xi, true, true, 0.} :
-          FaceKernel::closest_point(basis,
+          FaceKernel::closest_point(m_basis,
                                     FaceKernel::values(master_geometry),
                                     values(x_g));
       if (!found.converged)
         throw std::runtime_error(
           "a slave point's closest point on its master face was lost");
-      const Point<2> &xi_m0 = found.xi;
-      const auto      xi =
-        tie != nullptr ?
-               FaceClipping::Vector2<Number>{{xi_m0[0], xi_m0[1]}} :
-               FaceKernel::linearised_closest_xi(basis, master_geometry, x_g, xi_m0);
-      const FaceKernel::ShapeDerivatives s(basis, xi_m0);
+      const Point<2>                    &xi_m0 = found.xi;
+      const auto                         xi    = tie != nullptr ?
+                                                   FaceClipping::Vector2<Number>{{xi_m0[0], xi_m0[1]}} :
+                                                   FaceKernel::linearised_closest_xi(m_basis,
+                                                          master_geometry,
+                                                          x_g,
+                                                          xi_m0);
+      const FaceKernel::ShapeDerivatives s(m_basis, xi_m0);
       const Number        dxi[2] = {xi[0] - xi_m0[0], xi[1] - xi_m0[1]};
-      std::vector<Number> Phi(4);
+      std::vector<Number> Phi(nm);
       Vector3<Number>     a[2];
-      for (unsigned int b = 0; b < 4; ++b)
+      for (unsigned int b = 0; b < nm; ++b)
         Phi[b] = s.N[b] + s.dN[b][0] * dxi[0] + s.dN[b][1] * dxi[1];
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int d = 0; d < 3; ++d)
           {
             a[i][d] = 0;
-            for (unsigned int b = 0; b < 4; ++b)
+            for (unsigned int b = 0; b < nm; ++b)
               a[i][d] += (s.dN[b][i] + s.d2N[b][i][0] * dxi[0] +
                           s.d2N[b][i][1] * dxi[1]) *
                          master_geometry[b][d];
@@ -211,31 +230,27 @@ namespace RingContact
       for (unsigned int d = 0; d < 3; ++d)
         {
           Number xs = 0, xm = 0;
-          for (unsigned int k = 0; k < 4; ++k)
-            {
-              xs += N[k] * slave[k][d];
-              xm += Phi[k] * master[k][d];
-            }
+          for (unsigned int k = 0; k < ns; ++k)
+            xs += N[k] * slave[k][d];
+          for (unsigned int k = 0; k < nm; ++k)
+            xm += Phi[k] * master[k][d];
           gap += (xs - xm) * n[d];
         }
       Mortar3D::PairTerms<Number> terms;
       terms.gaps.assign(4, Number(0));
       for (unsigned int k = 0; k < 4; ++k)
-        terms.gaps[k] = omega * N[k] * gap;
+        terms.gaps[k] = omega * M[k] * gap;
       terms.overlap = FaceClipping::value(omega);
       if (lambda.empty())
         return terms;
       for (unsigned int k = 0; k < 4; ++k)
-        pressure += N[k] * lambda[k];
-      terms.slave_force.assign(12, Number(0));
-      terms.master_force.assign(12, Number(0));
-      for (unsigned int k = 0; k < 4; ++k)
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            const Number f = omega * pressure * n[d];
-            terms.slave_force[3 * k + d] -= f * N[k];
-            terms.master_force[3 * k + d] += f * Phi[k];
-          }
+        pressure += M[k] * lambda[k];
+      terms.slave_force.assign(3 * ns, Number(0));
+      terms.master_force.assign(3 * nm, Number(0));
+      // The slave is pushed along -n here (n is the master's normal):
+      // the mortar terms' signs the other way round.
+      const std::vector<Number> slave_N(N.begin(), N.end());
+      Mortar3D::add_forces(Number(-omega * pressure), n, slave_N, Phi, terms);
       return terms;
     }
   } // namespace PointToFace

@@ -181,18 +181,23 @@ namespace RingContact
                 "Multiplier degree",
                 "must not exceed the displacement degree of the upper "
                 "(slave) block");
-        // In 3D the faces are bilinear (the 3D contact's), and a probe the
-        // file leaves alone is at (0.6, 0, 0.5), on the interface.
+        // In 3D the faces are bilinear or biquadratic (the 3D contact's)
+        // with a bilinear pressure, and a probe the file leaves alone is at
+        // (0.6, 0, 0.5), on the interface.
         if (space_dimension == 3)
           {
             for (const auto &[degree, block] :
                  {std::make_pair(degree_lower, "lower"),
                   std::make_pair(degree_upper, "upper")})
-              require(degree == 1,
+              require(degree <= 2,
                       "Patch test",
                       std::string("Displacement degree ") + block + " block",
-                      "must be 1 in 3D (the 3D contact takes bilinear "
-                      "faces)");
+                      "must be 1 or 2 in 3D (the 3D contact takes bilinear "
+                      "and biquadratic faces)");
+            require(parameters.finite_elements.multiplier_degree == 1,
+                    "Finite elements",
+                    "Multiplier degree",
+                    "must be 1 in 3D (a bilinear contact pressure)");
             if (parameters.origins.count(entry_key("Contact", "Probe point")) ==
                 0)
               reference.probe = {0.6, 0, 0.5};
