@@ -218,10 +218,16 @@ namespace RingContact
           Utilities::MPI::min(static_cast<unsigned int>(outside_law_body),
                               communicator);
         for (const BoundaryLoad<dim> &load : boundary_loads)
-          for (unsigned int d = 0; d < dim; ++d)
-            applied_resultant[load.boundary_id][d] =
-              Utilities::MPI::sum(applied_resultant[load.boundary_id][d],
-                                  communicator);
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              applied_resultant[load.boundary_id][d] =
+                Utilities::MPI::sum(applied_resultant[load.boundary_id][d],
+                                    communicator);
+            for (unsigned int d = 0; d < 3; ++d)
+              applied_moment[load.boundary_id][d] =
+                Utilities::MPI::sum(applied_moment[load.boundary_id][d],
+                                    communicator);
+          }
         for (const auto &message :
              Utilities::MPI::all_gather(communicator, boundary_data_error))
           if (!message.empty())
@@ -550,6 +556,7 @@ namespace RingContact
     // The resultants of this assembly's state only (a follower pressure's
     // changes with the surface).
     applied_resultant.clear();
+    applied_moment.clear();
     if (boundary_loads.empty())
       return;
     // p + 1 Gauss points on the faces of an element of degree p (the
@@ -567,6 +574,7 @@ namespace RingContact
                                            update_JxW_values);
     std::vector<types::global_dof_index> dofs;
     std::vector<Tensor<2, dim>>          grad_u;
+    std::vector<Tensor<1, dim>>          u_at;
     FullMatrix<double>                   face_matrix;
     Vector<double>                       face_rhs;
     for (const BoundaryLoad<dim> &load : boundary_loads)
@@ -595,6 +603,8 @@ namespace RingContact
               // the reference configuration, and N is its outward normal.
               grad_u.resize(fv.n_quadrature_points);
               fv[displacement].get_function_gradients(solution, grad_u);
+              u_at.resize(fv.n_quadrature_points);
+              fv[displacement].get_function_values(solution, u_at);
               for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
                 {
                   const Tensor<1, dim> value =
@@ -618,6 +628,16 @@ namespace RingContact
                   // The integral of the load over its boundary, for the
                   // scenario's resultant checks.
                   applied_resultant[load.boundary_id] += force;
+                  // Its moment about the origin, x x t dA, at the point's
+                  // current position where the body is in finite strain.
+                  Tensor<1, 3> x, t;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      x[d] = fv.quadrature_point(q)[d] +
+                             (follower ? u_at[q][d] : 0.);
+                      t[d] = force[d];
+                    }
+                  applied_moment[load.boundary_id] += cross_product_3d(x, t);
                   for (unsigned int i = 0; i < n; ++i)
                     {
                       const unsigned int c =

@@ -191,6 +191,18 @@ namespace RingContact
     {
       return applied_resultant;
     }
+    const std::map<types::boundary_id, Tensor<1, 3>> &
+    applied_moments() const override
+    {
+      return applied_moment;
+    }
+    bool
+    in_finite_strain() const override
+    {
+      return std::any_of(bodies.begin(), bodies.end(), [](const auto &body) {
+        return !body.material.geometrically_linear;
+      });
+    }
     unsigned int
     mesh_version() const override
     {
@@ -498,6 +510,8 @@ namespace RingContact
     /// The integral of the applied loads on each loaded boundary, from the
     /// last assembly.
     std::map<types::boundary_id, Tensor<1, dim>> applied_resultant;
+    /// ... and of their moments about the origin (SolutionState).
+    std::map<types::boundary_id, Tensor<1, 3>> applied_moment;
     /// Why the last converged state cannot be trusted.
     std::string unbalanced_forces;
 

@@ -62,12 +62,20 @@ namespace RingContact
     virtual double
     reported_pressure(const types::global_dof_index node) const = 0;
 
-    /// The nodal forces of the state (equilibrium.h), and the integral of
-    /// the applied loads over each loaded boundary.
+    /// The nodal forces of the state (equilibrium.h), the integral of the
+    /// applied loads over each loaded boundary, and that of their moment
+    /// about the origin (x x t, x current where the body is in finite
+    /// strain; three components, in 2D the third alone).
     virtual NodalForces
     nodal_forces() const = 0;
     virtual const std::map<types::boundary_id, Tensor<1, dim>> &
     applied_resultants() const = 0;
+    virtual const std::map<types::boundary_id, Tensor<1, 3>> &
+    applied_moments() const = 0;
+    /// Whether some body is in finite strain (its forces then act at the
+    /// current positions).
+    virtual bool
+    in_finite_strain() const = 0;
 
     /// A number that changes whenever the mesh and its unknowns do
     /// (adaptive refinement): what a reader built from them must build

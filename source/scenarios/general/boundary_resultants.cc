@@ -233,7 +233,8 @@ namespace RingContact
           return;
         for (const BoundaryNode<dim> &node : nodes)
           {
-            auto &list = holders[node.dofs];
+            position_of[node.dofs] = node.X;
+            auto &list             = holders[node.dofs];
             auto  it =
               std::find_if(list.begin(), list.end(), [&](const auto &h) {
                 return h.boundary == id;
@@ -351,11 +352,12 @@ namespace RingContact
   }
 
   template <int dim>
-  Tensor<1, dim>
-  BoundaryResultants<dim>::resultant(
-    const types::boundary_id                            boundary_id,
-    const Vector<double>                               &reactions,
-    const std::map<types::boundary_id, Tensor<1, dim>> &applied) const
+  void
+  BoundaryResultants<dim>::for_each_part(
+    const types::boundary_id boundary_id,
+    const Vector<double>    &reactions,
+    const std::function<void(const Node &, const Tensor<1, dim> &)> &visit)
+    const
   {
     // A node's reaction as a vector: its displacement rows.
     const auto reaction_at = [&](const Node &node) {
@@ -364,16 +366,11 @@ namespace RingContact
         s[d] = reactions(node[d]);
       return s;
     };
-    // The applied load is integrated by the assembly over the boundary's
-    // own faces: no corner question arises for it.
-    Tensor<1, dim> result;
-    if (const auto load = applied.find(boundary_id); load != applied.end())
-      result += load->second;
     // The directions this boundary holds alone, node by node: the
     // reaction's component along each is wholly its own.
     if (const auto list = shares.find(boundary_id); list != shares.end())
       for (const Share &share : list->second)
-        result += share.part * reaction_at(share.node);
+        visit(share.node, share.part * reaction_at(share.node));
 
     // A direction held at a node by several boundaries: the node's reaction
     // along it, c = amount . s, is the integral of each boundary's traction
@@ -419,8 +416,76 @@ namespace RingContact
           own_estimate + (total - estimated) * (weights > 0 ?
                                                   member->weight / weights :
                                                   1.0 / shared.members.size());
-        result += part * shared.direction;
+        visit(shared.node, part * shared.direction);
       }
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BoundaryResultants<dim>::resultant(
+    const types::boundary_id                            boundary_id,
+    const Vector<double>                               &reactions,
+    const std::map<types::boundary_id, Tensor<1, dim>> &applied) const
+  {
+    // The applied load is integrated by the assembly over the boundary's
+    // own faces: no corner question arises for it.
+    Tensor<1, dim> result;
+    if (const auto load = applied.find(boundary_id); load != applied.end())
+      result += load->second;
+    for_each_part(boundary_id,
+                  reactions,
+                  [&](const Node &, const Tensor<1, dim> &force) {
+                    result += force;
+                  });
+    return result;
+  }
+
+
+  // The moment of a force f at x about c, (x - c) x f, with three
+  // components (in 2D the third alone).
+  namespace
+  {
+    template <int dim>
+    Tensor<1, 3>
+    moment_of(const Tensor<1, dim> &arm, const Tensor<1, dim> &force)
+    {
+      Tensor<1, 3> r, f;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          r[d] = arm[d];
+          f[d] = force[d];
+        }
+      return cross_product_3d(r, f);
+    }
+  } // namespace
+
+  // The applied loads' moment is the assembly's integral of x x t about the
+  // origin, moved to the centre: M_c = M_0 - c x F. The reactions' parts act
+  // at their nodes.
+  template <int dim>
+  Tensor<1, 3>
+  BoundaryResultants<dim>::moment(
+    const types::boundary_id                            boundary_id,
+    const Vector<double>                               &reactions,
+    const std::map<types::boundary_id, Tensor<1, dim>> &applied,
+    const std::map<types::boundary_id, Tensor<1, 3>>   &applied_moments,
+    const Point<dim>                                   &centre,
+    const Vector<double>                               *displacement) const
+  {
+    Tensor<1, 3> result;
+    if (const auto load = applied_moments.find(boundary_id);
+        load != applied_moments.end())
+      result += load->second - moment_of<dim>(centre, applied.at(boundary_id));
+    for_each_part(boundary_id,
+                  reactions,
+                  [&](const Node &node, const Tensor<1, dim> &force) {
+                    Tensor<1, dim> arm = position_of.at(node) - centre;
+                    if (displacement != nullptr)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        arm[d] += (*displacement)(node[d]);
+                    result += moment_of<dim>(arm, force);
+                  });
     return result;
   }
 

@@ -124,7 +124,10 @@ namespace RingContact
       for (const auto &check : problem.checks)
         if (check.quantity == ProblemQuantity::resultant_force_x ||
             check.quantity == ProblemQuantity::resultant_force_y ||
-            check.quantity == ProblemQuantity::resultant_force_z)
+            check.quantity == ProblemQuantity::resultant_force_z ||
+            check.quantity == ProblemQuantity::resultant_moment_x ||
+            check.quantity == ProblemQuantity::resultant_moment_y ||
+            check.quantity == ProblemQuantity::resultant_moment_z)
           require_boundary(check.boundary_id, check.name);
       const auto pairs = parameters.contact_pairs();
       for (unsigned int k = 0; k < pairs.size(); ++k)

@@ -535,6 +535,15 @@ namespace RingContact
           return "force y on " + std::to_string(boundary_id);
         case ProblemQuantity::resultant_force_z:
           return "force z on " + std::to_string(boundary_id);
+        case ProblemQuantity::resultant_moment_x:
+          return "moment x on " + std::to_string(boundary_id) + " about " +
+                 point_text();
+        case ProblemQuantity::resultant_moment_y:
+          return "moment y on " + std::to_string(boundary_id) + " about " +
+                 point_text();
+        case ProblemQuantity::resultant_moment_z:
+          return "moment z on " + std::to_string(boundary_id) + " about " +
+                 point_text();
         case ProblemQuantity::displacement_x:
           return "ux" + at();
         case ProblemQuantity::displacement_y:
@@ -582,6 +591,12 @@ namespace RingContact
           return prefix + "_force_y";
         case ProblemQuantity::resultant_force_z:
           return prefix + "_force_z";
+        case ProblemQuantity::resultant_moment_x:
+          return prefix + "_moment_x";
+        case ProblemQuantity::resultant_moment_y:
+          return prefix + "_moment_y";
+        case ProblemQuantity::resultant_moment_z:
+          return prefix + "_moment_z";
         case ProblemQuantity::displacement_x:
           return prefix + "_ux";
         case ProblemQuantity::displacement_y:
@@ -622,6 +637,9 @@ namespace RingContact
        {"resultant force x", ProblemQuantity::resultant_force_x},
        {"resultant force y", ProblemQuantity::resultant_force_y},
        {"resultant force z", ProblemQuantity::resultant_force_z},
+       {"resultant moment x", ProblemQuantity::resultant_moment_x},
+       {"resultant moment y", ProblemQuantity::resultant_moment_y},
+       {"resultant moment z", ProblemQuantity::resultant_moment_z},
        {"displacement x", ProblemQuantity::displacement_x},
        {"displacement y", ProblemQuantity::displacement_y},
        {"displacement z", ProblemQuantity::displacement_z}},
@@ -646,15 +664,19 @@ namespace RingContact
       "displacement is imposed, the reactions of its nodes (contact "
       "forces left out), a node shared with another boundary split "
       "between them along the directions each holds [N per unit "
-      "thickness in 2D]; displacement x, y or z (3D) at 'Point' (reference "
-      "position) [m].");
+      "thickness in 2D]; resultant moment x, y (3D) or z: the moment of "
+      "the same forces about the axis x, y or z through 'Point', at their "
+      "points' current positions where a body is in finite strain [N m, "
+      "per unit thickness in 2D]; displacement x, y or z (3D) at 'Point' "
+      "(reference position) [m].");
     // In the reference configuration, as the boundary conditions' x and
     // y: a point on a body stays the same material point at every step.
     s.add("Point",
           "0, 0",
           Patterns::Anything(),
           "x, y [m] (x, y, z in 3D): where a pressure or displacement is "
-          "taken, from where a contact width is measured.",
+          "taken, from where a contact width is measured, about which a "
+          "moment is taken.",
           [this](const std::string &text) {
             coordinates = coordinates_from_text(text, name, "Point");
           });
@@ -663,7 +685,7 @@ namespace RingContact
           "0",
           0,
           max_tag,
-          "The boundary of a resultant force.");
+          "The boundary of a resultant force or moment.");
     // Kept as text: parsed in finish(), once the constants are known, and
     // evaluated by the scenario at each checked row's pseudo-time and at
     // the check's point.
@@ -722,6 +744,14 @@ namespace RingContact
             name,
             "Quantity",
             "is along z, but the model is two-dimensional (x, y)");
+    const bool in_plane_axis =
+      quantity == ProblemQuantity::resultant_moment_x ||
+      quantity == ProblemQuantity::resultant_moment_y;
+    require(dimension == 3 || !in_plane_axis,
+            name,
+            "Quantity",
+            "is a moment about an axis in the plane, but the model is "
+            "two-dimensional: its moments are about z (resultant moment z)");
     const bool resultant = quantity == ProblemQuantity::resultant_force_x ||
                            quantity == ProblemQuantity::resultant_force_y ||
                            quantity == ProblemQuantity::resultant_force_z;

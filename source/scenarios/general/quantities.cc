@@ -61,7 +61,7 @@ namespace RingContact
 
     // The boundary resultants need the mesh and the unknowns, which do not
     // exist yet when the scenario is made: they are built at the first
-    // resultant asked for (resultant_force()).
+    // resultant asked for (boundary_resultants()).
     template <int dim>
     CheckedQuantities<dim>::CheckedQuantities(const ProblemParameters &problem)
         : problem(problem)
@@ -112,6 +112,14 @@ namespace RingContact
               check,
               state)[static_cast<int>(check.quantity) -
                      static_cast<int>(ProblemQuantity::resultant_force_x)];
+
+          case ProblemQuantity::resultant_moment_x:
+          case ProblemQuantity::resultant_moment_y:
+          case ProblemQuantity::resultant_moment_z:
+            return resultant_moment(
+              check,
+              state)[static_cast<int>(check.quantity) -
+                     static_cast<int>(ProblemQuantity::resultant_moment_x)];
 
           case ProblemQuantity::displacement_x:
           case ProblemQuantity::displacement_y:
@@ -509,17 +517,14 @@ namespace RingContact
     // (BoundaryResultants, which splits a corner node's reaction between
     // the boundaries that hold it).
     template <int dim>
-    Tensor<1, dim>
-    CheckedQuantities<dim>::resultant_force(
-      const ProblemCheckParameters &check,
-      const SolutionState<dim>     &state) const
+    const BoundaryResultants<dim> &
+    CheckedQuantities<dim>::boundary_resultants(
+      const SolutionState<dim> &state) const
     {
       // Summing the nodal forces over a boundary's nodes gave wrong resultants
       // for blocks loaded by (0.1 p, -p) with one x-support, on the support and
       // on a free edge (doc/validation.md, "Figures that were in the code's
-      // comments"): a corner node's force belongs to two boundaries. The
-      // reactions used leave the contact forces out: a support whose end node
-      // lies on a contact surface took that node's contact force as its own.
+      // comments"): a corner node's force belongs to two boundaries.
       if (!resultants || resultants_mesh != state.mesh_version())
         {
           resultants_mesh = state.mesh_version();
@@ -538,9 +543,44 @@ namespace RingContact
                                                       state.get_mapping(),
                                                       supports);
         }
-      return resultants->resultant(check.boundary_id,
-                                   state.nodal_forces().reactions(),
-                                   state.applied_resultants());
+      return *resultants;
+    }
+
+    // The resultant of the traction over a boundary: its load where it is
+    // loaded, its part of the reactions where it is supported
+    // (BoundaryResultants, which splits a corner node's reaction between
+    // the boundaries that hold it). The reactions used leave the contact
+    // forces out: a support whose end node lies on a contact surface took
+    // that node's contact force as its own.
+    template <int dim>
+    Tensor<1, dim>
+    CheckedQuantities<dim>::resultant_force(
+      const ProblemCheckParameters &check,
+      const SolutionState<dim>     &state) const
+    {
+      return boundary_resultants(state).resultant(
+        check.boundary_id,
+        state.nodal_forces().reactions(),
+        state.applied_resultants());
+    }
+
+    // Their moment about the check's point: in small strain at the
+    // reference positions (the linear theory's balance), in finite strain at
+    // the current ones.
+    template <int dim>
+    Tensor<1, 3>
+    CheckedQuantities<dim>::resultant_moment(
+      const ProblemCheckParameters &check,
+      const SolutionState<dim>     &state) const
+    {
+      return boundary_resultants(state).moment(check.boundary_id,
+                                               state.nodal_forces().reactions(),
+                                               state.applied_resultants(),
+                                               state.applied_moments(),
+                                               check.template point<dim>(),
+                                               state.in_finite_strain() ?
+                                                 &state.get_solution() :
+                                                 nullptr);
     }
 
 

@@ -108,8 +108,35 @@ namespace RingContact
       const Vector<double>                               &reactions,
       const std::map<types::boundary_id, Tensor<1, dim>> &applied) const;
 
+    /// The moment about `centre` of the same forces: the applied loads'
+    /// (`applied_moments` about the origin, per boundary, moved to the
+    /// centre with `applied`) and each node's part of the reactions at the
+    /// node's position: the reference one, or with `displacement` the
+    /// current one (finite strain). Three components, about the axes x,
+    /// y, z through the centre; in 2D the third alone (per unit thickness).
+    Tensor<1, 3>
+    moment(const types::boundary_id                            boundary_id,
+           const Vector<double>                               &reactions,
+           const std::map<types::boundary_id, Tensor<1, dim>> &applied,
+           const std::map<types::boundary_id, Tensor<1, 3>>   &applied_moments,
+           const Point<dim>                                   &centre,
+           const Vector<double> *displacement) const;
+
   private:
     using Node = std::array<types::global_dof_index, dim>;
+
+    /// Call `visit(node, force)` for each part of the reactions that
+    /// belongs to `boundary_id`: a node and the force it gives the
+    /// boundary (see resultant()).
+    void
+    for_each_part(
+      const types::boundary_id boundary_id,
+      const Vector<double>    &reactions,
+      const std::function<void(const Node &, const Tensor<1, dim> &)> &visit)
+      const;
+
+    /// Each supported node's reference position.
+    std::map<Node, Point<dim>> position_of;
     /// A node's reaction s and the linear map that gives a boundary, the
     /// only one that holds the node in that direction, its part of it.
     struct Share

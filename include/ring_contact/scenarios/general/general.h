@@ -75,6 +75,13 @@ namespace RingContact
       Tensor<1, dim>
       resultant_force(const ProblemCheckParameters &check,
                       const SolutionState<dim>     &state) const;
+      Tensor<1, 3>
+      resultant_moment(const ProblemCheckParameters &check,
+                       const SolutionState<dim>     &state) const;
+      /// The boundary resultants of the state's mesh, built again when it
+      /// changes.
+      const BoundaryResultants<dim> &
+      boundary_resultants(const SolutionState<dim> &state) const;
       double
       displacement(const ProblemCheckParameters &check,
                    const SolutionState<dim>     &state) const;

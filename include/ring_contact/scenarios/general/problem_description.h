@@ -130,6 +130,11 @@ namespace RingContact
     resultant_force_x,
     resultant_force_y,
     resultant_force_z,
+    /// The moment of the same forces about the axis x, y or z through the
+    /// point (in 2D about z alone).
+    resultant_moment_x,
+    resultant_moment_y,
+    resultant_moment_z,
     displacement_x, ///< at the point (reference coordinates)
     displacement_y,
     displacement_z
