@@ -24,7 +24,8 @@
 //   clipped as four bilinear quarters, the pressure bilinear on the
 //   vertices): the segment-based patch test on the non-matching meshes and
 //   Gauss 2 x 2 on the matching ones exact, every node's displacement the
-//   closed form's; the tangents exact in finite strain;
+//   closed form's; the tangents exact in finite strain (on coarser
+//   blocks, 2 x 2 under 3 x 2 hexahedra);
 // - a third-order surface, a quadratic pressure, the nodal scheme on
 //   quadratic faces and a slave body without the pressure field are
 //   refused with their messages.
@@ -78,19 +79,25 @@ namespace
   // boundary tags: 1 bottom, 2 master, 3 slave, 4 top, 5 x = 0, 6 y = 0.
   // `matching`: the upper block meshed and moved as the lower one, so that
   // the faces of the two surfaces coincide.
+  // `coarse`: 2 x 2 x 2 under 3 x 2 x 2 hexahedra (the quadratic
+  // tangent's test, whose differences take every unknown).
   void
   make_blocks(Triangulation<3> &blocks,
               const bool        matching = false,
-              const double      offset   = 0)
+              const double      offset   = 0,
+              const bool        coarse   = false)
   {
     Triangulation<3> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower,
-                                              {3, 3, 2},
-                                              Point<3>(0, 0, -1),
-                                              Point<3>(1, 1, 0));
+    GridGenerator::subdivided_hyper_rectangle(
+      lower,
+      coarse ? std::vector<unsigned int>{2, 2, 2} :
+               std::vector<unsigned int>{3, 3, 2},
+      Point<3>(0, 0, -1),
+      Point<3>(1, 1, 0));
     GridGenerator::subdivided_hyper_rectangle(
       upper,
       matching ? std::vector<unsigned int>{3, 3, 2} :
+      coarse   ? std::vector<unsigned int>{3, 2, 2} :
                  std::vector<unsigned int>{5, 4, 2},
       Point<3>(0, 0, g0),
       Point<3>(1, 1, 1 + g0));
@@ -486,8 +493,10 @@ tangent_test(std::ostream      &out,
              const Scheme       scheme,
              const unsigned int degree = 1)
 {
+  // Quadratic faces on the coarse blocks: the differences take every
+  // unknown, and a pair of biquadratic faces is 16 clips.
   Triangulation<3> blocks;
-  make_blocks(blocks);
+  make_blocks(blocks, false, 0, degree == 2);
   const hp::FECollection<3> fe = elements(degree);
   DoFHandler<3>             dofs(blocks);
   distribute(dofs, fe);
